@@ -1,0 +1,105 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : Progressive_embedding contributors
+
+#ifndef CGAL_PROGRESSIVE_EMBEDDING_ERROR_CODE_H
+#define CGAL_PROGRESSIVE_EMBEDDING_ERROR_CODE_H
+
+/// \file Error_code.h
+
+namespace CGAL {
+namespace Progressive_embedding {
+
+/// \ingroup PkgProgressiveEmbeddingEnums
+///
+/// Status returned by every function of the package. Data-dependent failures are
+/// reported with these values, never asserted or thrown.
+enum Error_code
+{
+  OK = 0,                          ///< Success; for embedding functions, the output map is certified valid
+  ERROR_EMPTY_MESH,                ///< The input mesh has no face
+  ERROR_NON_TRIANGULAR_MESH,       ///< The input mesh has a face that is not a triangle
+  ERROR_NON_MANIFOLD,              ///< The input mesh is not a valid manifold polygon mesh
+  ERROR_NOT_A_DISK,                ///< The input mesh is not a topological disk (one border cycle, Euler characteristic 1, connected)
+  ERROR_BORDER_TOO_SHORT,          ///< The border has fewer vertices than the requested border shape needs
+  ERROR_NON_CONVEX_BORDER,         ///< The border polygon is not strictly convex (or winds more than once)
+  ERROR_DEGENERATE_BORDER,         ///< The border polygon has (near) zero area, repeated or collinear vertices
+  ERROR_NON_FINITE_COORDINATES,    ///< An input coordinate is NaN or infinite
+  ERROR_CANNOT_SOLVE_LINEAR_SYSTEM,///< The sparse linear solver failed
+  ERROR_INVALID_EMBEDDING,         ///< The computed map failed the exact validity certificate
+  ERROR_COLLAPSE_FAILED,           ///< Simplification could not remove every invalid face (e.g. the paper's Fig. 13 configuration)
+  ERROR_INSERTION_FAILED,          ///< A vertex could not be re-inserted within the smoothing budget
+  ERROR_BUDGET_EXHAUSTED,          ///< An iteration or time budget ran out before the algorithm finished
+  ERROR_WRONG_PARAMETER,           ///< A function received an inconsistent parameter
+  ERROR_CANNOT_READ_FILE,          ///< A file could not be opened for reading
+  ERROR_MALFORMED_FILE,            ///< A file could be opened but its content is malformed
+  ERROR_CANNOT_WRITE_FILE,         ///< A file could not be written
+  ERROR_CONSTRAINT_OUTSIDE_DOMAIN  ///< A positional constraint lies outside the target domain
+};
+
+/// \ingroup PkgProgressiveEmbeddingEnums
+/// returns a human-readable, one-line description of `code`; never a null pointer.
+inline const char* get_error_message(Error_code code)
+{
+  // A switch rather than a table: an entry cannot silently shift (CGAL 5.5.1's SMP table is off by one).
+  switch(code)
+  {
+    case OK: return "Success";
+    case ERROR_EMPTY_MESH: return "Input mesh is empty";
+    case ERROR_NON_TRIANGULAR_MESH: return "Input mesh is not triangulated";
+    case ERROR_NON_MANIFOLD: return "Input mesh is not a valid manifold polygon mesh";
+    case ERROR_NOT_A_DISK: return "Input mesh is not a topological disk";
+    case ERROR_BORDER_TOO_SHORT: return "The border has too few vertices for the requested border shape";
+    case ERROR_NON_CONVEX_BORDER: return "The border polygon is not strictly convex";
+    case ERROR_DEGENERATE_BORDER: return "The border polygon is degenerate (zero area, repeated or collinear vertices)";
+    case ERROR_NON_FINITE_COORDINATES: return "A coordinate is NaN or infinite";
+    case ERROR_CANNOT_SOLVE_LINEAR_SYSTEM: return "The sparse linear system could not be solved";
+    case ERROR_INVALID_EMBEDDING: return "The map failed the exact validity certificate";
+    case ERROR_COLLAPSE_FAILED: return "Simplification could not remove every invalid face";
+    case ERROR_INSERTION_FAILED: return "A vertex could not be re-inserted within the smoothing budget";
+    case ERROR_BUDGET_EXHAUSTED: return "An iteration or time budget was exhausted";
+    case ERROR_WRONG_PARAMETER: return "A parameter has an unexpected value";
+    case ERROR_CANNOT_READ_FILE: return "The file cannot be opened for reading";
+    case ERROR_MALFORMED_FILE: return "The file is malformed";
+    case ERROR_CANNOT_WRITE_FILE: return "The file cannot be written";
+    case ERROR_CONSTRAINT_OUTSIDE_DOMAIN: return "A positional constraint lies outside the target domain";
+  }
+  return "Unknown error";
+}
+
+/// \ingroup PkgProgressiveEmbeddingEnums
+/// returns the enumerator's name (e.g. `"ERROR_NOT_A_DISK"`), for logs and JSON output.
+inline const char* get_error_name(Error_code code)
+{
+  switch(code)
+  {
+    case OK: return "OK";
+    case ERROR_EMPTY_MESH: return "ERROR_EMPTY_MESH";
+    case ERROR_NON_TRIANGULAR_MESH: return "ERROR_NON_TRIANGULAR_MESH";
+    case ERROR_NON_MANIFOLD: return "ERROR_NON_MANIFOLD";
+    case ERROR_NOT_A_DISK: return "ERROR_NOT_A_DISK";
+    case ERROR_BORDER_TOO_SHORT: return "ERROR_BORDER_TOO_SHORT";
+    case ERROR_NON_CONVEX_BORDER: return "ERROR_NON_CONVEX_BORDER";
+    case ERROR_DEGENERATE_BORDER: return "ERROR_DEGENERATE_BORDER";
+    case ERROR_NON_FINITE_COORDINATES: return "ERROR_NON_FINITE_COORDINATES";
+    case ERROR_CANNOT_SOLVE_LINEAR_SYSTEM: return "ERROR_CANNOT_SOLVE_LINEAR_SYSTEM";
+    case ERROR_INVALID_EMBEDDING: return "ERROR_INVALID_EMBEDDING";
+    case ERROR_COLLAPSE_FAILED: return "ERROR_COLLAPSE_FAILED";
+    case ERROR_INSERTION_FAILED: return "ERROR_INSERTION_FAILED";
+    case ERROR_BUDGET_EXHAUSTED: return "ERROR_BUDGET_EXHAUSTED";
+    case ERROR_WRONG_PARAMETER: return "ERROR_WRONG_PARAMETER";
+    case ERROR_CANNOT_READ_FILE: return "ERROR_CANNOT_READ_FILE";
+    case ERROR_MALFORMED_FILE: return "ERROR_MALFORMED_FILE";
+    case ERROR_CANNOT_WRITE_FILE: return "ERROR_CANNOT_WRITE_FILE";
+    case ERROR_CONSTRAINT_OUTSIDE_DOMAIN: return "ERROR_CONSTRAINT_OUTSIDE_DOMAIN";
+  }
+  return "UNKNOWN";
+}
+
+} // namespace Progressive_embedding
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_EMBEDDING_ERROR_CODE_H

@@ -1,0 +1,119 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+#ifndef CGAL_PROGRESSIVE_EMBEDDING_TRAITS_2_H
+#define CGAL_PROGRESSIVE_EMBEDDING_TRAITS_2_H
+
+/// \file Progressive_embedding_traits_2.h
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Progressive_embedding/internal/number_utils.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Interval_nt.h>
+#include <CGAL/enum.h>
+
+namespace CGAL {
+namespace Progressive_embedding {
+
+/// \ingroup PkgProgressiveEmbeddingTraitsClasses
+///
+/// The default model of `ProgressiveEmbeddingTraits_2`. It inherits every type and
+/// functor of the kernel `K` and adds `Exact_orientation_2`, an orientation
+/// predicate that is exact for every supported number type: with `double`
+/// it is the filtered predicate of `Exact_predicates_inexact_constructions_kernel`;
+/// with exact rationals it is `K::Orientation_2`; with `CGAL::Gmpfr`, whose
+/// kernel predicates round, it is an interval filter with an exact fallback on
+/// rationals (an MPFR value converts exactly to a `CGAL::Gmpq`).
+///
+/// \tparam K a model of `Kernel` whose `FT` is `double`, an exact field number type
+///           (`CGAL::Gmpq`, `CGAL::Lazy_exact_nt`, ...) or `CGAL::Gmpfr`.
+///           `CGAL::Mpzf` is rejected at compile time (it is a ring).
+///
+/// \cgalModels `ProgressiveEmbeddingTraits_2`
+template <class K>
+class Progressive_embedding_traits_2
+  : public K
+{
+  static_assert(internal::Check_number_type<typename K::FT>::value, "");
+
+public:
+  /// the kernel
+  typedef K                          Kernel;
+  /// the field number type
+  typedef typename K::FT             FT;
+  /// point type
+  typedef typename K::Point_2        Point_2;
+  /// vector type
+  typedef typename K::Vector_2       Vector_2;
+
+  /// `true` when `FT` computes exactly (then no smoothing is needed for insertion, Lemma A.11)
+  static constexpr bool has_exact_constructions = internal::Is_exact_ft<FT>::value;
+
+  /// Orientation predicate, exact whatever the number type.
+  struct Exact_orientation_2
+  {
+    typedef CGAL::Orientation result_type;
+
+    CGAL::Orientation operator()(const Point_2& p, const Point_2& q, const Point_2& r) const
+    {
+      if constexpr(std::is_floating_point<FT>::value)
+      {
+        typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+        return Epick::Orientation_2()(Epick::Point_2(double(p.x()), double(p.y())),
+                                      Epick::Point_2(double(q.x()), double(q.y())),
+                                      Epick::Point_2(double(r.x()), double(r.y())));
+      }
+      else if constexpr(internal::Is_exact_ft<FT>::value)
+      {
+        return typename K::Orientation_2()(p, q, r);
+      }
+      else
+      {
+        // interval filter, then exact rationals
+        {
+          typedef CGAL::Interval_nt<false> I;
+          typename I::Protector protector;
+          const I px(CGAL::to_interval(p.x())), py(CGAL::to_interval(p.y()));
+          const I qx(CGAL::to_interval(q.x())), qy(CGAL::to_interval(q.y()));
+          const I rx(CGAL::to_interval(r.x())), ry(CGAL::to_interval(r.y()));
+          const I det = (qx - px) * (ry - py) - (qy - py) * (rx - px);
+          if(det.inf() > 0) return CGAL::LEFT_TURN;
+          if(det.sup() < 0) return CGAL::RIGHT_TURN;
+        }
+        using internal::to_rational;
+        const CGAL::Gmpq px = to_rational(p.x()), py = to_rational(p.y());
+        const CGAL::Gmpq det = (to_rational(q.x()) - px) * (to_rational(r.y()) - py)
+                             - (to_rational(q.y()) - py) * (to_rational(r.x()) - px);
+        return CGAL::Orientation(CGAL::sign(det));
+      }
+    }
+  };
+
+  /// constructs the traits from a kernel instance
+  Progressive_embedding_traits_2(const K& k = K()) : K(k) { }
+
+  /// returns the exact orientation predicate
+  Exact_orientation_2 exact_orientation_2_object() const { return Exact_orientation_2(); }
+};
+
+#ifndef DOXYGEN_RUNNING
+namespace internal {
+
+// Wraps a kernel into the default traits unless it already is a traits model.
+template <class K>
+struct Get_pe_traits { typedef Progressive_embedding_traits_2<K> type; };
+template <class K>
+struct Get_pe_traits<Progressive_embedding_traits_2<K> > { typedef Progressive_embedding_traits_2<K> type; };
+
+} // namespace internal
+#endif
+
+} // namespace Progressive_embedding
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_PROGRESSIVE_EMBEDDING_TRAITS_2_H

@@ -55,8 +55,10 @@ public:
   /// Orientation predicate, exact whatever the number type.
   struct Exact_orientation_2
   {
+    /// the result type
     typedef CGAL::Orientation result_type;
 
+    /// returns the orientation of the triangle `(p, q, r)`, exactly
     CGAL::Orientation operator()(const Point_2& p, const Point_2& q, const Point_2& r) const
     {
       if constexpr(std::is_floating_point<FT>::value)

@@ -104,30 +104,25 @@ inline void obj_split(std::string_view line, std::vector<std::string_view>& toke
   }
 }
 
-// Decimal order of magnitude of a well-formed decimal number token whose
-// conversion overflowed or underflowed: true if |value| < 1 (underflow).
+// For a well-formed decimal token whose conversion overflowed or underflowed:
+// true if |value| < 1 (an underflow), from the position of the first non-zero digit
+// and the exponent.
 inline bool obj_underflows(std::string_view s)
 {
   std::size_t i = 0;
   if(i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-  long long order = 0;
+  long long order = 0;  // decimal exponent of the leading non-zero digit
   bool found = false;
-  long long int_digits = 0;
   for(; i < s.size() && s[i] >= '0' && s[i] <= '9'; ++i)
   {
-    if(!found && s[i] != '0') { found = true; order = -1; }
-    if(found && int_digits < 1000000) ++order;
-    ++int_digits;
+    if(found) ++order;
+    else if(s[i] != '0') found = true;
   }
   if(i < s.size() && s[i] == '.')
   {
     ++i;
-    long long k = 0;
-    for(; i < s.size() && s[i] >= '0' && s[i] <= '9'; ++i)
-    {
-      ++k;
-      if(!found && s[i] != '0') { found = true; order = -std::min<long long>(k, 1000000); }
-    }
+    for(long long k = 1; i < s.size() && s[i] >= '0' && s[i] <= '9'; ++i, ++k)
+      if(!found && s[i] != '0') { found = true; order = -k; }
   }
   if(i < s.size() && (s[i] == 'e' || s[i] == 'E'))
   {
@@ -640,6 +635,7 @@ read_OBJ_with_uv(const std::string& filename, TriangleMesh& tm, VertexUVMap uvm,
   if(!in)
   {
     OBJ_read_result r;
+    try { internal::obj_clear_mesh(tm); } catch(...) { }
     if(vt_to_v) vt_to_v->clear();
     if(positions) positions->clear();
     return internal::obj_fail(r, ERROR_CANNOT_READ_FILE, 0, "cannot open '" + filename + "'");

@@ -304,7 +304,7 @@ Error_code write_SVG(std::ostream& out, const TriangleMesh& tm, VertexUVMap uvm,
       }
     }
     if(!(xmin <= xmax)) { xmin = ymin = 0; xmax = ymax = 1; }
-    const double box = 1000., margin = 20., legend_w = 230., legend_h = 380.;
+    const double box = 1000., margin = 20., legend_w = 230., legend_h = 400.;
     const double extent = std::max(xmax - xmin, ymax - ymin);
     double scale = (extent > 0 && std::isfinite(box / extent)) ? box / extent : 1.;
     if(!std::isfinite(scale * extent)) scale = 1.;
@@ -389,7 +389,7 @@ Error_code write_SVG(std::ostream& out, const TriangleMesh& tm, VertexUVMap uvm,
 
     // legend
     const double lx = ox + draw_w + 20, ly = oy;
-    const double bar_x = lx + 14, bar_y = ly + 42, bar_w = 22, bar_h = 180;
+    const double bar_x = lx + 14, bar_y = ly + 54, bar_w = 22, bar_h = 180;
     auto num = [](double x) { return internal::svg_number(x); };
     s += "<g id=\"pe-legend\" font-family=\"sans-serif\" font-size=\"13\">\n";
     s += "<rect x=\"" + num(lx) + "\" y=\"" + num(ly) + "\" width=\"" + num(legend_w - 30) + "\" height=\"" + num(legend_h)

@@ -1,0 +1,149 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+#ifndef CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_LOCAL_SMOOTHING_H
+#define CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_LOCAL_SMOOTHING_H
+
+// One vertex at a time Newton descent on the symmetric Dirichlet energy of its
+// incident faces (2x2 Hessian projected to SPD), with a flip-free backtracking
+// line search: a step is accepted only if every incident face stays positively
+// oriented under the exact predicate and the energy decreases.
+
+#include <CGAL/Progressive_embedding/internal/symmetric_dirichlet.h>
+#include <CGAL/Progressive_embedding/internal/number_utils.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace CGAL {
+namespace Progressive_embedding {
+namespace internal {
+
+template <class Mesh, class Traits>
+struct Local_smoother
+{
+  typedef typename Traits::FT                                 FT;
+  typedef typename Traits::Point_2                            Point_2;
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor   vertex_descriptor;
+  typedef typename boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
+
+  Mesh& m;
+  const Traits& traits;
+  Reference_triangle<FT> ref;
+  std::size_t steps_accepted = 0;
+
+  Local_smoother(Mesh& m, const Traits& traits, const Reference_triangle<FT>& ref) : m(m), traits(traits), ref(ref) {}
+
+  const Point_2& pos(vertex_descriptor v) const { return m.point(v); }
+
+  static bool same(const Point_2& a, const Point_2& b) { return a.x() == b.x() && a.y() == b.y(); }
+
+  // corners (v, a, b) of the face of halfedge h, h pointing to v; false if the face
+  // is degenerate because two of its vertices coincide (a vertex being inserted)
+  bool corners(halfedge_descriptor h, const Point_2*& a, const Point_2*& b) const
+  {
+    a = &pos(target(next(h, m), m));
+    b = &pos(source(h, m));
+    return !same(*a, *b) && !same(*a, pos(target(h, m))) && !same(*b, pos(target(h, m)));
+  }
+
+  // energy of the faces around v with v at x; +inf if one is not positively oriented
+  double energy_at(vertex_descriptor v, const Point_2& x, bool check_orientation) const
+  {
+    typename Traits::Exact_orientation_2 orient = traits.exact_orientation_2_object();
+    FT sum(0);
+    for(halfedge_descriptor h : halfedges_around_target(v, m))
+    {
+      if(is_border(h, m)) continue;
+      const Point_2 *a, *b;
+      if(!corners(h, a, b)) continue;
+      if(check_orientation && orient(x, *a, *b) != CGAL::LEFT_TURN) return std::numeric_limits<double>::infinity();
+      bool ok;
+      FT e = symmetric_dirichlet(ref, x.x(), x.y(), a->x(), a->y(), b->x(), b->y(), ok);
+      if(!ok) return std::numeric_limits<double>::infinity();
+      sum += e;
+    }
+    const double d = CGAL::to_double(sum);
+    return std::isfinite(d) ? d : std::numeric_limits<double>::infinity();
+  }
+
+  // one Newton step at v; returns true if v moved
+  bool step(vertex_descriptor v)
+  {
+    const Point_2 x = pos(v);
+    FT E(0);
+    double g[2] = {0, 0}, H[3] = {0, 0, 0};
+    double tmax = 1.0;
+    // gradient/Hessian in FT per face, accumulated in double for the direction
+    std::array<FT, 2> gf; std::array<FT, 3> Hf; FT Ef;
+    for(halfedge_descriptor h : halfedges_around_target(v, m))
+    {
+      if(is_border(h, m)) continue;
+      const Point_2 *a, *b;
+      if(!corners(h, a, b)) continue;
+      if(!symmetric_dirichlet_local(ref, x.x(), x.y(), a->x(), a->y(), b->x(), b->y(), Ef, gf, Hf))
+        return false;
+      E += Ef;
+      g[0] += CGAL::to_double(gf[0]); g[1] += CGAL::to_double(gf[1]);
+      H[0] += CGAL::to_double(Hf[0]); H[1] += CGAL::to_double(Hf[1]); H[2] += CGAL::to_double(Hf[2]);
+    }
+    if(!std::isfinite(g[0]) || !std::isfinite(g[1]) || !std::isfinite(H[0]) || !std::isfinite(H[1]) || !std::isfinite(H[2]))
+      return false;
+    // SPD projection of the 2x2 Hessian
+    const double tr2 = 0.5 * (H[0] + H[2]);
+    const double disc = std::sqrt(0.25 * (H[0] - H[2]) * (H[0] - H[2]) + H[1] * H[1]);
+    double l1 = tr2 + disc, l2 = tr2 - disc;
+    double e1x, e1y; // eigenvector of l1
+    if(std::abs(H[1]) > 0) { e1x = l1 - H[2]; e1y = H[1]; }
+    else if(H[0] >= H[2]) { e1x = 1; e1y = 0; }
+    else { e1x = 0; e1y = 1; }
+    const double nrm = std::sqrt(e1x * e1x + e1y * e1y);
+    if(!(nrm > 0)) return false;
+    e1x /= nrm; e1y /= nrm;
+    const double e2x = -e1y, e2y = e1x;
+    const double floor_l = 1e-12 * (std::max)(std::abs(l1), 1e-300);
+    l1 = (std::max)(l1, floor_l); l2 = (std::max)(l2, floor_l);
+    const double g1 = e1x * g[0] + e1y * g[1], g2 = e2x * g[0] + e2y * g[1];
+    double d[2] = { -(g1 / l1) * e1x - (g2 / l2) * e2x, -(g1 / l1) * e1y - (g2 / l2) * e2y };
+    if(!std::isfinite(d[0]) || !std::isfinite(d[1]) || (d[0] == 0 && d[1] == 0)) return false;
+
+    // largest step before a face degenerates: its area is affine along d
+    for(halfedge_descriptor h : halfedges_around_target(v, m))
+    {
+      if(is_border(h, m)) continue;
+      const Point_2 *a, *b;
+      if(!corners(h, a, b)) continue;
+      const double ax = CGAL::to_double(a->x()), ay = CGAL::to_double(a->y());
+      const double bx = CGAL::to_double(b->x()), by = CGAL::to_double(b->y());
+      const double xx = CGAL::to_double(x.x()), xy = CGAL::to_double(x.y());
+      const double A0 = (ax - xx) * (by - xy) - (ay - xy) * (bx - xx);
+      const double dA = d[0] * (ay - by) + d[1] * (bx - ax); // d/dt of twice the area
+      if(dA < 0 && A0 > 0) tmax = (std::min)(tmax, 0.9 * (A0 / -dA));
+    }
+    const double E0 = CGAL::to_double(E);
+    double t = tmax;
+    for(int k = 0; k < 30; ++k, t *= 0.5)
+    {
+      const Point_2 xn(x.x() + make_ft<FT>(t * d[0]), x.y() + make_ft<FT>(t * d[1]));
+      if(same(xn, x)) return false;
+      const double En = energy_at(v, xn, true);
+      if(En < E0)
+      {
+        m.point(v) = xn;
+        ++steps_accepted;
+        return true;
+      }
+    }
+    return false;
+  }
+};
+
+} // namespace internal
+} // namespace Progressive_embedding
+} // namespace CGAL
+
+#endif

@@ -51,6 +51,8 @@ struct Progressive_embedding_statistics
   std::size_t barycenter_placements = 0;
   /// vertices re-inserted
   std::size_t insertions = 0;
+  /// restarts with a lower energy threshold after a failed insertion (floating point only)
+  std::size_t restarts = 0;
   /// insertions that found no candidate at first and needed extra smoothing (0 in exact arithmetic, Lemma A.11)
   std::size_t insertions_with_extra_smoothing = 0;
   /// accepted smoothing steps
@@ -90,6 +92,8 @@ public:
     double time_budget = std::numeric_limits<double>::infinity();
     bool verbose = false;
     std::function<bool(double)> callback;
+    int restarts = 4;
+    double initial_min_area_ratio = 1e-12;
   };
 
 private:
@@ -105,11 +109,15 @@ private:
   typename Traits::Exact_orientation_2 orient;
   Options opt;
   Reference_triangle<FT> ref;
+  FT total_area;
+  FT min_face_area;       // faces smaller than this are collapsed (restarts only)
+  double min_area_ratio = 0;
   typename Mesh::template Property_map<vertex_descriptor, std::size_t> oid;
   typename Mesh::template Property_map<vertex_descriptor, bool> vborder;
   typename Mesh::template Property_map<vertex_descriptor, std::size_t> vmark;
+  typename Mesh::template Property_map<vertex_descriptor, std::size_t> vtouched;
   typename Mesh::template Property_map<face_descriptor, bool> ftag;
-  std::size_t stamp = 0;
+  std::size_t stamp = 0, sweep = 0;
   std::vector<Collapse_record> history;
   CGAL::Real_timer timer;
 
@@ -118,19 +126,50 @@ public:
 
   Progressive_embedder(const Traits& traits, const Options& opt) : traits(traits), orient(traits.exact_orientation_2_object()), opt(opt) {}
 
-  // positions: by input index; faces: input faces; on_border: per input index
+  // positions: by input index; faces: input faces; on_border: per input index.
+  // When an insertion fails in floating point (the map has clusters of valid faces too
+  // small for the precision left), the run restarts from the input with a threshold
+  // 10^4 times lower, so that those clusters are collapsed too (at most `restarts` times).
   template <class Face_range>
   Error_code run(std::vector<Point_2>& positions, const Face_range& faces_in,
                  const std::vector<char>& on_border, const FT& border_area)
   {
     timer.start();
+    Error_code ec = ERROR_INSERTION_FAILED;
+    // In floating point, faces below 1e-12 x the mean area leave too few bits for the
+    // insertions around them: they are collapsed from the start (exact types: never).
+    min_area_ratio = Traits::has_exact_constructions ? 0 : opt.initial_min_area_ratio;
+    for(int attempt = 0; attempt <= opt.restarts; ++attempt)
+    {
+      ec = run_once(positions, faces_in, on_border, border_area);
+      if(ec != ERROR_INSERTION_FAILED) break;
+      min_area_ratio = (min_area_ratio == 0) ? 1e-16 : min_area_ratio * 1e4;
+      if(min_area_ratio > 1e-3) break;
+      ++stats.restarts;
+      if(opt.verbose) std::cerr << "[pe] restart: faces of area below " << min_area_ratio << " x mean are collapsed too\n";
+    }
+    return ec;
+  }
+
+private:
+  template <class Face_range>
+  Error_code run_once(std::vector<Point_2>& positions, const Face_range& faces_in,
+                      const std::vector<char>& on_border, const FT& border_area)
+  {
     const std::size_t nv = positions.size();
+    m.clear();
+    history.clear();
+    const std::size_t restarts = stats.restarts;
+    stats = Progressive_embedding_statistics();
+    stats.restarts = restarts;
     // the working mesh: a Surface_mesh whose points are the uv positions
     m.reserve(nv, 3 * faces_in.size() / 2 + nv, faces_in.size());
     oid = m.template add_property_map<vertex_descriptor, std::size_t>("v:pe_id", 0).first;
     vborder = m.template add_property_map<vertex_descriptor, bool>("v:pe_border", false).first;
     vmark = m.template add_property_map<vertex_descriptor, std::size_t>("v:pe_mark", 0).first;
     ftag = m.template add_property_map<face_descriptor, bool>("f:pe_tag", false).first;
+    vtouched = m.template add_property_map<vertex_descriptor, std::size_t>("v:pe_touched", 0).first;
+    stamp = 0; sweep = 0;
     std::vector<vertex_descriptor> V(nv);
     for(std::size_t i = 0; i < nv; ++i)
     {
@@ -142,15 +181,18 @@ public:
       if(m.add_face(V[t[0]], V[t[1]], V[t[2]]) == Mesh::null_face())
         return ERROR_NON_MANIFOLD;
 
+    total_area = border_area;
     const FT area_per_face = border_area / FT(double(faces_in.size()));
+    min_face_area = area_per_face * make_ft<FT>(min_area_ratio);
     ref = equilateral_reference(area_per_face, make_ft<FT>(1.7320508075688772));
 
-    Error_code ec = simplify();
-    stats.seconds_collapse = timer.time();
-    if(ec != OK) return ec;
     const double t0 = timer.time();
+    Error_code ec = simplify();
+    stats.seconds_collapse = timer.time() - t0;
+    if(ec != OK) return ec;
+    const double t1 = timer.time();
     ec = reinsert();
-    stats.seconds_insertion = timer.time() - t0;
+    stats.seconds_insertion = timer.time() - t1;
     if(ec != OK) return ec;
 
     for(vertex_descriptor v : m.vertices())
@@ -168,6 +210,7 @@ private:
     const Point_2& b = m.point(m.target(h));
     const Point_2& c = m.point(m.target(m.next(h)));
     if(orient(a, b, c) != CGAL::LEFT_TURN) return true;
+    if(min_area_ratio > 0 && signed_area(a.x(), a.y(), b.x(), b.y(), c.x(), c.y()) < min_face_area) return true;
     bool ok;
     const FT e = symmetric_dirichlet(ref, a.x(), a.y(), b.x(), b.y(), c.x(), c.y(), ok);
     if(!ok) return true;
@@ -221,6 +264,7 @@ private:
   Error_code simplify()
   {
     std::vector<face_descriptor> queue, stuck;
+    std::size_t last_collapse_count = std::size_t(-1);
     for(face_descriptor f : m.faces())
       if(face_invalid(f)) { ftag[f] = true; queue.push_back(f); ++stats.invalid_faces_before; }
     if(opt.verbose) std::cerr << "[pe] invalid faces: " << stats.invalid_faces_before << "\n";
@@ -228,23 +272,39 @@ private:
     while(!queue.empty())
     {
       if(over_time()) return ERROR_BUDGET_EXHAUSTED;
-      // sweep: collapse one interior edge of every tagged face that allows it
+      // Sweeps of independent collapses (no two in one sweep touch the same vertex star) build a
+      // balanced hierarchy, like a progressive mesh: reinsertion then refines coarse-to-fine
+      // instead of peeling one huge star vertex by vertex.
       while(!queue.empty())
       {
-        face_descriptor f = queue.back(); queue.pop_back();
-        if(m.is_removed(f) || !ftag[f]) continue;
-        bool done = false;
-        for(halfedge_descriptor h : halfedges_around_face(m.halfedge(f), m))
+        ++sweep;
+        std::vector<face_descriptor> next_queue;
+        for(std::size_t qi = 0; qi < queue.size(); ++qi)
         {
-          if(vborder[m.source(h)] || vborder[m.target(h)]) continue;
-          if(!link_condition(h)) continue;
-          const vertex_descriptor kept = collapse(h);
+          const face_descriptor f = queue[qi];
+          if(m.is_removed(f) || !ftag[f]) continue;
+          bool busy = false;
+          for(vertex_descriptor v : CGAL::vertices_around_face(m.halfedge(f), m))
+            if(vtouched[v] == sweep) busy = true;
+          if(busy) { next_queue.push_back(f); continue; }
+          // the collapsible interior edge of f giving the smallest degree
+          halfedge_descriptor best = Mesh::null_halfedge();
+          std::size_t best_degree = std::size_t(-1);
+          for(halfedge_descriptor h : halfedges_around_face(m.halfedge(f), m))
+          {
+            if(vborder[m.source(h)] || vborder[m.target(h)]) continue;
+            const std::size_t d = m.degree(m.source(h)) + m.degree(m.target(h));
+            if(d >= best_degree || !link_condition(h)) continue;
+            best = h; best_degree = d;
+          }
+          if(best == Mesh::null_halfedge()) { stuck.push_back(f); continue; }
+          const vertex_descriptor kept = collapse(best);
+          vtouched[kept] = sweep;
+          for(vertex_descriptor w : CGAL::vertices_around_target(kept, m)) vtouched[w] = sweep;
           for(face_descriptor g : CGAL::faces_around_target(m.halfedge(kept), m))
-            if(g != Mesh::null_face() && !ftag[g] && face_invalid(g)) tag(g, queue);
-          done = true;
-          break;
+            if(g != Mesh::null_face() && !ftag[g] && face_invalid(g)) tag(g, next_queue);
         }
-        if(!done) stuck.push_back(f);
+        queue.swap(next_queue);
       }
       // what is still invalid?
       std::vector<face_descriptor> bad;
@@ -253,16 +313,22 @@ private:
       stuck.clear();
       if(bad.empty()) break;
       if(++stats.expansion_rounds > opt.expansion_budget) return ERROR_BUDGET_EXHAUSTED;
-      // grow the tagged region by one ring around the faces still invalid
+      // grow the tagged region by one ring around the faces still invalid; faces tagged
+      // before but dropped as stuck are queued again (a collapse nearby may have freed them)
       bool grew = false;
+      const std::size_t collapses_before = stats.collapses;
       for(face_descriptor f : bad)
       {
         queue.push_back(f);
         for(halfedge_descriptor h : halfedges_around_face(m.halfedge(f), m))
           for(face_descriptor g : CGAL::faces_around_target(h, m))
-            if(g != Mesh::null_face() && !ftag[g]) { tag(g, queue); grew = true; }
+            if(g != Mesh::null_face() && g != f)
+            {
+              if(!ftag[g]) { ftag[g] = true; grew = true; }
+              queue.push_back(g);
+            }
       }
-      if(!grew)
+      if(!grew && collapses_before == last_collapse_count)
       {
         // Nothing left to collapse around these faces: their interior vertices have only
         // border neighbours. Such a vertex goes to the barycenter of its neighbours, which
@@ -292,6 +358,7 @@ private:
         if(!placed && !queue.empty())
           return ERROR_COLLAPSE_FAILED;
       }
+      last_collapse_count = stats.collapses;
     }
     if(opt.verbose)
       std::cerr << "[pe] collapses: " << stats.collapses << ", expansion rounds: " << stats.expansion_rounds
@@ -470,6 +537,10 @@ private:
       const Collapse_record& r = history[k];
       bool new_side_cw = false;
       const vertex_descriptor vnew = split(r, new_side_cw);
+      // The reference triangle has the mean area of the current mesh: early, coarse meshes
+      // are not pushed towards the final, much smaller, triangles.
+      ref = equilateral_reference(total_area / FT(double(m.number_of_faces())), make_ft<FT>(1.7320508075688772));
+      sm.ref = ref;
       ++stats.insertions;
       // Move the new vertex into its sector if that sector is convex (angle < pi), else move
       // the kept vertex into the other one (the paper's Fig. 5); decided with the exact predicate.
@@ -494,12 +565,14 @@ private:
         }
         if(!ok)
         {
+          stats.smoothing_steps = sm.steps_accepted;
           if(opt.verbose) std::cerr << "[pe] insertion " << (total - k) << " of " << total << " failed\n";
           return ERROR_INSERTION_FAILED;
         }
       }
       if(opt.smoothing_iterations > 0)
       {
+        // the 1-rings of both split vertices
         collect_ring(mover, 1, region);
         smooth(region, opt.smoothing_iterations, sm);
       }

@@ -1,0 +1,104 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+#ifndef CGAL_PROGRESSIVE_EMBEDDING_PARAMETERIZER_3_H
+#define CGAL_PROGRESSIVE_EMBEDDING_PARAMETERIZER_3_H
+
+/// \file Progressive_embedding_parameterizer_3.h
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Progressive_embedding/tutte_embedding.h>
+#include <CGAL/Progressive_embedding/check_embedding.h>
+#include <CGAL/Progressive_embedding/progressive_embedding.h>
+
+#include <CGAL/Surface_mesh_parameterization/Error_code.h>
+#include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
+#include <CGAL/Default.h>
+
+namespace CGAL {
+namespace Progressive_embedding {
+
+/// \ingroup PkgProgressiveEmbeddingParameterizers
+///
+/// A drop-in parameterizer for `CGAL::Surface_mesh_parameterization::parameterize()`: the border is
+/// placed by `BorderParameterizer`, the interior by Tutte's barycentric mapping
+/// (`tutte_embedding()` with the border fixed), and, when the Tutte map fails the exact certificate,
+/// it is repaired by `progressive_embedding()`. It returns
+/// `CGAL::Surface_mesh_parameterization::OK` only with a map certified valid by `check_embedding()`,
+/// and `CGAL::Surface_mesh_parameterization::ERROR_NO_1_TO_1_MAPPING` otherwise (CGAL's own
+/// `Barycentric_mapping_parameterizer_3` returns `OK` on broken maps).
+///
+/// \tparam TriangleMesh_ a model of `FaceGraph`
+/// \tparam BorderParameterizer_ a model of `Parameterizer_3` that places a convex border;
+///         default: `CGAL::Surface_mesh_parameterization::Circular_border_arc_length_parameterizer_3<TriangleMesh_>`
+///
+/// \cgalModels `Parameterizer_3`
+template <class TriangleMesh_, class BorderParameterizer_ = CGAL::Default>
+class Progressive_embedding_parameterizer_3
+{
+public:
+#ifndef DOXYGEN_RUNNING
+  typedef typename CGAL::Default::Get<BorderParameterizer_,
+            CGAL::Surface_mesh_parameterization::Circular_border_arc_length_parameterizer_3<TriangleMesh_> >::type Border_parameterizer;
+#else
+  /// the border parameterizer
+  typedef BorderParameterizer_ Border_parameterizer;
+#endif
+  /// the mesh type
+  typedef TriangleMesh_ TriangleMesh;
+  /// halfedge descriptor of the mesh
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+
+  /// constructs the parameterizer
+  Progressive_embedding_parameterizer_3(Border_parameterizer border_parameterizer = Border_parameterizer())
+    : m_border(border_parameterizer) { }
+
+  /// returns the statistics of the last call (progressive embedding counts are zero when Tutte was valid)
+  const Progressive_embedding_statistics& statistics() const { return m_stats; }
+  /// returns `true` if the last call had to repair the Tutte map
+  bool repaired() const { return m_repaired; }
+
+  /// computes a certified parameterization of the disk `mesh` whose border contains `bhd`.
+  /// \tparam VertexUVmap a model of `ReadWritePropertyMap` with `Point_2` values
+  /// \tparam VertexIndexMap a model of `ReadablePropertyMap` (vertex to index)
+  /// \tparam VertexParameterizedMap a model of `ReadWritePropertyMap` (vertex to `bool`)
+  /// \param mesh the mesh \param bhd a border halfedge \param uvmap the uv map
+  /// \param vimap the vertex index map \param vpmap marks the parameterized vertices
+  template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap>
+  CGAL::Surface_mesh_parameterization::Error_code
+  parameterize(const TriangleMesh& mesh, halfedge_descriptor bhd, VertexUVmap uvmap,
+               VertexIndexMap vimap, VertexParameterizedMap vpmap)
+  {
+    namespace SMP = CGAL::Surface_mesh_parameterization;
+    m_repaired = false;
+    m_stats = Progressive_embedding_statistics();
+    SMP::Error_code status = m_border.parameterize(mesh, bhd, uvmap, vimap, vpmap);
+    if(status != SMP::OK) return status;
+    Error_code ec = tutte_embedding(mesh, bhd, uvmap);
+    if(ec == ERROR_NON_CONVEX_BORDER || ec == ERROR_DEGENERATE_BORDER) return SMP::ERROR_NON_CONVEX_BORDER;
+    if(ec == ERROR_NOT_A_DISK) return SMP::ERROR_NO_TOPOLOGICAL_DISC;
+    if(ec == ERROR_NON_TRIANGULAR_MESH) return SMP::ERROR_NON_TRIANGULAR_MESH;
+    if(ec == ERROR_EMPTY_MESH) return SMP::ERROR_EMPTY_MESH;
+    if(ec != OK) return SMP::ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+    for(auto v : vertices(mesh)) put(vpmap, v, true);
+    m_stats.report = check_embedding(mesh, uvmap);
+    if(m_stats.report.is_valid()) return SMP::OK;
+    m_repaired = true;
+    ec = progressive_embedding(mesh, uvmap, parameters::statistics(&m_stats));
+    return (ec == OK && m_stats.report.is_valid()) ? SMP::OK : SMP::ERROR_NO_1_TO_1_MAPPING;
+  }
+
+private:
+  Border_parameterizer m_border;
+  Progressive_embedding_statistics m_stats;
+  bool m_repaired = false;
+};
+
+} // namespace Progressive_embedding
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_PROGRESSIVE_EMBEDDING_PARAMETERIZER_3_H

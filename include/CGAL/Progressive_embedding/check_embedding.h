@@ -59,8 +59,11 @@ struct Embedding_report
   bool border_simple = true;
   /// number of intersecting pairs of non-adjacent border edges (counting stops at `overlap_limit`)
   std::size_t border_intersections = 0;
-  /// `true` if the global overlap test ran
+  /// `true` if global overlap was decided
   bool overlap_checked = false;
+  /// `true` if no overlap was concluded without the box test, because all faces are positively
+  /// oriented and the border is simple (then every point is covered at most once)
+  bool overlap_by_degree_argument = false;
   /// pairs of faces whose interiors intersect (exact; counting stops at `overlap_limit`)
   std::size_t overlapping_pairs = 0;
   /// the cap on the two counts above
@@ -267,10 +270,12 @@ Embedding_report check_embedding(const TriangleMesh& tm, VertexUVMap uvm,
     if(fo[f] == CGAL::COLLINEAR) ++r.degenerate;
     else if(fo[f] != border_sign) ++r.flipped;
     const auto& t = disk.faces[f];
-    double a = internal::signed_area(X[t[0]], Y[t[0]], X[t[1]], Y[t[1]], X[t[2]], Y[t[2]]);
-    const double scale = (std::max)({std::abs(X[t[0]]), std::abs(Y[t[0]]), std::abs(X[t[1]]), std::abs(Y[t[1]]),
-                                     std::abs(X[t[2]]), std::abs(Y[t[2]])});
-    if(!(std::abs(a) > 1e-10 * scale * scale) || CGAL::sign(a) != CGAL::Sign(fo[f]) || !std::is_floating_point<UV_FT>::value)
+    // a forward error bound on the double determinant; beyond it the value is used as is
+    const double dx1 = X[t[1]] - X[t[0]], dy1 = Y[t[1]] - Y[t[0]], dx2 = X[t[2]] - X[t[0]], dy2 = Y[t[2]] - Y[t[0]];
+    double a = (dx1 * dy2 - dy1 * dx2) / 2;
+    // (each difference of doubles is correctly rounded, so the error is relative to the products)
+    const double bound = 1e-14 * (std::abs(dx1 * dy2) + std::abs(dy1 * dx2));
+    if(!(std::abs(a) > bound) || CGAL::sign(a) != CGAL::Sign(fo[f]) || !std::is_floating_point<UV_FT>::value)
     {
       const CGAL::Gmpq x0 = internal::to_rational(P[t[0]].x()), y0 = internal::to_rational(P[t[0]].y());
       const CGAL::Gmpq x1 = internal::to_rational(P[t[1]].x()), y1 = internal::to_rational(P[t[1]].y());
@@ -330,8 +335,16 @@ Embedding_report check_embedding(const TriangleMesh& tm, VertexUVMap uvm,
     r.border_simple = border_finite && r.border_intersections == 0;
   }
 
-  // global overlap of face interiors
-  if(do_overlap)
+  // Global overlap of face interiors. When every face is positively oriented and the border
+  // is simple (both decided exactly), the map has degree one over the region the border
+  // encloses (each point is covered as many times as the border winds around it): no overlap
+  // is possible and the box test is skipped.
+  if(do_overlap && r.flipped == 0 && r.degenerate == 0 && r.non_finite == 0 && r.border_simple)
+  {
+    r.overlap_checked = true;
+    r.overlap_by_degree_argument = true;
+  }
+  else if(do_overlap)
   {
     r.overlap_checked = true;
     typedef CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t> Box;
@@ -356,6 +369,13 @@ Embedding_report check_embedding(const TriangleMesh& tm, VertexUVMap uvm,
       if(++examined > max_examined) throw internal::Overlap_limit_reached();
       const auto& t1 = disk.faces[b1.info()];
       const auto& t2 = disk.faces[b2.info()];
+      // two correctly oriented faces sharing an edge lie on both sides of it: no overlap
+      if(fo[b1.info()] == border_sign && fo[b2.info()] == border_sign)
+      {
+        int shared = 0;
+        for(int i = 0; i < 3; ++i) for(int j = 0; j < 3; ++j) shared += (t1[i] == t2[j]);
+        if(shared >= 2) return;
+      }
       // faces with the wrong orientation are already counted as flipped; compare each in its own orientation
       EPoint a[3] = { P[t1[0]], P[t1[1]], P[t1[2]] };
       EPoint b[3] = { P[t2[0]], P[t2[1]], P[t2[2]] };

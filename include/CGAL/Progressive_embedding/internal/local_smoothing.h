@@ -35,6 +35,7 @@ struct Local_smoother
   const Traits& traits;
   Reference_triangle<FT> ref;
   std::size_t steps_accepted = 0;
+  double relative_tolerance = 1e-3;
 
   Local_smoother(Mesh& m, const Traits& traits, const Reference_triangle<FT>& ref) : m(m), traits(traits), ref(ref) {}
 
@@ -135,7 +136,8 @@ struct Local_smoother
       {
         m.point(v) = xn;
         ++steps_accepted;
-        return true;
+        // converged when the decrease is negligible: the caller's sweep may stop
+        return En < E0 * (1 - relative_tolerance);
       }
     }
     return false;

@@ -11,7 +11,9 @@
 #include <CGAL/Progressive_embedding/progressive_embedding.h>
 #include <CGAL/Progressive_embedding/internal/protocols.h>
 #include <CGAL/Real_timer.h>
-#include <CGAL/Memory_sizer.h>
+#include <CGAL/Progressive_embedding/internal/indexed_disk.h>
+#include <sys/resource.h>
+#include <dirent.h>
 
 #include <algorithm>
 #include <cmath>
@@ -58,7 +60,8 @@ static void repair(SM& m, SM::Property_map<vd, K::Point_2> uv, Row& r, int repea
   r.valid = (ec == PE::OK) && st.report.is_valid();
   r.invalid_before = st.invalid_faces_before; r.collapses = st.collapses; r.restarts = st.restarts;
   r.out_max = st.report.max_energy_3d; r.out_mean = st.report.mean_energy_3d;
-  r.peak_mb = CGAL::Memory_sizer().resident_size() / 1048576.0;
+  struct rusage ru; getrusage(RUSAGE_SELF, &ru);
+  r.peak_mb = ru.ru_maxrss / 1024.0; // peak of the process so far (Linux: KiB)
 }
 
 int main(int argc, char** argv)
@@ -100,6 +103,50 @@ int main(int argc, char** argv)
     std::cerr << r.mesh << " " << r.seed << ": " << r.status << " " << r.pe_seconds << " s (Tutte " << r.tutte_seconds << " s)\n";
     rows.push_back(r);
   }
+  // --- random init on the disks of libcgal-demo
+  auto random_init = [&](SM& m, SM::Property_map<vd, K::Point_2> uv, unsigned seed) {
+    std::size_t nb = 0; for(vd v : m.vertices()) if(m.is_border(v)) ++nb;
+    const double radius = std::cos(CGAL_PI / double(nb)) * 0.999; // inside the inscribed polygon
+    std::mt19937 gen(seed); std::uniform_real_distribution<double> U(-1, 1);
+    for(vd v : m.vertices())
+      if(!m.is_border(v))
+      {
+        double x, y; do { x = U(gen); y = U(gen); } while(x * x + y * y > 1);
+        uv[v] = K::Point_2(radius * x, radius * y);
+      }
+  };
+  {
+    std::vector<std::string> names;
+    if(DIR* dir = opendir((data + "/meshes").c_str()))
+    {
+      while(dirent* e = readdir(dir)) { std::string n = e->d_name; if(n.size() > 4 && n.substr(n.size() - 4) == ".off") names.push_back(n); }
+      closedir(dir);
+    }
+    std::sort(names.begin(), names.end());
+    std::size_t ndisks = 0;
+    for(const std::string& name : names)
+    {
+      SM m;
+      if(!CGAL::IO::read_polygon_mesh(data + "/meshes/" + name, m) || !CGAL::is_triangle_mesh(m)) continue;
+      PE::internal::Indexed_disk<SM> disk;
+      if(PE::internal::make_indexed_disk(m, SM::null_halfedge(), disk) != PE::OK || disk.border.size() < 3) continue;
+      if(quick && ++ndisks > 3) break;
+      Row r; r.kind = "random-init"; r.mesh = name; r.seed = 1;
+      auto uv = m.add_property_map<vd, K::Point_2>("uv").first;
+      std::vector<double> tt;
+      for(int k = 0; k < repeat; ++k)
+      { CGAL::Real_timer t; t.start(); PE::tutte_embedding(m, SM::null_halfedge(), uv, PE::parameters::border_shape(PE::Border_shape::CIRCLE)); tt.push_back(t.time()); }
+      r.tutte_seconds = median(tt);
+      PE::Embedding_report rep = PE::check_embedding(m, uv);
+      r.in_max = rep.max_energy_3d; r.in_mean = rep.mean_energy_3d;
+      r.tutte_flipped = rep.flipped; r.tutte_degenerate = rep.degenerate;
+      random_init(m, uv, 1);
+      r.vertices = m.number_of_vertices(); r.faces = m.number_of_faces();
+      repair(m, uv, r, repeat);
+      std::cerr << r.mesh << ": " << r.status << " " << r.pe_seconds << " s\n";
+      rows.push_back(r);
+    }
+  }
   // --- random init on grid disks (circle border, interior uniformly random inside)
   std::vector<std::size_t> sides = quick ? std::vector<std::size_t>{32, 64} : std::vector<std::size_t>{32, 64, 128, 256, 512};
   for(std::size_t n : sides)
@@ -113,15 +160,7 @@ int main(int argc, char** argv)
     r.tutte_seconds = median(tt);
     PE::Embedding_report rep = PE::check_embedding(m, uv);
     r.in_max = rep.max_energy_3d; r.in_mean = rep.mean_energy_3d;
-    std::size_t nb = 0; for(vd v : m.vertices()) if(m.is_border(v)) ++nb;
-    const double radius = std::cos(CGAL_PI / double(nb)) * 0.999;
-    std::mt19937 gen(1); std::uniform_real_distribution<double> U(-1, 1);
-    for(vd v : m.vertices())
-      if(!m.is_border(v))
-      {
-        double x, y; do { x = U(gen); y = U(gen); } while(x * x + y * y > 1);
-        uv[v] = K::Point_2(radius * x, radius * y);
-      }
+    random_init(m, uv, 1);
     r.vertices = m.number_of_vertices(); r.faces = m.number_of_faces();
     repair(m, uv, r, n >= 256 ? 1 : repeat);
     std::cerr << r.mesh << ": " << r.status << " " << r.pe_seconds << " s\n";
@@ -129,8 +168,8 @@ int main(int argc, char** argv)
   }
   // --- tables
   std::ofstream csv(out + ".csv"), md(out + ".md");
-  csv << "kind,mesh,seed,vertices,faces,tutte_flipped,tutte_degenerate,tutte_seconds,invalid_before,collapses,restarts,pe_seconds,ratio_pe_tutte,rss_mb,status,certified,input_max_sd,input_mean_sd,output_max_sd,output_mean_sd\n";
-  md << "| kind | mesh | seed | #V | Tutte flipped | Tutte degenerate | invalid before | collapses | Tutte s | PE s | PE/Tutte | RSS MB | certified | mean SD in | mean SD out | max SD out |\n";
+  csv << "kind,mesh,seed,vertices,faces,tutte_flipped,tutte_degenerate,tutte_seconds,invalid_before,collapses,restarts,pe_seconds,ratio_pe_tutte,peak_rss_mb,status,certified,input_max_sd,input_mean_sd,output_max_sd,output_mean_sd\n";
+  md << "| kind | mesh | seed | #V | Tutte flipped | Tutte degenerate | invalid before | collapses | Tutte s | PE s | PE/Tutte | peak RSS MB | certified | mean SD in | mean SD out | max SD out |\n";
   md << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   std::size_t certified = 0; std::vector<double> ratios;
   for(const Row& r : rows)

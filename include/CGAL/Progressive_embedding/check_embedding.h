@@ -14,6 +14,7 @@
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 #include <CGAL/Progressive_embedding/internal/certification_kernel.h>
 #include <CGAL/Progressive_embedding/internal/symmetric_dirichlet.h>
+#include <CGAL/Progressive_embedding/distortion.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
@@ -88,6 +89,8 @@ struct Embedding_report
   double energy_threshold = 1e20;
   /// `true` if the 3D energies were computed (the mesh has 3D points of non-zero total area)
   bool has_3d_energy = false;
+  /// all distortion measures against the 3D triangles (`max_energy_3d` and `mean_energy_3d` repeat two of them)
+  Distortion_report distortion;
 
   /// returns `true` if the map is a valid embedding: no flipped, degenerate or non-finite
   /// element, a simple border and no overlap.
@@ -288,52 +291,14 @@ Embedding_report check_embedding(const TriangleMesh& tm, VertexUVMap uvm,
   }
 
   // border simplicity: box intersection of border edges + exact segment tests
+  if(border_finite)
   {
-    typedef CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t> Box;
-    const std::size_t nb = disk.border.size();
-    std::vector<Box> boxes;
-    boxes.reserve(nb);
-    if(border_finite)
-    {
-      for(std::size_t k = 0; k < nb; ++k)
-      {
-        const std::size_t a = disk.border[k], b = disk.border[(k + 1) % nb];
-        boxes.push_back(Box(CGAL::Bbox_2((std::min)(X[a], X[b]), (std::min)(Y[a], Y[b]),
-                                         (std::max)(X[a], X[b]), (std::max)(Y[a], Y[b])), k));
-      }
-      // bounding boxes from doubles may be off by rounding for non-double types: enlarge them slightly
-      if(!std::is_floating_point<UV_FT>::value)
-        for(Box& bx : boxes)
-        {
-          CGAL::Bbox_2 bb(bx.min_coord(0), bx.min_coord(1), bx.max_coord(0), bx.max_coord(1));
-          const double e = 1e-12 * (std::abs(bb.xmin()) + std::abs(bb.xmax()) + std::abs(bb.ymin()) + std::abs(bb.ymax())) + 1e-300;
-          bx = Box(CGAL::Bbox_2(bb.xmin() - e, bb.ymin() - e, bb.xmax() + e, bb.ymax() + e), bx.info());
-        }
-      typename EK::Do_intersect_2 do_intersect;
-      auto cb = [&](const Box& b1, const Box& b2) {
-        std::size_t i = b1.info(), j = b2.info();
-        if(i > j) std::swap(i, j);
-        const EPoint& p0 = P[disk.border[i]]; const EPoint& p1 = P[disk.border[(i + 1) % nb]];
-        const EPoint& q0 = P[disk.border[j]]; const EPoint& q1 = P[disk.border[(j + 1) % nb]];
-        bool bad = false;
-        if(j == i + 1 || (i == 0 && j == nb - 1))
-        {
-          // adjacent edges share one vertex; they intersect elsewhere only if collinear and folding back
-          const EPoint& s = (j == i + 1) ? p1 : p0;        // shared vertex
-          const EPoint& u = (j == i + 1) ? p0 : p1;        // other end of edge i
-          const EPoint& w = (j == i + 1) ? q1 : q0;        // other end of edge j
-          if(nb > 2 && orient(u, s, w) == CGAL::COLLINEAR)
-            bad = (CGAL::compare_xy(u, s) == CGAL::compare_xy(w, s)); // both on the same side of s
-        }
-        else
-          bad = do_intersect(typename EK::Segment_2(p0, p1), typename EK::Segment_2(q0, q1));
-        if(bad && ++r.border_intersections >= r.overlap_limit) throw internal::Overlap_limit_reached();
-      };
-      try { CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), cb); }
-      catch(const internal::Overlap_limit_reached&) { }
-    }
-    r.border_simple = border_finite && r.border_intersections == 0;
+    std::vector<EPoint> BP;
+    BP.reserve(disk.border.size());
+    for(std::size_t b : disk.border) BP.push_back(P[b]);
+    r.border_intersections = internal::count_border_intersections<EK>(BP, r.overlap_limit);
   }
+  r.border_simple = border_finite && r.border_intersections == 0;
 
   // Global overlap of face interiors. When every face is positively oriented and the border
   // is simple (both decided exactly), the map has degree one over the region the border
@@ -407,58 +372,62 @@ Embedding_report check_embedding(const TriangleMesh& tm, VertexUVMap uvm,
     double sum_eq = 0; std::size_t n_eq = 0;
     for(std::size_t f = 0; f < nf; ++f)
     {
-      const auto& t = disk.faces[f];
       double e = inf;
       if(face_ok[f] && fo[f] == border_sign && ref_area > 0)
-      {
         e = face_energy(eq, f);
-      }
       if(!(e <= r.energy_threshold)) ++r.high_energy_faces;
       r.max_energy_equilateral = (std::max)(r.max_energy_equilateral, e);
       sum_eq += e; ++n_eq;
     }
     r.mean_energy_equilateral = n_eq ? sum_eq / double(n_eq) : 0;
 
-    // 3D reference, scaled so that the total 3D area equals the border area
+    // 3D reference, scaled so that the total 3D area equals the border area (distortion.h)
     auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
-    std::vector<std::array<double, 3> > Q(nv);
-    for(std::size_t i = 0; i < nv; ++i)
-    {
-      const auto& q = get(vpm, disk.vertices[i]);
-      Q[i] = { CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()) };
-    }
-    std::vector<internal::Reference_triangle<double> > refs(nf);
-    double total3d = 0;
+    std::vector<double> rel_area(nf, 0.);
     for(std::size_t f = 0; f < nf; ++f)
+      rel_area[f] = (face_ok[f] && fo[f] == border_sign) ? area[f] : 0.;
+    const std::vector<internal::Face_distortion> fds = internal::face_distortions(disk, vpm, X, Y, sgn, rel_area, r.border_area);
+    internal::aggregate_distortion(fds, r.distortion);
+    double wsum = 0;
+    for(const auto& fd : fds) wsum += fd.weight;
+    r.has_3d_energy = wsum > 0 && r.border_area > 0;
+    if(r.has_3d_energy)
     {
-      const auto& t = disk.faces[f];
-      refs[f] = internal::reference_from_points<double, 3>(Q[t[0]], Q[t[1]], Q[t[2]]);
-      total3d += std::sqrt((std::max)(0., refs[f].area2));
-    }
-    if(total3d > 0 && r.border_area > 0)
-    {
-      r.has_3d_energy = true;
-      const double k2 = r.border_area / total3d; // squared length scale
-      double sum = 0, wsum = 0;
-      for(std::size_t f = 0; f < nf; ++f)
-      {
-        internal::Reference_triangle<double> ref = refs[f];
-        for(double& d : ref.dot) d *= k2;
-        ref.area2 *= k2 * k2;
-        const double w = std::sqrt((std::max)(0., ref.area2));
-        const auto& t = disk.faces[f];
-        double e = inf;
-        if(face_ok[f] && fo[f] == border_sign && ref.area2 > 0)
-        {
-          e = face_energy(ref, f);
-        }
-        r.max_energy_3d = (std::max)(r.max_energy_3d, e);
-        if(w > 0) { sum += w * e; wsum += w; }
-      }
-      r.mean_energy_3d = wsum > 0 ? sum / wsum : inf;
+      r.max_energy_3d = r.distortion.max_symmetric_dirichlet;
+      r.mean_energy_3d = r.distortion.mean_symmetric_dirichlet;
     }
   }
   return r;
+}
+
+/// \ingroup PkgProgressiveEmbeddingMainFunctions
+///
+/// measures the distortion of the uv map `uvm` of the disk `tm` against its 3D triangles (see
+/// `Distortion_report`). The values are the ones `check_embedding()` reports (one implementation).
+///
+/// \tparam TriangleMesh a model of `FaceGraph`
+/// \tparam VertexUVMap a model of `ReadablePropertyMap` with `Point_2` values
+/// \tparam NamedParameters a sequence of named parameters
+/// \param tm the mesh \param uvm the uv map
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the 3D points}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `Point_3` values}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <typename TriangleMesh, typename VertexUVMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Distortion_report measure_distortion(const TriangleMesh& tm, VertexUVMap uvm,
+                                     const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Embedding_report r = check_embedding(tm, uvm, CGAL::parameters::vertex_point_map(
+    choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm))));
+  r.distortion.status = r.status;
+  return r.distortion;
 }
 
 } // namespace Progressive_embedding

@@ -51,6 +51,11 @@ CGAL_PE_ADD_NAMED_PARAMETER(insertion_retries)
 CGAL_PE_ADD_NAMED_PARAMETER(collapse_budget)
 CGAL_PE_ADD_NAMED_PARAMETER(check_overlap)
 CGAL_PE_ADD_NAMED_PARAMETER(statistics)
+CGAL_PE_ADD_NAMED_PARAMETER(convergence_tolerance)
+CGAL_PE_ADD_NAMED_PARAMETER(free_border)
+CGAL_PE_ADD_NAMED_PARAMETER(constrained_vertices)
+CGAL_PE_ADD_NAMED_PARAMETER(distortion_energy)
+CGAL_PE_ADD_NAMED_PARAMETER(optimization_statistics)
 #undef CGAL_PE_ADD_NAMED_PARAMETER
 } // namespace internal_np
 #endif
@@ -83,6 +88,11 @@ CGAL_PE_NAMED_PARAMETER_FUNCTIONS(insertion_retries)
 CGAL_PE_NAMED_PARAMETER_FUNCTIONS(collapse_budget)
 CGAL_PE_NAMED_PARAMETER_FUNCTIONS(check_overlap)
 CGAL_PE_NAMED_PARAMETER_FUNCTIONS(statistics)
+CGAL_PE_NAMED_PARAMETER_FUNCTIONS(convergence_tolerance)
+CGAL_PE_NAMED_PARAMETER_FUNCTIONS(free_border)
+CGAL_PE_NAMED_PARAMETER_FUNCTIONS(constrained_vertices)
+CGAL_PE_NAMED_PARAMETER_FUNCTIONS(distortion_energy)
+CGAL_PE_NAMED_PARAMETER_FUNCTIONS(optimization_statistics)
 #undef CGAL_PE_NAMED_PARAMETER_FUNCTIONS
 #else
 /// \ingroup PkgProgressiveEmbeddingNamedParameters
@@ -124,6 +134,21 @@ template <typename T> unspecified_type check_overlap(const T& t);
 /// \ingroup PkgProgressiveEmbeddingNamedParameters
 /// a pointer to a `Progressive_embedding_statistics` filled by `progressive_embedding()`
 template <typename T> unspecified_type statistics(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// `optimize_distortion()` stops when an iteration lowers the energy by less than this fraction (`double`, default 1e-4)
+template <typename T> unspecified_type convergence_tolerance(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// whether `optimize_distortion()` may move the border vertices (`bool`, default `false`); the border stays simple
+template <typename T> unspecified_type free_border(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// vertices whose uv coordinates `optimize_distortion()` keeps bit-exactly (a `std::vector` of vertex descriptors)
+template <typename T> unspecified_type constrained_vertices(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// the energy of `optimize_distortion()` (a `Distortion_energy`; default `Distortion_energy::SYMMETRIC_DIRICHLET`)
+template <typename T> unspecified_type distortion_energy(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// a pointer to an `Optimization_statistics` filled by `optimize_distortion()`
+template <typename T> unspecified_type optimization_statistics(const T& t);
 #endif
 
 } // namespace parameters

@@ -52,6 +52,7 @@ CGAL_PE_ADD_NAMED_PARAMETER(collapse_budget)
 CGAL_PE_ADD_NAMED_PARAMETER(check_overlap)
 CGAL_PE_ADD_NAMED_PARAMETER(statistics)
 CGAL_PE_ADD_NAMED_PARAMETER(convergence_tolerance)
+CGAL_PE_ADD_NAMED_PARAMETER(minimum_area_ratio)
 CGAL_PE_ADD_NAMED_PARAMETER(free_border)
 CGAL_PE_ADD_NAMED_PARAMETER(constrained_vertices)
 CGAL_PE_ADD_NAMED_PARAMETER(distortion_energy)
@@ -89,6 +90,7 @@ CGAL_PE_NAMED_PARAMETER_FUNCTIONS(collapse_budget)
 CGAL_PE_NAMED_PARAMETER_FUNCTIONS(check_overlap)
 CGAL_PE_NAMED_PARAMETER_FUNCTIONS(statistics)
 CGAL_PE_NAMED_PARAMETER_FUNCTIONS(convergence_tolerance)
+CGAL_PE_NAMED_PARAMETER_FUNCTIONS(minimum_area_ratio)
 CGAL_PE_NAMED_PARAMETER_FUNCTIONS(free_border)
 CGAL_PE_NAMED_PARAMETER_FUNCTIONS(constrained_vertices)
 CGAL_PE_NAMED_PARAMETER_FUNCTIONS(distortion_energy)
@@ -134,6 +136,10 @@ template <typename T> unspecified_type check_overlap(const T& t);
 /// \ingroup PkgProgressiveEmbeddingNamedParameters
 /// a pointer to a `Progressive_embedding_statistics` filled by `progressive_embedding()`
 template <typename T> unspecified_type statistics(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// `progressive_embedding()` also collapses (and re-inserts) faces whose area is below this fraction of the mean face
+/// area (`double`; default 1e-12 in floating point, 0 in exact arithmetic)
+template <typename T> unspecified_type minimum_area_ratio(const T& t);
 /// \ingroup PkgProgressiveEmbeddingNamedParameters
 /// `optimize_distortion()` stops when an iteration lowers the energy by less than this fraction (`double`, default 1e-4)
 template <typename T> unspecified_type convergence_tolerance(const T& t);

@@ -94,6 +94,7 @@ public:
     std::function<bool(double)> callback;
     int restarts = 4;
     double initial_min_area_ratio = 1e-12;
+    bool min_area_ratio_given = false;
   };
 
 private:
@@ -138,7 +139,7 @@ public:
     Error_code ec = ERROR_INSERTION_FAILED;
     // In floating point, faces below 1e-12 x the mean area leave too few bits for the
     // insertions around them: they are collapsed from the start (exact types: never).
-    min_area_ratio = Traits::has_exact_constructions ? 0 : opt.initial_min_area_ratio;
+    min_area_ratio = (Traits::has_exact_constructions && !opt.min_area_ratio_given) ? 0 : opt.initial_min_area_ratio;
     for(int attempt = 0; attempt <= opt.restarts; ++attempt)
     {
       ec = run_once(positions, faces_in, on_border, border_area);
@@ -642,6 +643,12 @@ private:
 ///     \cgalParamType{`int`}
 ///     \cgalParamDefault{75}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{minimum_area_ratio}
+///     \cgalParamDescription{faces whose area is below this fraction of the mean face area are collapsed too: in floating point
+///       they leave too few bits for insertions nearby; larger values trade speed for quality}
+///     \cgalParamType{`double` in [0, 1)}
+///     \cgalParamDefault{1e-12 in floating point, 0 with an exact number type}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{collapse_budget}
 ///     \cgalParamDescription{maximal number of tag-expansion rounds of the simplification}
 ///     \cgalParamType{`std::size_t`}
@@ -706,9 +713,11 @@ Error_code progressive_embedding(const TriangleMesh& tm, VertexUVMap uvm,
   opt.time_budget = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), std::numeric_limits<double>::infinity());
   opt.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   opt.callback = choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
+  opt.initial_min_area_ratio = choose_parameter(get_parameter(np, internal_np::minimum_area_ratio), opt.initial_min_area_ratio);
+  opt.min_area_ratio_given = !CGAL::parameters::is_default_parameter<CGAL_NP_CLASS, internal_np::minimum_area_ratio_t>::value;
   if(!(opt.line_search_factor > 0 && opt.line_search_factor < 1) || opt.line_search_steps < 1
      || opt.smoothing_iterations < 0 || opt.retry_smoothing_iterations < 0 || opt.insertion_retries < 0
-     || !(opt.energy_threshold > 0))
+     || !(opt.energy_threshold > 0) || !(opt.initial_min_area_ratio >= 0 && opt.initial_min_area_ratio < 1))
     return ERROR_WRONG_PARAMETER;
 
   internal::Indexed_disk<TriangleMesh> disk;

@@ -2,13 +2,16 @@
 // (../shared/corpus/tutte_failures.tsv) and the random-init protocol over generated
 // grid disks; writes CSV + Markdown tables.
 //
-//   pe_benchmark DATA_DIR CORPUS_TSV OUT_PREFIX [--quick] [--repeat N]
+//   pe_benchmark DATA_DIR CORPUS_TSV OUT_PREFIX [--quick] [--repeat N] [--optimize]
+// --optimize adds the quality pipeline: progressive_embedding with minimum_area_ratio(1e-3),
+// then optimize_distortion (at most 300 iterations), from the same input map.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
 #include <CGAL/Progressive_embedding/progressive_embedding.h>
+#include <CGAL/Progressive_embedding/optimize_distortion.h>
 #include <CGAL/Progressive_embedding/internal/protocols.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
@@ -36,11 +39,16 @@ struct Row
   double tutte_seconds = 0, pe_seconds = 0, peak_mb = 0;
   std::string status; bool valid = false;
   double in_max = 0, in_mean = 0, out_max = 0, out_mean = 0;
+  // quality pipeline: progressive embedding with minimum_area_ratio(1e-3), then optimize_distortion
+  bool opt_run = false, opt_valid = false, opt_border_exact = false; std::string opt_status;
+  std::size_t opt_iterations = 0; double opt_seconds = 0, opt_mean = 0, opt_max = 0, opt_per_iteration = 0;
 };
 
 static double median(std::vector<double> v) { std::sort(v.begin(), v.end()); return v.empty() ? 0 : v[v.size() / 2]; }
 
 // runs progressive embedding `repeat` times from the same input map; median time
+static bool optimize = false;
+
 static void repair(SM& m, SM::Property_map<vd, K::Point_2> uv, Row& r, int repeat)
 {
   std::vector<K::Point_2> input(m.number_of_vertices());
@@ -62,11 +70,28 @@ static void repair(SM& m, SM::Property_map<vd, K::Point_2> uv, Row& r, int repea
   r.out_max = st.report.max_energy_3d; r.out_mean = st.report.mean_energy_3d;
   struct rusage ru; getrusage(RUSAGE_SELF, &ru);
   r.peak_mb = ru.ru_maxrss / 1024.0; // peak of the process so far (Linux: KiB)
+  if(!optimize) return;
+  // quality pipeline from the same input map
+  for(vd v : m.vertices()) uv[v] = input[v];
+  CGAL::Real_timer t; t.start();
+  PE::Error_code e1 = PE::progressive_embedding(m, uv, PE::parameters::minimum_area_ratio(1e-3));
+  PE::Optimization_statistics os;
+  PE::Error_code e2 = (e1 == PE::OK) ? PE::optimize_distortion(m, uv, PE::parameters::optimization_statistics(&os,
+                                         CGAL::parameters::number_of_iterations(std::size_t(300)))) : e1;
+  r.opt_run = true;
+  r.opt_seconds = t.time();
+  r.opt_status = PE::get_error_name(e2);
+  r.opt_valid = (e1 == PE::OK) && os.report.is_valid();
+  r.opt_iterations = os.iterations;
+  r.opt_mean = os.report.mean_energy_3d; r.opt_max = os.report.max_energy_3d;
+  r.opt_per_iteration = os.iterations ? os.seconds / double(os.iterations) : 0;
+  r.opt_border_exact = true;
+  for(vd v : m.vertices()) if(m.is_border(v) && !(uv[v] == input[v])) r.opt_border_exact = false;
 }
 
 int main(int argc, char** argv)
 {
-  if(argc < 4) { std::cerr << "usage: pe_benchmark DATA_DIR CORPUS_TSV OUT_PREFIX [--quick] [--repeat N]\n"; return 2; }
+  if(argc < 4) { std::cerr << "usage: pe_benchmark DATA_DIR CORPUS_TSV OUT_PREFIX [--quick] [--repeat N] [--optimize]\n"; return 2; }
   const std::string data = argv[1], tsv = argv[2], out = argv[3];
   bool quick = false; int repeat = 3;
   for(int i = 4; i < argc; ++i)
@@ -74,6 +99,7 @@ int main(int argc, char** argv)
     std::string a = argv[i];
     if(a == "--quick") quick = true;
     else if(a == "--repeat" && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));
+    else if(a == "--optimize") optimize = true;
   }
   std::vector<Row> rows;
   // --- corpus: Tutte-failure protocol
@@ -168,22 +194,28 @@ int main(int argc, char** argv)
   }
   // --- tables
   std::ofstream csv(out + ".csv"), md(out + ".md");
-  csv << "kind,mesh,seed,vertices,faces,tutte_flipped,tutte_degenerate,tutte_seconds,invalid_before,collapses,restarts,pe_seconds,ratio_pe_tutte,peak_rss_mb,status,certified,input_max_sd,input_mean_sd,output_max_sd,output_mean_sd\n";
-  md << "| kind | mesh | seed | #V | Tutte flipped | Tutte degenerate | invalid before | collapses | Tutte s | PE s | PE/Tutte | peak RSS MB | certified | mean SD in | mean SD out | max SD out |\n";
-  md << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  csv << "kind,mesh,seed,vertices,faces,tutte_flipped,tutte_degenerate,tutte_seconds,invalid_before,collapses,restarts,pe_seconds,ratio_pe_tutte,peak_rss_mb,status,certified,input_max_sd,input_mean_sd,output_max_sd,output_mean_sd,opt_status,opt_certified,opt_border_exact,opt_iterations,opt_seconds,opt_seconds_per_iteration,opt_max_sd,opt_mean_sd\n";
+  md << "| kind | mesh | seed | #V | Tutte flipped | Tutte degenerate | invalid before | collapses | Tutte s | PE s | PE/Tutte | peak RSS MB | certified | mean SD in | mean SD out | max SD out |" << (optimize ? " optimized: status | certified | border exact | iterations | s | s/iteration | mean SD | max SD |" : "") << "\n";
+  md << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|" << (optimize ? "---|---|---|---|---|---|---|---|" : "") << "\n";
   std::size_t certified = 0; std::vector<double> ratios;
   for(const Row& r : rows)
   {
     const double ratio = r.tutte_seconds > 0 ? r.pe_seconds / r.tutte_seconds : 0;
     if(r.kind == "corpus") ratios.push_back(ratio);
-    certified += r.valid;
+    certified += r.valid && (!optimize || (r.opt_valid && r.opt_border_exact));
     csv << r.kind << ',' << r.mesh << ',' << r.seed << ',' << r.vertices << ',' << r.faces << ',' << r.tutte_flipped << ','
         << r.tutte_degenerate << ',' << r.tutte_seconds << ',' << r.invalid_before << ',' << r.collapses << ',' << r.restarts << ','
         << r.pe_seconds << ',' << ratio << ',' << r.peak_mb << ',' << r.status << ',' << (r.valid ? 1 : 0) << ','
-        << r.in_max << ',' << r.in_mean << ',' << r.out_max << ',' << r.out_mean << '\n';
+        << r.in_max << ',' << r.in_mean << ',' << r.out_max << ',' << r.out_mean << ','
+        << (r.opt_run ? r.opt_status : "") << ',' << r.opt_valid << ',' << r.opt_border_exact << ',' << r.opt_iterations << ','
+        << r.opt_seconds << ',' << r.opt_per_iteration << ',' << r.opt_max << ',' << r.opt_mean << '\n';
     md << "| " << r.kind << " | " << r.mesh << " | " << r.seed << " | " << r.vertices << " | " << r.tutte_flipped << " | " << r.tutte_degenerate
        << " | " << r.invalid_before << " | " << r.collapses << " | " << r.tutte_seconds << " | " << r.pe_seconds << " | " << ratio << " | "
-       << r.peak_mb << " | " << (r.valid ? "yes" : "**NO**") << " | " << r.in_mean << " | " << r.out_mean << " | " << r.out_max << " |\n";
+       << r.peak_mb << " | " << (r.valid ? "yes" : "**NO**") << " | " << r.in_mean << " | " << r.out_mean << " | " << r.out_max << " |";
+    if(optimize)
+      md << " " << r.opt_status << " | " << (r.opt_valid ? "yes" : "**NO**") << " | " << (r.opt_border_exact ? "yes" : "**NO**") << " | "
+         << r.opt_iterations << " | " << r.opt_seconds << " | " << r.opt_per_iteration << " | " << r.opt_mean << " | " << r.opt_max << " |";
+    md << "\n";
   }
   md << "\nCertified: " << certified << " / " << rows.size() << "; median PE/Tutte time ratio over the corpus runs: " << median(ratios) << "\n";
   std::cout << "certified " << certified << " / " << rows.size() << ", median corpus PE/Tutte ratio " << median(ratios) << "\n";

@@ -35,7 +35,8 @@ Polygon_class classify_convex_polygon(const std::vector<Point_2>& P, ExactOrient
     if(P[i].x() == P[(i + 1) % n].x() && P[i].y() == P[(i + 1) % n].y())
       return Polygon_class::DEGENERATE;
 
-  bool has_pos = false, has_neg = false, has_col = false;
+  // all turns first: a polygon with no turn at all is degenerate, not a spike
+  bool has_pos = false, has_neg = false, has_col = false, has_spike = false;
   for(std::size_t i = 0; i < n; ++i)
   {
     const Point_2& a = P[(i + n - 1) % n];
@@ -51,11 +52,11 @@ Polygon_class classify_convex_polygon(const std::vector<Point_2>& P, ExactOrient
       const bool xdiff = !(a.x() == b.x());
       const bool back = xdiff ? ((a.x() < b.x()) != (b.x() < c.x()))
                               : ((a.y() < b.y()) != (b.y() < c.y()));
-      if(back) return Polygon_class::NON_CONVEX;
+      if(back) has_spike = true;
     }
   }
   if(!has_pos && !has_neg) return Polygon_class::DEGENERATE;
-  if(has_pos && has_neg) return Polygon_class::NON_CONVEX;
+  if((has_pos && has_neg) || has_spike) return Polygon_class::NON_CONVEX;
   orientation = has_pos ? 1 : -1;
 
   // winding number of the edge directions: exactly one full turn

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Installs the Debian packages the project needs (Debian 12 "bookworm"): compiler, CMake,
+# CGAL 5.5 with Eigen, Boost, GMP, MPFR and TBB, doxygen, python3 (test scripts), and
+# libcgal-demo for its real meshes (without its recommended packages: it would pull in Qt).
+# Runs apt-get only when a package is missing; as a non-root user it uses sudo.
+set -euo pipefail
+export DEBIAN_FRONTEND=noninteractive
+
+packages=(libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev libtbb-dev doxygen cmake make g++ python3)
+demo_packages=(libcgal-demo)
+
+missing=()
+for p in "${packages[@]}" "${demo_packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all Debian packages are installed"
+  exit 0
+fi
+echo "setup: installing ${missing[*]}"
+
+sudo=()
+if [ "$(id -u)" -ne 0 ]; then sudo=(sudo env DEBIAN_FRONTEND=noninteractive); fi
+"${sudo[@]}" apt-get update
+"${sudo[@]}" apt-get install -y --no-install-recommends "${packages[@]}"
+"${sudo[@]}" apt-get install -y --no-install-recommends "${demo_packages[@]}"

@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Command 2 of the README: set-up, Release build of everything with the tests, and the
+# whole test suite (ctest; the doxygen build and an install + find_package test included).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/setup.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON
+cmake --build build -j2
+ctest --test-dir build --output-on-failure

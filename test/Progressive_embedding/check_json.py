@@ -1,0 +1,33 @@
+#!/usr/bin/env python3
+"""check_json.py FILE COND... : FILE holds one JSON object (pe --json); each COND is
+KEY OP VALUE with OP among == != >= <= > < and VALUE a JSON literal (true, 0, "OK").
+Exits 1 if the file is not exactly one JSON object or a condition fails."""
+import json, operator, re, sys
+
+OPS = [("==", operator.eq), ("!=", operator.ne), (">=", operator.ge), ("<=", operator.le),
+       (">", operator.gt), ("<", operator.lt)]
+
+def main():
+    text = open(sys.argv[1]).read()
+    obj = json.loads(text)  # raises on anything but one JSON value
+    if not isinstance(obj, dict):
+        print("not a JSON object"); return 1
+    ok = True
+    for cond in sys.argv[2:]:
+        for sym, op in OPS:
+            m = re.match(r"^(\w+)" + re.escape(sym) + r"(.+)$", cond)
+            if m:
+                key, value = m.group(1), json.loads(m.group(2))
+                if key not in obj:
+                    print("missing key:", key); ok = False
+                elif type(obj[key]) is bool and type(value) is not bool or not op(obj[key], value):
+                    print("failed: %s (value %r)" % (cond, obj[key])); ok = False
+                else:
+                    print("ok: %s" % cond)
+                break
+        else:
+            print("bad condition:", cond); ok = False
+    return 0 if ok else 1
+
+if __name__ == "__main__":
+    sys.exit(main())

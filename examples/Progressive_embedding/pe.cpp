@@ -15,6 +15,7 @@
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
 #include <CGAL/Progressive_embedding/check_embedding.h>
 #include <CGAL/Progressive_embedding/progressive_embedding.h>
+#include <CGAL/Progressive_embedding/optimize_distortion.h>
 #include <CGAL/Progressive_embedding/IO/OBJ_with_uv.h>
 #include <CGAL/Progressive_embedding/IO/SVG.h>
 #include <CGAL/Progressive_embedding/internal/protocols.h>
@@ -92,8 +93,13 @@ const char* usage_text =
   "        picture of the uv map of IN (flipped and degenerate faces highlighted)\n"
   "  untangle IN.obj OUT.obj [--no-progress]\n"
   "        progressive embedding of the uv map of IN, border kept bit-exactly\n"
-  "  embed IN OUT.obj [--border ...] [--weights ...] [--no-progress]\n"
-  "        Tutte, then progressive embedding if the Tutte map is not valid\n"
+  "  embed IN OUT.obj [--border ...] [--weights ...] [--optimize] [--no-progress]\n"
+  "        Tutte, then progressive embedding if the Tutte map is not valid; with --optimize, the repair\n"
+  "        also re-inserts faces below 1e-3 x the mean area, then optimize runs\n"
+  "  optimize IN.obj OUT.obj [--free-border] [--fix FILE] [--iterations N] [--no-progress]\n"
+  "        lower the symmetric Dirichlet distortion of the valid uv map of IN without leaving the\n"
+  "        valid maps; the border (unless --free-border) and the vertices listed in FILE\n"
+  "        (lines 'vertex_index u v', 0-based uv-vertex indices) are kept bit-exactly\n"
   "  generate stacked DEPTH OUT.obj | generate grid N OUT.obj\n"
   "        test inputs: the deep stacked triangulation (corners pinned as in the thingi protocol,\n"
   "        interior at the first corner) or an N x N grid disk (uv = its xy coordinates)\n"
@@ -129,8 +135,8 @@ struct Arguments
 };
 
 const std::set<std::string> valued_options = { "--border", "--weights", "--number-type", "--seed", "--svg",
-                                               "--mesh", "--out-dir" };
-const std::set<std::string> flag_options = { "--json", "--no-progress" };
+                                               "--mesh", "--out-dir" , "--fix", "--iterations" };
+const std::set<std::string> flag_options = { "--json", "--no-progress", "--optimize", "--free-border" };
 
 // returns an empty string on success, the error otherwise
 std::string parse_arguments(int argc, char** argv, int first, Arguments& a)
@@ -742,6 +748,27 @@ PE::Error_code run_progressive_embedding(Input& in, bool progress, PE::Progressi
   return ec;
 }
 
+// distortion optimization of in.uv (valid map), with a progress bar
+PE::Error_code run_optimize(Input& in, bool progress, bool free_border, const std::vector<vertex_descriptor>& fixed,
+                            std::size_t iterations, PE::Optimization_statistics& stats)
+{
+  Progress bar("optimization", progress);
+  const PE::Error_code ec = PE::optimize_distortion(in.mesh, in.uv,
+    PE::parameters::free_border(free_border, PE::parameters::constrained_vertices(fixed,
+    PE::parameters::optimization_statistics(&stats, CGAL::parameters::callback(bar.callback()).number_of_iterations(iterations)))));
+  bar.finish();
+  return ec;
+}
+
+void add_optimization(Result& r, const PE::Optimization_statistics& os)
+{
+  r.add("iterations", os.iterations);
+  r.add("converged", os.converged);
+  r.add("energy_before", os.energy_before);
+  r.add("energy_after", os.energy_after);
+  r.add("seconds_optimization", os.seconds);
+}
+
 void add_statistics(Result& r, const PE::Progressive_embedding_statistics& st)
 {
   r.add("invalid_before", st.invalid_faces_before);
@@ -801,9 +828,10 @@ int cmd_untangle(const Arguments& a)
 
 int cmd_embed(const Arguments& a)
 {
-  std::string err = check_options(a, { "--border", "--weights", "--no-progress" });
+  std::string err = check_options(a, { "--border", "--weights", "--no-progress", "--optimize" });
   if(!err.empty()) return usage(err);
   if(a.positional.size() != 2) return usage("embed needs IN and OUT.obj");
+  const bool optimize = a.has("--optimize");
   PE::Border_shape border = PE::Border_shape::CIRCLE;
   PE::Weights weights = PE::Weights::UNIFORM;
   if(a.has("--border") && !parse_border(a.get("--border"), border)) return usage("unknown border '" + a.get("--border") + "'");
@@ -827,9 +855,25 @@ int cmd_embed(const Arguments& a)
     if(!tutte_report.is_valid())
     {
       repaired = true;
-      ec = run_progressive_embedding(in, !a.has("--no-progress"), st);
+      if(optimize)
+      {
+        // for quality, also re-insert faces far below the mean area (they cannot be optimized away)
+        Progress bar("progressive embedding", !a.has("--no-progress"));
+        ec = PE::progressive_embedding(in.mesh, in.uv, PE::parameters::minimum_area_ratio(1e-3,
+               PE::parameters::statistics(&st, CGAL::parameters::callback(bar.callback()))));
+        bar.finish();
+      }
+      else
+        ec = run_progressive_embedding(in, !a.has("--no-progress"), st);
       report = (ec == PE::OK) ? st.report : PE::check_embedding(in.mesh, in.uv);
     }
+  }
+  PE::Optimization_statistics os;
+  if(ec == PE::OK && optimize)
+  {
+    const PE::Error_code eo = run_optimize(in, !a.has("--no-progress"), false, std::vector<vertex_descriptor>(), 300, os);
+    if(eo != PE::OK && eo != PE::ERROR_BUDGET_EXHAUSTED) ec = eo;
+    else report = os.report;
   }
   const double seconds = timer.time();
   Result r;
@@ -844,12 +888,14 @@ int cmd_embed(const Arguments& a)
   r.add("tutte_degenerate", tutte_report.degenerate);
   r.add("repaired", repaired);
   add_statistics(r, st);
+  if(optimize) add_optimization(r, os);
   r.add("seconds", seconds);
   std::ostringstream s;
   s << "embed " << in.filename << ": faces " << count_faces(in.mesh) << ", Tutte "
     << (tutte_report.is_valid() ? "valid" : "INVALID") << " (flipped " << tutte_report.flipped << ", degenerate "
     << tutte_report.degenerate << ")";
   if(repaired) s << ", progressive embedding: " << statistics_summary(st);
+  if(optimize) s << ", optimization: " << os.iterations << " iterations, mean sym. Dirichlet " << os.energy_before << " -> " << os.energy_after;
   s << ", " << seconds_string(seconds) << "; ";
   if(ec != PE::OK)
   {
@@ -863,6 +909,87 @@ int cmd_embed(const Arguments& a)
   s << report.summary();
   if(w != EXIT_VALID) return finish(a, r, s.str(), w);
   return finish(a, r, s.str(), report.is_valid() ? EXIT_VALID : EXIT_INVALID);
+}
+
+int cmd_optimize(const Arguments& a)
+{
+  std::string err = check_options(a, { "--free-border", "--fix", "--iterations", "--no-progress" });
+  if(!err.empty()) return usage(err);
+  if(a.positional.size() != 2) return usage("optimize needs IN.obj and OUT.obj");
+  std::size_t iterations = 200;
+  if(a.has("--iterations"))
+  {
+    char* end = nullptr;
+    const long n = std::strtol(a.get("--iterations").c_str(), &end, 10);
+    if(!end || *end != '\0' || n < 1) return usage("--iterations must be a positive integer, not '" + a.get("--iterations") + "'");
+    iterations = std::size_t(n);
+  }
+  Input in;
+  if(!read_input(a.positional[0], in, Uv_mode::REQUIRED)) return EXIT_INPUT;
+  std::vector<vertex_descriptor> fixed;
+  if(a.has("--fix"))
+  {
+    std::ifstream f(a.get("--fix"));
+    if(!f) { std::cerr << "pe: " << a.get("--fix") << ": cannot open (ERROR_CANNOT_READ_FILE)" << std::endl; return EXIT_INPUT; }
+    std::string line;
+    std::size_t lineno = 0;
+    while(std::getline(f, line))
+    {
+      ++lineno;
+      std::istringstream ls(line);
+      long idx; double u, v; std::string extra;
+      if(line.find_first_not_of(" \t\r") == std::string::npos || line[line.find_first_not_of(" \t")] == '#') continue;
+      if(!(ls >> idx >> u >> v) || (ls >> extra) || idx < 0 || std::size_t(idx) >= in.mesh.number_of_vertices()
+         || !std::isfinite(u) || !std::isfinite(v))
+      {
+        std::cerr << "pe: " << a.get("--fix") << ": line " << lineno << ": expected 'vertex_index u v' with 0 <= vertex_index < "
+                  << in.mesh.number_of_vertices() << " and finite u, v (ERROR_MALFORMED_FILE)" << std::endl;
+        return EXIT_INPUT;
+      }
+      const vertex_descriptor vd(static_cast<Mesh::size_type>(idx));
+      in.uv[vd] = Point_2(u, v);
+      fixed.push_back(vd);
+    }
+  }
+  CGAL::Real_timer timer;
+  timer.start();
+  PE::Optimization_statistics os;
+  const PE::Error_code ec = run_optimize(in, !a.has("--no-progress"), a.has("--free-border"), fixed, iterations, os);
+  const double seconds = timer.time();
+  Result r;
+  r.add("command", "optimize");
+  r.add("input", in.filename);
+  r.add("output", a.positional[1]);
+  r.add("status", PE::get_error_name(ec));
+  add_report(r, os.report);
+  add_optimization(r, os);
+  r.add("constrained", fixed.size());
+  r.add("seconds", seconds);
+  std::ostringstream s;
+  s << "optimize " << in.filename << ": faces " << os.report.faces << ", " << os.iterations << " iterations"
+    << (os.converged ? " (converged)" : "") << ", mean sym. Dirichlet " << os.energy_before << " -> " << os.energy_after
+    << ", " << seconds_string(seconds) << "; ";
+  if(ec == PE::ERROR_INVALID_EMBEDDING)
+  {
+    r.add("written", false);
+    std::cerr << "pe: the input map is not valid" << (fixed.empty() ? "" : " with the constraints of --fix")
+              << ": optimize needs a valid map (run pe untangle first)" << std::endl;
+    s << PE::get_error_name(ec) << ", nothing written";
+    return finish(a, r, s.str(), EXIT_INVALID);
+  }
+  if(ec != PE::OK && ec != PE::ERROR_BUDGET_EXHAUSTED)
+  {
+    r.add("written", false);
+    std::cerr << "pe: optimization failed: " << PE::get_error_message(ec) << std::endl;
+    s << PE::get_error_name(ec) << ", nothing written";
+    return finish(a, r, s.str(), EXIT_INVALID);
+  }
+  // a budget that runs out still leaves a valid, improved map: it is written
+  const int w = write_outputs(in, a.positional[1], std::string(), std::string());
+  r.add("written", w == EXIT_VALID);
+  s << os.report.summary();
+  if(w != EXIT_VALID) return finish(a, r, s.str(), w);
+  return finish(a, r, s.str(), os.report.is_valid() ? EXIT_VALID : EXIT_INVALID);
 }
 
 int cmd_generate(const Arguments& a)
@@ -1004,6 +1131,7 @@ int main(int argc, char** argv)
     if(cmd == "svg") return cmd_svg(a);
     if(cmd == "untangle") return cmd_untangle(a);
     if(cmd == "embed") return cmd_embed(a);
+    if(cmd == "optimize") return cmd_optimize(a);
     if(cmd == "generate") return cmd_generate(a);
     if(cmd == "demo") return cmd_demo(a);
   }

@@ -15,6 +15,8 @@
 #include <CGAL/Progressive_embedding/check_embedding.h>
 #include <CGAL/Progressive_embedding/progressive_embedding.h>
 #include <CGAL/Progressive_embedding/Progressive_embedding_parameterizer_3.h>
+#include <CGAL/Progressive_embedding/distortion.h>
+#include <CGAL/Progressive_embedding/optimize_distortion.h>
 #include <CGAL/Progressive_embedding/IO/OBJ_with_uv.h>
 #include <CGAL/Progressive_embedding/IO/SVG.h>
 

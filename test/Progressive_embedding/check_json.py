@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """check_json.py FILE COND... : FILE holds one JSON object (pe --json); each COND is
-KEY OP VALUE with OP among == != >= <= > < and VALUE a JSON literal (true, 0, "OK").
+KEY OP VALUE with OP among == != >= <= > < and VALUE a JSON literal (true, 0, "OK")
+or the name of another key of the object (energy_after<energy_before).
 Exits 1 if the file is not exactly one JSON object or a condition fails."""
 import json, operator, re, sys
 
@@ -17,7 +18,9 @@ def main():
         for sym, op in OPS:
             m = re.match(r"^(\w+)" + re.escape(sym) + r"(.+)$", cond)
             if m:
-                key, value = m.group(1), json.loads(m.group(2))
+                key, rhs = m.group(1), m.group(2)
+                value = obj[rhs] if re.match(r"^[A-Za-z_]\w*$", rhs) and rhs not in ("true", "false", "null") and rhs in obj \
+                    else json.loads(rhs)
                 if key not in obj:
                     print("missing key:", key); ok = False
                 elif type(obj[key]) is bool and type(value) is not bool or not op(obj[key], value):

@@ -141,6 +141,23 @@ int main(int argc, char** argv)
         uv[v] = K::Point_2(radius * x, radius * y);
       }
   };
+  // Tutte on a circle (the reference distortion), then random interior positions, then the repair
+  auto random_init_run = [&](SM& m, const std::string& name, int reps) {
+    Row r; r.kind = "random-init"; r.mesh = name; r.seed = 1;
+    auto uv = m.add_property_map<vd, K::Point_2>("uv").first;
+    std::vector<double> tt;
+    for(int k = 0; k < reps; ++k)
+    { CGAL::Real_timer t; t.start(); PE::tutte_embedding(m, SM::null_halfedge(), uv, PE::parameters::border_shape(PE::Border_shape::CIRCLE)); tt.push_back(t.time()); }
+    r.tutte_seconds = median(tt);
+    PE::Embedding_report rep = PE::check_embedding(m, uv);
+    r.in_max = rep.max_energy_3d; r.in_mean = rep.mean_energy_3d;
+    r.tutte_flipped = rep.flipped; r.tutte_degenerate = rep.degenerate;
+    random_init(m, uv, 1);
+    r.vertices = m.number_of_vertices(); r.faces = m.number_of_faces();
+    repair(m, uv, r, reps);
+    std::cerr << r.mesh << ": " << r.status << " " << r.pe_seconds << " s\n";
+    rows.push_back(r);
+  };
   {
     std::vector<std::string> names;
     if(DIR* dir = opendir((data + "/meshes").c_str()))
@@ -157,40 +174,15 @@ int main(int argc, char** argv)
       PE::internal::Indexed_disk<SM> disk;
       if(PE::internal::make_indexed_disk(m, SM::null_halfedge(), disk) != PE::OK || disk.border.size() < 3) continue;
       if(quick && ++ndisks > 3) break;
-      Row r; r.kind = "random-init"; r.mesh = name; r.seed = 1;
-      auto uv = m.add_property_map<vd, K::Point_2>("uv").first;
-      std::vector<double> tt;
-      for(int k = 0; k < repeat; ++k)
-      { CGAL::Real_timer t; t.start(); PE::tutte_embedding(m, SM::null_halfedge(), uv, PE::parameters::border_shape(PE::Border_shape::CIRCLE)); tt.push_back(t.time()); }
-      r.tutte_seconds = median(tt);
-      PE::Embedding_report rep = PE::check_embedding(m, uv);
-      r.in_max = rep.max_energy_3d; r.in_mean = rep.mean_energy_3d;
-      r.tutte_flipped = rep.flipped; r.tutte_degenerate = rep.degenerate;
-      random_init(m, uv, 1);
-      r.vertices = m.number_of_vertices(); r.faces = m.number_of_faces();
-      repair(m, uv, r, repeat);
-      std::cerr << r.mesh << ": " << r.status << " " << r.pe_seconds << " s\n";
-      rows.push_back(r);
+      random_init_run(m, name, repeat);
     }
   }
   // --- random init on grid disks (circle border, interior uniformly random inside)
   std::vector<std::size_t> sides = quick ? std::vector<std::size_t>{32, 64} : std::vector<std::size_t>{32, 64, 128, 256, 512};
   for(std::size_t n : sides)
   {
-    Row r; r.kind = "random-init"; r.mesh = "grid" + std::to_string(n) + "x" + std::to_string(n); r.seed = 1;
     SM m; PE::internal::make_grid_disk(n, m);
-    auto uv = m.add_property_map<vd, K::Point_2>("uv").first;
-    std::vector<double> tt;
-    for(int k = 0; k < repeat; ++k)
-    { CGAL::Real_timer t; t.start(); PE::tutte_embedding(m, SM::null_halfedge(), uv, PE::parameters::border_shape(PE::Border_shape::CIRCLE)); tt.push_back(t.time()); }
-    r.tutte_seconds = median(tt);
-    PE::Embedding_report rep = PE::check_embedding(m, uv);
-    r.in_max = rep.max_energy_3d; r.in_mean = rep.mean_energy_3d;
-    random_init(m, uv, 1);
-    r.vertices = m.number_of_vertices(); r.faces = m.number_of_faces();
-    repair(m, uv, r, n >= 256 ? 1 : repeat);
-    std::cerr << r.mesh << ": " << r.status << " " << r.pe_seconds << " s\n";
-    rows.push_back(r);
+    random_init_run(m, "grid" + std::to_string(n) + "x" + std::to_string(n), n >= 256 ? 1 : repeat);
   }
   // --- tables
   std::ofstream csv(out + ".csv"), md(out + ".md");

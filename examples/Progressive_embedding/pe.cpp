@@ -788,6 +788,25 @@ std::string statistics_summary(const PE::Progressive_embedding_statistics& st)
   return s.str();
 }
 
+// The common end of the commands that write a map: on failure a message and nothing written,
+// else the OBJ file; the exit status says whether the map written is certified valid.
+int write_and_finish(const Arguments& a, Result& r, std::ostringstream& s, const Input& in, PE::Error_code ec,
+                     const PE::Embedding_report& report, const char* failure)
+{
+  if(ec != PE::OK)
+  {
+    r.add("written", false);
+    std::cerr << "pe: " << failure << ": " << PE::get_error_message(ec) << std::endl;
+    s << PE::get_error_name(ec) << ", nothing written";
+    return finish(a, r, s.str(), EXIT_INVALID);
+  }
+  const int w = write_outputs(in, a.positional[1], std::string(), std::string());
+  r.add("written", w == EXIT_VALID);
+  s << report.summary();
+  if(w != EXIT_VALID) return finish(a, r, s.str(), w);
+  return finish(a, r, s.str(), report.is_valid() ? EXIT_VALID : EXIT_INVALID);
+}
+
 int cmd_untangle(const Arguments& a)
 {
   std::string err = check_options(a, { "--no-progress" });
@@ -812,18 +831,7 @@ int cmd_untangle(const Arguments& a)
   r.add("seconds", seconds);
   std::ostringstream s;
   s << "untangle " << in.filename << ": faces " << report.faces << ", " << statistics_summary(st) << ", " << seconds_string(seconds) << "; ";
-  if(ec != PE::OK)
-  {
-    r.add("written", false);
-    std::cerr << "pe: progressive embedding failed: " << PE::get_error_message(ec) << std::endl;
-    s << PE::get_error_name(ec) << ", nothing written";
-    return finish(a, r, s.str(), EXIT_INVALID);
-  }
-  const int w = write_outputs(in, a.positional[1], std::string(), std::string());
-  r.add("written", w == EXIT_VALID);
-  s << report.summary();
-  if(w != EXIT_VALID) return finish(a, r, s.str(), w);
-  return finish(a, r, s.str(), report.is_valid() ? EXIT_VALID : EXIT_INVALID);
+  return write_and_finish(a, r, s, in, ec, report, "progressive embedding failed");
 }
 
 int cmd_embed(const Arguments& a)
@@ -897,18 +905,7 @@ int cmd_embed(const Arguments& a)
   if(repaired) s << ", progressive embedding: " << statistics_summary(st);
   if(optimize) s << ", optimization: " << os.iterations << " iterations, mean sym. Dirichlet " << os.energy_before << " -> " << os.energy_after;
   s << ", " << seconds_string(seconds) << "; ";
-  if(ec != PE::OK)
-  {
-    r.add("written", false);
-    std::cerr << "pe: embed failed: " << PE::get_error_message(ec) << std::endl;
-    s << PE::get_error_name(ec) << ", nothing written";
-    return finish(a, r, s.str(), EXIT_INVALID);
-  }
-  const int w = write_outputs(in, a.positional[1], std::string(), std::string());
-  r.add("written", w == EXIT_VALID);
-  s << report.summary();
-  if(w != EXIT_VALID) return finish(a, r, s.str(), w);
-  return finish(a, r, s.str(), report.is_valid() ? EXIT_VALID : EXIT_INVALID);
+  return write_and_finish(a, r, s, in, ec, report, "embed failed");
 }
 
 int cmd_optimize(const Arguments& a)
@@ -977,19 +974,8 @@ int cmd_optimize(const Arguments& a)
     s << PE::get_error_name(ec) << ", nothing written";
     return finish(a, r, s.str(), EXIT_INVALID);
   }
-  if(ec != PE::OK && ec != PE::ERROR_BUDGET_EXHAUSTED)
-  {
-    r.add("written", false);
-    std::cerr << "pe: optimization failed: " << PE::get_error_message(ec) << std::endl;
-    s << PE::get_error_name(ec) << ", nothing written";
-    return finish(a, r, s.str(), EXIT_INVALID);
-  }
   // a budget that runs out still leaves a valid, improved map: it is written
-  const int w = write_outputs(in, a.positional[1], std::string(), std::string());
-  r.add("written", w == EXIT_VALID);
-  s << os.report.summary();
-  if(w != EXIT_VALID) return finish(a, r, s.str(), w);
-  return finish(a, r, s.str(), os.report.is_valid() ? EXIT_VALID : EXIT_INVALID);
+  return write_and_finish(a, r, s, in, ec == PE::ERROR_BUDGET_EXHAUSTED ? PE::OK : ec, os.report, "optimization failed");
 }
 
 int cmd_generate(const Arguments& a)

@@ -13,7 +13,9 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Interval_nt.h>
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/enum.h>
+#include <boost/property_map/property_map.hpp>
 
 namespace CGAL {
 namespace Progressive_embedding {
@@ -109,6 +111,16 @@ template <class K>
 struct Get_pe_traits { typedef Progressive_embedding_traits_2<K> type; };
 template <class K>
 struct Get_pe_traits<Progressive_embedding_traits_2<K> > { typedef Progressive_embedding_traits_2<K> type; };
+
+// The computation types of a uv map: its point type decides the kernel and the number type.
+template <class VertexUVMap>
+struct Uv_map_types
+{
+  typedef typename boost::property_traits<VertexUVMap>::value_type  Point_2;
+  typedef typename CGAL::Kernel_traits<Point_2>::Kernel             Kernel;
+  typedef typename Get_pe_traits<Kernel>::type                      Traits;
+  typedef typename Traits::FT                                       FT;
+};
 
 } // namespace internal
 #endif

@@ -688,10 +688,9 @@ Error_code progressive_embedding(const TriangleMesh& tm, VertexUVMap uvm,
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef boost::graph_traits<TriangleMesh>                                GT;
-  typedef typename boost::property_traits<VertexUVMap>::value_type         Point_2;
-  typedef typename CGAL::Kernel_traits<Point_2>::Kernel                    UV_kernel;
-  typedef typename internal::Get_pe_traits<UV_kernel>::type                Traits;
-  typedef typename Traits::FT                                              FT;
+  typedef typename internal::Uv_map_types<VertexUVMap>::Point_2           Point_2;
+  typedef typename internal::Uv_map_types<VertexUVMap>::Traits            Traits;
+  typedef typename internal::Uv_map_types<VertexUVMap>::FT                FT;
 
   CGAL::Real_timer timer;
   timer.start();

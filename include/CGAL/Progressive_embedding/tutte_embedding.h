@@ -177,10 +177,9 @@ Error_code tutte_embedding(const TriangleMesh& tm,
   using CGAL::parameters::is_default_parameter;
   typedef boost::graph_traits<TriangleMesh>                                GT;
   typedef typename GT::vertex_descriptor                                   vertex_descriptor;
-  typedef typename boost::property_traits<VertexUVMap>::value_type         Point_2;
-  typedef typename CGAL::Kernel_traits<Point_2>::Kernel                    UV_kernel;
-  typedef typename internal::Get_pe_traits<UV_kernel>::type                Traits;
-  typedef typename Traits::FT                                              FT;
+  typedef typename internal::Uv_map_types<VertexUVMap>::Point_2           Point_2;
+  typedef typename internal::Uv_map_types<VertexUVMap>::Traits            Traits;
+  typedef typename internal::Uv_map_types<VertexUVMap>::FT                FT;
 
   const Border_shape shape = choose_parameter(get_parameter(np, internal_np::border_shape), Border_shape::FIXED);
   const Weights wts = choose_parameter(get_parameter(np, internal_np::weights), Weights::UNIFORM);

@@ -26,12 +26,20 @@
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Real_timer.h>
 
+#include <CGAL/tags.h>
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_for.h>
+#include <tbb/blocked_range.h>
+#endif
+
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SVD>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <type_traits>
 #include <functional>
 #include <limits>
 #include <numeric>
@@ -114,6 +122,8 @@ inline double max_flip_free_step(double x0, double y0, double x1, double y1, dou
 /// `progressive_embedding()`. The uv number type may be `double`, an exact rational or MPFR: directions are
 /// computed in double and applied and certified in the uv number type.
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`: with the latter (TBB linked, floating-point uv),
+///         the per-vertex sweeps move the vertices of each colour of a greedy colouring in parallel
 /// \tparam TriangleMesh a model of `FaceGraph`
 /// \tparam VertexUVMap a model of `ReadWritePropertyMap` with `Point_2` values
 /// \tparam NamedParameters a sequence of named parameters
@@ -178,7 +188,8 @@ inline double max_flip_free_step(double x0, double y0, double x1, double y1, dou
 /// \return `OK` when converged; `ERROR_BUDGET_EXHAUSTED` when a budget ran out first (the map written is valid
 ///         and no worse than the input); `ERROR_INVALID_EMBEDDING` if the input map is not valid (nothing written);
 ///         the disk and parameter errors of `tutte_embedding()`.
-template <typename TriangleMesh, typename VertexUVMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
+template <typename ConcurrencyTag = CGAL::Sequential_tag,
+          typename TriangleMesh, typename VertexUVMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Error_code optimize_distortion(const TriangleMesh& tm, VertexUVMap uvm,
                                const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
@@ -337,69 +348,112 @@ Error_code optimize_distortion(const TriangleMesh& tm, VertexUVMap uvm,
   // One sweep of per-vertex Newton steps on the symmetric Dirichlet energy of each vertex's
   // star: robust where the global step is not (faces 1e-20 times smaller than others), and
   // certified like the global step (exact orientation of the star in the uv number type).
-  auto local_sweep = [&]() {
-    std::size_t moved = 0;
-    for(std::size_t i = 0; i < nv; ++i)
+  // One Newton step on the symmetric Dirichlet energy of the star of vertex i: robust where the
+  // global step is not (faces 1e-20 times smaller than others), and certified like the global
+  // step (exact orientation of the star in the uv number type). Returns true if i moved.
+  auto move_vertex = [&](std::size_t i) -> bool {
+    double g[2] = {0, 0}, H[3] = {0, 0, 0}, E0 = 0;
+    bool ok = true;
+    auto corner_ref = [&](std::size_t f, int c) {
+      internal::Reference_triangle<double> r = refs[f];
+      r.dot = {{ refs[f].dot[c], refs[f].dot[(c + 1) % 3], refs[f].dot[(c + 2) % 3] }};
+      return r;
+    };
+    for(const auto& fc : star[i])
     {
-      if(var[i] < 0) continue;
-      double g[2] = {0, 0}, H[3] = {0, 0, 0}, E0 = 0;
-      bool ok = true;
-      auto corner_ref = [&](std::size_t f, int c) {
-        internal::Reference_triangle<double> r = refs[f];
-        r.dot = {{ refs[f].dot[c], refs[f].dot[(c + 1) % 3], refs[f].dot[(c + 2) % 3] }};
-        return r;
-      };
+      if(W[fc.first] == 0) continue;
+      const auto& t = disk.faces[fc.first];
+      const std::size_t a = t[(fc.second + 1) % 3], b = t[(fc.second + 2) % 3];
+      double Ef; std::array<double, 2> gf; std::array<double, 3> Hf;
+      if(!internal::symmetric_dirichlet_local(corner_ref(fc.first, fc.second), X[i], Y[i], X[a], Y[a], X[b], Y[b], Ef, gf, Hf))
+      { ok = false; break; }
+      E0 += Ef * W[fc.first]; g[0] += gf[0] * W[fc.first]; g[1] += gf[1] * W[fc.first];
+      H[0] += Hf[0] * W[fc.first]; H[1] += Hf[1] * W[fc.first]; H[2] += Hf[2] * W[fc.first];
+    }
+    double d[2];
+    if(!ok || !internal::projected_newton_direction(g, H, d)) return false;
+    double tmax = 1.0;
+    for(const auto& fc : star[i])
+    {
+      const auto& t = disk.faces[fc.first];
+      const std::size_t a = t[(fc.second + 1) % 3], b = t[(fc.second + 2) % 3];
+      const double A0 = (X[a] - X[i]) * (Y[b] - Y[i]) - (Y[a] - Y[i]) * (X[b] - X[i]);
+      const double dA = d[0] * (Y[a] - Y[b]) + d[1] * (X[b] - X[a]);
+      if(dA < 0 && A0 > 0) tmax = (std::min)(tmax, 0.8 * (A0 / -dA));
+    }
+    for(double t = tmax; t > 1e-10 * tmax; t *= 0.5)
+    {
+      const double xi = X[i] + t * d[0], yi = Y[i] + t * d[1];
+      double En = 0;
+      bool valid = true;
       for(const auto& fc : star[i])
       {
         if(W[fc.first] == 0) continue;
-        const auto& t = disk.faces[fc.first];
-        const std::size_t a = t[(fc.second + 1) % 3], b = t[(fc.second + 2) % 3];
-        double Ef; std::array<double, 2> gf; std::array<double, 3> Hf;
-        if(!internal::symmetric_dirichlet_local(corner_ref(fc.first, fc.second), X[i], Y[i], X[a], Y[a], X[b], Y[b], Ef, gf, Hf))
-        { ok = false; break; }
-        E0 += Ef * W[fc.first]; g[0] += gf[0] * W[fc.first]; g[1] += gf[1] * W[fc.first];
-        H[0] += Hf[0] * W[fc.first]; H[1] += Hf[1] * W[fc.first]; H[2] += Hf[2] * W[fc.first];
+        const auto& tr = disk.faces[fc.first];
+        const std::size_t a = tr[(fc.second + 1) % 3], b = tr[(fc.second + 2) % 3];
+        bool okf;
+        const double e = internal::symmetric_dirichlet(corner_ref(fc.first, fc.second), xi, yi, X[a], Y[a], X[b], Y[b], okf);
+        if(!okf || !(e >= 0)) { valid = false; break; }
+        En += e * W[fc.first];
       }
-      double d[2];
-      if(!ok || !internal::projected_newton_direction(g, H, d)) continue;
-      double tmax = 1.0;
+      if(!valid || !(En < E0)) continue;
+      const Point_2 old = P[i];
+      P[i] = Point_2(old.x() + internal::make_ft<FT>(t * d[0]), old.y() + internal::make_ft<FT>(sgn * t * d[1]));
       for(const auto& fc : star[i])
       {
-        const auto& t = disk.faces[fc.first];
-        const std::size_t a = t[(fc.second + 1) % 3], b = t[(fc.second + 2) % 3];
-        const double A0 = (X[a] - X[i]) * (Y[b] - Y[i]) - (Y[a] - Y[i]) * (X[b] - X[i]);
-        const double dA = d[0] * (Y[a] - Y[b]) + d[1] * (X[b] - X[a]);
-        if(dA < 0 && A0 > 0) tmax = (std::min)(tmax, 0.8 * (A0 / -dA));
+        const auto& tr = disk.faces[fc.first];
+        if(orient(P[tr[0]], P[tr[1]], P[tr[2]]) != positive) { valid = false; break; }
       }
-      for(double t = tmax; t > 1e-10 * tmax; t *= 0.5)
-      {
-        const double xi = X[i] + t * d[0], yi = Y[i] + t * d[1];
-        double En = 0;
-        bool valid = true;
-        for(const auto& fc : star[i])
-        {
-          if(W[fc.first] == 0) continue;
-          const auto& tr = disk.faces[fc.first];
-          const std::size_t a = tr[(fc.second + 1) % 3], b = tr[(fc.second + 2) % 3];
-          bool okf;
-          const double e = internal::symmetric_dirichlet(corner_ref(fc.first, fc.second), xi, yi, X[a], Y[a], X[b], Y[b], okf);
-          if(!okf || !(e >= 0)) { valid = false; break; }
-          En += e * W[fc.first];
-        }
-        if(!valid || !(En < E0)) continue;
-        const Point_2 old = P[i];
-        P[i] = Point_2(old.x() + internal::make_ft<FT>(t * d[0]), old.y() + internal::make_ft<FT>(sgn * t * d[1]));
-        for(const auto& fc : star[i])
-        {
-          const auto& tr = disk.faces[fc.first];
-          if(orient(P[tr[0]], P[tr[1]], P[tr[2]]) != positive) { valid = false; break; }
-        }
-        if(!valid) { P[i] = old; continue; }
-        X[i] = CGAL::to_double(P[i].x()); Y[i] = sgn * CGAL::to_double(P[i].y());
-        ++moved;
-        break;
-      }
+      if(!valid) { P[i] = old; continue; }
+      X[i] = CGAL::to_double(P[i].x()); Y[i] = sgn * CGAL::to_double(P[i].y());
+      return true;
     }
+    return false;
+  };
+  // Sweeps over all free vertices. With Parallel_tag (and TBB, and a floating-point uv number type,
+  // whose values are not shared handles), the vertices of one colour of a greedy colouring move in
+  // parallel: two vertices of one colour share no face, so their steps are independent.
+  std::vector<std::vector<std::size_t> > colour_classes;
+  {
+    std::vector<int> colour(nv, -1);
+    for(std::size_t i = 0; i < nv; ++i)
+    {
+      if(var[i] < 0) continue;
+      std::vector<char> used;
+      for(const auto& fc : star[i])
+        for(std::size_t j : disk.faces[fc.first])
+          if(j != i && colour[j] >= 0)
+          {
+            if(used.size() <= std::size_t(colour[j])) used.resize(colour[j] + 1, 0);
+            used[colour[j]] = 1;
+          }
+      int c = 0;
+      while(c < int(used.size()) && used[c]) ++c;
+      colour[i] = c;
+      if(colour_classes.size() <= std::size_t(c)) colour_classes.resize(c + 1);
+      colour_classes[c].push_back(i);
+    }
+  }
+  auto local_sweep = [&]() {
+    std::size_t moved = 0;
+#ifdef CGAL_LINKED_WITH_TBB
+    if(std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value && std::is_floating_point<FT>::value)
+    {
+      for(const std::vector<std::size_t>& cls : colour_classes)
+      {
+        std::atomic<std::size_t> count(0);
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cls.size(), 64), [&](const tbb::blocked_range<std::size_t>& range) {
+          for(std::size_t k = range.begin(); k != range.end(); ++k)
+            if(move_vertex(cls[k])) ++count;
+        });
+        moved += count;
+      }
+      return moved;
+    }
+#endif
+    for(const std::vector<std::size_t>& cls : colour_classes)
+      for(std::size_t i : cls)
+        if(move_vertex(i)) ++moved;
     return moved;
   };
 

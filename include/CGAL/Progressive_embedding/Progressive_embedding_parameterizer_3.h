@@ -17,6 +17,8 @@
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
 #include <CGAL/Default.h>
 
+#include <memory>
+
 namespace CGAL {
 namespace Progressive_embedding {
 
@@ -53,12 +55,14 @@ public:
 
   /// constructs the parameterizer
   Progressive_embedding_parameterizer_3(Border_parameterizer border_parameterizer = Border_parameterizer())
-    : m_border(border_parameterizer) { }
+    : m_border(border_parameterizer), m_state(std::make_shared<State>()) { }
 
-  /// returns the statistics of the last call (progressive embedding counts are zero when Tutte was valid)
-  const Progressive_embedding_statistics& statistics() const { return m_stats; }
-  /// returns `true` if the last call had to repair the Tutte map
-  bool repaired() const { return m_repaired; }
+  /// returns the statistics of the last call (progressive embedding counts are zero when Tutte was valid).
+  /// Copies share them: `CGAL::Surface_mesh_parameterization::parameterize()` takes the parameterizer by value,
+  /// and the caller's object still reports the call.
+  const Progressive_embedding_statistics& statistics() const { return m_state->stats; }
+  /// returns `true` if the last call had to repair the Tutte map (shared by copies, like `statistics()`)
+  bool repaired() const { return m_state->repaired; }
 
   /// computes a certified parameterization of the disk `mesh` whose border contains `bhd`.
   /// \tparam VertexUVmap a model of `ReadWritePropertyMap` with `Point_2` values
@@ -72,6 +76,8 @@ public:
                VertexIndexMap vimap, VertexParameterizedMap vpmap)
   {
     namespace SMP = CGAL::Surface_mesh_parameterization;
+    bool& m_repaired = m_state->repaired;
+    Progressive_embedding_statistics& m_stats = m_state->stats;
     m_repaired = false;
     m_stats = Progressive_embedding_statistics();
     SMP::Error_code status = m_border.parameterize(mesh, bhd, uvmap, vimap, vpmap);
@@ -91,9 +97,13 @@ public:
   }
 
 private:
+  struct State
+  {
+    Progressive_embedding_statistics stats;
+    bool repaired = false;
+  };
   Border_parameterizer m_border;
-  Progressive_embedding_statistics m_stats;
-  bool m_repaired = false;
+  std::shared_ptr<State> m_state;
 };
 
 } // namespace Progressive_embedding

@@ -34,6 +34,7 @@
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
+#include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SVD>
 
 #include <algorithm>
@@ -114,7 +115,8 @@ inline double max_flip_free_step(double x0, double y0, double x1, double y1, dou
 /// free border, the border polygon simple, also exactly). The minimized energy is the sum over faces of the
 /// 3D area times the symmetric Dirichlet (or ARAP) energy against the 3D triangle, scaled so that the
 /// total 3D area equals the area enclosed by the uv border. Iterations are SLIM-style local/global steps
-/// (per-face SVD, then one sparse SPD solve whose symbolic factorization is computed once), followed by a
+/// (per-face SVD, then one sparse SPD solve: a sparse LDLT whose symbolic factorization is computed once, or, above
+/// 50,000 free vertices, warm-started conjugate gradients, so that an iteration stays linear in the mesh size), followed by a
 /// line search that starts below the first time any triangle would degenerate.
 ///
 /// Vertices listed in `constrained_vertices` and, unless `free_border` is set, the border vertices keep their
@@ -462,6 +464,8 @@ Error_code optimize_distortion(const TriangleMesh& tm, VertexUVMap uvm,
   const long n2 = 2 * nfree;
   Eigen::SimplicialLDLT<SpMat> solver;
   bool analyzed = false;
+  const long direct_solver_limit = 100000; // unknowns (2 per free vertex)
+  Eigen::ConjugateGradient<SpMat, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double> > iterative;
   double E = energy(X, Y);
   stats.energy_before = E;
   if(verbose) std::cerr << "[optimize] energy " << E << ", " << nfree << " free vertices\n";
@@ -546,11 +550,28 @@ Error_code optimize_distortion(const TriangleMesh& tm, VertexUVMap uvm,
     }
     for(std::size_t i = 0; i < nv; ++i)
       if(var[i] >= 0) { rhs(2 * var[i]) += lambda * X[i]; rhs(2 * var[i] + 1) += lambda * Y[i]; }
-    if(!analyzed) { solver.analyzePattern(H); analyzed = true; } // the pattern never changes
-    solver.factorize(H);
-    if(solver.info() != Eigen::Success) { result = ERROR_CANNOT_SOLVE_LINEAR_SYSTEM; break; }
-    const Eigen::VectorXd sol = solver.solve(rhs);
-    if(solver.info() != Eigen::Success || !sol.allFinite()) { result = ERROR_CANNOT_SOLVE_LINEAR_SYSTEM; break; }
+    Eigen::VectorXd sol;
+    if(n2 <= direct_solver_limit)
+    {
+      if(!analyzed) { solver.analyzePattern(H); analyzed = true; } // the pattern never changes
+      solver.factorize(H);
+      if(solver.info() != Eigen::Success) { result = ERROR_CANNOT_SOLVE_LINEAR_SYSTEM; break; }
+      sol = solver.solve(rhs);
+      if(solver.info() != Eigen::Success || !sol.allFinite()) { result = ERROR_CANNOT_SOLVE_LINEAR_SYSTEM; break; }
+    }
+    else
+    {
+      // Large meshes: a sparse factorization of a 2D mesh costs O(n^1.5); conjugate gradients,
+      // warm-started at the current positions with a bounded iteration count, keep an iteration
+      // linear in the mesh size. The direction needs no more accuracy: the line search decides.
+      Eigen::VectorXd x0(n2);
+      for(std::size_t i = 0; i < nv; ++i) if(var[i] >= 0) { x0(2 * var[i]) = X[i]; x0(2 * var[i] + 1) = Y[i]; }
+      iterative.setMaxIterations(200);
+      iterative.setTolerance(1e-8);
+      iterative.compute(H);
+      sol = iterative.solveWithGuess(rhs, x0);
+      if(!sol.allFinite()) { result = ERROR_CANNOT_SOLVE_LINEAR_SYSTEM; break; }
+    }
 
     // direction and flip-free bound
     std::vector<double> dx(nv, 0.), dy(nv, 0.);

@@ -13,6 +13,7 @@
 #include <CGAL/Progressive_embedding/parameters.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 #include <CGAL/Progressive_embedding/internal/certification_kernel.h>
+#include <CGAL/Progressive_embedding/internal/border_polygon.h>
 #include <CGAL/Progressive_embedding/internal/symmetric_dirichlet.h>
 #include <CGAL/Progressive_embedding/distortion.h>
 

@@ -593,9 +593,6 @@ Error_code optimize_distortion(const TriangleMesh& tm, VertexUVMap uvm,
     {
       for(std::size_t i = 0; i < nv; ++i) { nx[i] = X[i] + t * dx[i]; ny[i] = Y[i] + t * dy[i]; }
       Enew = energy(nx, ny);
-#ifdef CGAL_PE_DEBUG
-      std::cerr << "  t " << t << " (tmax " << tmax << ") E " << Enew << "\n";
-#endif
       if(!(Enew < E)) continue;
       for(std::size_t i = 0; i < nv; ++i)
         if(var[i] >= 0)

@@ -416,11 +416,6 @@ private:
       diagonals(q2, d2);
       if(!d2.empty()) CGAL::Euler::split_face(d2.front().first, d2.front().second, m);
     }
-#ifdef CGAL_PE_DEBUG
-    if(m.degree(vnew) != r.degree_removed || m.degree(r.kept) != r.degree_kept)
-      std::cerr << "split mismatch: new " << m.degree(vnew) << " vs " << r.degree_removed << ", kept " << m.degree(r.kept)
-                << " vs " << r.degree_kept << " a1 " << (r.a1 == Mesh::null_vertex() ? "null" : "set") << " cw " << new_side_cw << "\n";
-#endif
     CGAL_assertion(m.degree(vnew) == r.degree_removed && m.degree(r.kept) == r.degree_kept);
     oid[vnew] = r.removed_id;
     vborder[vnew] = false;
@@ -490,11 +485,6 @@ private:
       }
     }
     m.point(mover) = found ? best_p : p;
-#ifdef CGAL_PE_DEBUG
-    std::cerr << "place: ring " << n << " targets " << targets.size() << " found " << found << " p " << p << "\n";
-    if(!found) for(auto c : targets) std::cerr << "   target " << c << "\n";
-    if(!found) for(auto w : ring) std::cerr << "   ring " << m.point(w) << (w == fixed ? " (fixed)" : "") << "\n";
-#endif
     return found;
   }
 

@@ -37,7 +37,9 @@ enum Error_code
   ERROR_CANNOT_READ_FILE,          ///< A file could not be opened for reading
   ERROR_MALFORMED_FILE,            ///< A file could be opened but its content is malformed
   ERROR_CANNOT_WRITE_FILE,         ///< A file could not be written
-  ERROR_CONSTRAINT_OUTSIDE_DOMAIN  ///< A positional constraint lies outside the target domain
+  ERROR_CONSTRAINT_OUTSIDE_DOMAIN, ///< A positional constraint lies outside the target domain
+  ERROR_NO_FREE_VERTEX,            ///< Every vertex is fixed (border or constraint): there is nothing to optimize
+  ERROR_DEGENERATE_3D_FACE         ///< A 3D face has zero area (or non-finite points): its distortion is undefined
 };
 
 /// \ingroup PkgProgressiveEmbeddingEnums
@@ -66,6 +68,8 @@ inline const char* get_error_message(Error_code code)
     case ERROR_MALFORMED_FILE: return "The file is malformed";
     case ERROR_CANNOT_WRITE_FILE: return "The file cannot be written";
     case ERROR_CONSTRAINT_OUTSIDE_DOMAIN: return "A positional constraint lies outside the target domain";
+    case ERROR_NO_FREE_VERTEX: return "Every vertex is fixed: there is no free vertex to optimize";
+    case ERROR_DEGENERATE_3D_FACE: return "A 3D face has zero area or a non-finite point: its distortion is undefined";
   }
   return "Unknown error";
 }
@@ -95,6 +99,8 @@ inline const char* get_error_name(Error_code code)
     case ERROR_MALFORMED_FILE: return "ERROR_MALFORMED_FILE";
     case ERROR_CANNOT_WRITE_FILE: return "ERROR_CANNOT_WRITE_FILE";
     case ERROR_CONSTRAINT_OUTSIDE_DOMAIN: return "ERROR_CONSTRAINT_OUTSIDE_DOMAIN";
+    case ERROR_NO_FREE_VERTEX: return "ERROR_NO_FREE_VERTEX";
+    case ERROR_DEGENERATE_3D_FACE: return "ERROR_DEGENERATE_3D_FACE";
   }
   return "UNKNOWN";
 }

@@ -57,6 +57,7 @@ CGAL_PE_ADD_NAMED_PARAMETER(free_border)
 CGAL_PE_ADD_NAMED_PARAMETER(constrained_vertices)
 CGAL_PE_ADD_NAMED_PARAMETER(distortion_energy)
 CGAL_PE_ADD_NAMED_PARAMETER(optimization_statistics)
+CGAL_PE_ADD_NAMED_PARAMETER(optimize)
 #undef CGAL_PE_ADD_NAMED_PARAMETER
 } // namespace internal_np
 #endif
@@ -95,6 +96,7 @@ CGAL_PE_NAMED_PARAMETER_FUNCTIONS(free_border)
 CGAL_PE_NAMED_PARAMETER_FUNCTIONS(constrained_vertices)
 CGAL_PE_NAMED_PARAMETER_FUNCTIONS(distortion_energy)
 CGAL_PE_NAMED_PARAMETER_FUNCTIONS(optimization_statistics)
+CGAL_PE_NAMED_PARAMETER_FUNCTIONS(optimize)
 #undef CGAL_PE_NAMED_PARAMETER_FUNCTIONS
 #else
 /// \ingroup PkgProgressiveEmbeddingNamedParameters
@@ -155,6 +157,9 @@ template <typename T> unspecified_type distortion_energy(const T& t);
 /// \ingroup PkgProgressiveEmbeddingNamedParameters
 /// a pointer to an `Optimization_statistics` filled by `optimize_distortion()`
 template <typename T> unspecified_type optimization_statistics(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// whether a repaired map is then passed to `optimize_distortion()` (`bool`; see the function's default)
+template <typename T> unspecified_type optimize(const T& t);
 #endif
 
 } // namespace parameters

@@ -55,7 +55,8 @@ int main(int argc, char** argv)
   const SMP::Error_code e2 = SMP::parameterize(mesh, parameterizer, bhd, uvm);
   const PE::Embedding_report r2 = PE::check_embedding(mesh, uvm);
   std::cout << "Progressive_embedding_parameterizer_3:    " << SMP::get_error_message(e2)
-            << (parameterizer.repaired() ? " (Tutte map repaired)" : " (Tutte map already valid)")
+            << (parameterizer.repaired() ? " (Tutte map repaired" : " (Tutte map already valid")
+            << (parameterizer.optimized() ? ", then optimized)" : ")")
             << "; certificate: " << r2.summary() << std::endl;
 
   // ours says OK only with a certified map

@@ -10,12 +10,16 @@
 #include <CGAL/Gmpfr.h>
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 #include <CGAL/Unique_hash_map.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <boost/property_map/property_map.hpp>
 
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
 #include <CGAL/Progressive_embedding/progressive_embedding.h>
 #include <CGAL/Progressive_embedding/optimize_distortion.h>
 #include <CGAL/Progressive_embedding/distortion.h>
+#include <CGAL/Progressive_embedding/Progressive_embedding_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Progressive_embedding/internal/protocols.h>
 
 #include <cmath>
@@ -89,15 +93,18 @@ void test_hand_computed()
   uv[b] = K::Point_2(0, 3); uv[c] = K::Point_2(-3, 0);
   d = PE::measure_distortion(m, uv);
   CHECK(close(d.max_symmetric_dirichlet, 4, 1e-12), "a rotated, scaled copy has symmetric Dirichlet 4");
-  // flipped: infinite
-  uv[b] = K::Point_2(0, 1); uv[c] = K::Point_2(1, 0);
-  uv[a] = K::Point_2(0, 0);
-  // one triangle alone is its own border, so flip it relative to a second face instead: build two faces
+  // two faces sharing an edge, one of them flipped: its distortion is infinite, so are the max and the mean
   SM m2;
   auto p0 = m2.add_vertex(K::Point_3(0, 0, 0)), p1 = m2.add_vertex(K::Point_3(1, 0, 0)), p2 = m2.add_vertex(K::Point_3(1, 1, 0)), p3 = m2.add_vertex(K::Point_3(0, 1, 0));
   m2.add_face(p0, p1, p2); m2.add_face(p0, p2, p3);
   auto uv2 = m2.add_property_map<SM::Vertex_index, K::Point_2>("uv").first;
-  uv2[p0] = K::Point_2(0, 0); uv2[p1] = K::Point_2(1, 0); uv2[p2] = K::Point_2(1, 1); uv2[p3] = K::Point_2(0, 1);
+  // p3 inside the triangle (p0, p1, p2): the border is simple and counterclockwise, the face (p0, p2, p3) flipped
+  uv2[p0] = K::Point_2(0, 0); uv2[p1] = K::Point_2(1, 0); uv2[p2] = K::Point_2(1, 1); uv2[p3] = K::Point_2(0.8, 0.2);
+  d = PE::measure_distortion(m2, uv2);
+  CHECK(std::isinf(d.max_symmetric_dirichlet) && d.max_symmetric_dirichlet > 0 && d.symmetric_dirichlet_quantiles[2] > 0,
+        "a flipped face has infinite symmetric Dirichlet energy");
+  CHECK(PE::check_embedding(m2, uv2).flipped == 1, "and the certificate counts it flipped");
+  uv2[p3] = K::Point_2(0, 1);
   d = PE::measure_distortion(m2, uv2);
   CHECK(close(d.mean_symmetric_dirichlet, 4, 1e-12) && close(d.symmetric_dirichlet_quantiles[0], 4, 1e-12), "unit square identity: mean and median 4");
 }
@@ -239,6 +246,154 @@ void test_constraints_and_budgets()
   CHECK(ec == PE::ERROR_INVALID_EMBEDDING && uvm[some] == kept, "an invalid input map is refused (ERROR_INVALID_EMBEDDING)");
 }
 
+// A C-shaped strip: a U whose two arms are 0.1 apart in uv. In 3D the tip of the left arm is pulled
+// 1.5 units towards (and past) the right arm, lifted out of the plane: with a free border, the
+// optimizer moves the tip towards the right arm until the arms touch. Every step must keep the border
+// simple and the map valid; before per-vertex steps checked the border, the map written here had a
+// self-intersecting border and 20 overlapping face pairs.
+void make_c_strip(SM& m, SM::Property_map<SM::Vertex_index, K::Point_2> uvm, double pull, double gap)
+{
+  const double xs[6] = {0, 1, 2, 2 + gap, 3 + gap, 4 + gap};
+  const int ny = 11;
+  std::vector<SM::Vertex_index> vs;
+  for(int j = 0; j < ny; ++j)
+    for(int i = 0; i < 6; ++i)
+    {
+      const double lift = (i <= 2 && j >= 7) ? 0.3 * (j - 6) : 0.;
+      const double x3 = xs[i] + ((i == 2 && j >= 7) ? pull * (j - 6) / 4.0 : 0.);
+      vs.push_back(m.add_vertex(K::Point_3(x3, j, lift)));
+      uvm[vs.back()] = K::Point_2(xs[i], j);
+    }
+  auto at = [&](int i, int j) { return vs[std::size_t(j * 6 + i)]; };
+  for(int j = 0; j + 1 < ny; ++j)
+    for(int i = 0; i + 1 < 6; ++i)
+    {
+      if(i == 2 && j >= 1) continue; // the slot between the arms
+      m.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      m.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+}
+
+void test_free_border_stays_simple()
+{
+  SM m;
+  auto uvm = m.add_property_map<SM::Vertex_index, K::Point_2>("uv").first;
+  make_c_strip(m, uvm, 1.5, 0.1);
+  PE::Embedding_report r0 = PE::check_embedding(m, uvm);
+  CHECK(r0.is_valid() && r0.faces == 82, "C-shaped strip: the input layout is valid");
+  PE::Optimization_statistics st;
+  PE::Error_code ec = PE::optimize_distortion(m, uvm, PE::parameters::free_border(true, PE::parameters::optimization_statistics(&st)));
+  PE::Embedding_report r1 = PE::check_embedding(m, uvm);
+  CHECK((ec == PE::OK || ec == PE::ERROR_BUDGET_EXHAUSTED) && r1.is_valid() && r1.border_simple && r1.overlapping_pairs == 0,
+        std::string("C-shaped strip, free border: the map written is valid and its border simple (") + PE::get_error_name(ec)
+        + ", " + r1.summary() + ")");
+  CHECK(st.energy_after < st.energy_before && st.energy_after == r1.mean_energy_3d,
+        "C-shaped strip: energy lowered, and reported as the certificate reports it (" + std::to_string(st.energy_before) + " -> "
+        + std::to_string(st.energy_after) + ")");
+  // the engine's per-vertex sweep alone, from the same start: its border moves are undone when they
+  // would cross the other arm
+  SM m2;
+  auto uv2 = m2.add_property_map<SM::Vertex_index, K::Point_2>("uv").first;
+  make_c_strip(m2, uv2, 1.5, 0.1);
+  typedef PE::internal::Distortion_optimizer<SM, decltype(uv2), SM::Property_map<SM::Vertex_index, K::Point_3>, CGAL::Sequential_tag> Engine;
+  Engine::Settings settings;
+  settings.free_border = true;
+  Engine engine(m2, uv2, m2.points(), settings);
+  PE::Optimization_statistics st2;
+  CHECK(engine.initialize(std::vector<SM::Vertex_index>(), st2) == PE::OK, "engine initialized on the C-shaped strip");
+  bool all_valid = true;
+  for(int k = 0; k < 50; ++k) { engine.vertex_sweep(); if(!engine.certify().is_valid()) all_valid = false; }
+  CHECK(all_valid, "50 per-vertex sweeps with a free border: every intermediate map certified valid");
+}
+
+// Errors leave the caller's map exactly as it was, with a code that says what is wrong.
+void test_specific_errors()
+{
+  // every vertex on the border: nothing to optimize
+  SM m;
+  auto a = m.add_vertex(K::Point_3(0, 0, 0)), b = m.add_vertex(K::Point_3(1, 0, 0)), c = m.add_vertex(K::Point_3(1, 1, 0)), d = m.add_vertex(K::Point_3(0, 1, 0));
+  m.add_face(a, b, c); m.add_face(a, c, d);
+  auto uvm = m.add_property_map<SM::Vertex_index, K::Point_2>("uv").first;
+  uvm[a] = K::Point_2(0, 0); uvm[b] = K::Point_2(2, 0); uvm[c] = K::Point_2(2, 1); uvm[d] = K::Point_2(0, 1);
+  PE::Error_code ec = PE::optimize_distortion(m, uvm);
+  CHECK(ec == PE::ERROR_NO_FREE_VERTEX, std::string("no free vertex: ERROR_NO_FREE_VERTEX (got ") + PE::get_error_name(ec) + ")");
+  CHECK(std::string(PE::get_error_message(ec)).find("no free vertex") != std::string::npos, "and its message says so");
+  ec = PE::optimize_distortion(m, uvm, PE::parameters::free_border(true));
+  CHECK(ec == PE::OK || ec == PE::ERROR_BUDGET_EXHAUSTED, "the same map with a free border is optimized");
+
+  // a grid whose 3D points all coincide: the distortion is undefined
+  SM g;
+  PE::internal::make_grid_disk(5, g);
+  auto uvg = g.add_property_map<SM::Vertex_index, K::Point_2>("uv").first;
+  for(auto v : g.vertices()) { uvg[v] = K::Point_2(g.point(v).x(), g.point(v).y()); }
+  std::vector<K::Point_2> before;
+  for(auto v : g.vertices()) { before.push_back(uvg[v]); g.point(v) = K::Point_3(1, 2, 3); }
+  ec = PE::optimize_distortion(g, uvg);
+  bool unchanged = true;
+  for(auto v : g.vertices()) if(std::memcmp(&uvg[v], &before[std::size_t(v)], sizeof(K::Point_2)) != 0) unchanged = false;
+  CHECK(ec == PE::ERROR_DEGENERATE_3D_FACE && unchanged,
+        std::string("coincident 3D points: ERROR_DEGENERATE_3D_FACE, map unchanged (got ") + PE::get_error_name(ec) + ")");
+  for(auto v : g.vertices()) g.point(v) = K::Point_3(uvg[v].x(), uvg[v].y(), 0);
+  // a negative tolerance
+  ec = PE::optimize_distortion(g, uvg, PE::parameters::convergence_tolerance(-1.));
+  CHECK(ec == PE::ERROR_WRONG_PARAMETER, "negative convergence tolerance: ERROR_WRONG_PARAMETER");
+}
+
+// From the default repair of a real Tutte failure (bull.off, seed 0), the default optimization
+// converges (OK), and ten times the iterations improve the result by less than 5%.
+void test_converges_on_real_failure(const std::string& data_dir)
+{
+  SM m;
+  if(!CGAL::IO::read_polygon_mesh(data_dir + "/meshes/bull.off", m)) { CHECK(false, "read bull.off"); return; }
+  auto uvm = m.add_property_map<SM::Vertex_index, K::Point_2>("uv").first;
+  std::array<SM::Vertex_index, 3> pinned;
+  PE::Error_code ec = PE::internal::thingi_cut(m, 0, pinned);
+  uvm[pinned[0]] = K::Point_2(0, 0); uvm[pinned[1]] = K::Point_2(0.5, std::sqrt(3.) / 2); uvm[pinned[2]] = K::Point_2(1, 0);
+  ec = PE::tutte_embedding(m, SM::null_halfedge(), uvm, PE::parameters::border_shape(PE::Border_shape::FIXED));
+  CHECK(ec == PE::OK && !PE::check_embedding(m, uvm).is_valid(), "bull seed 0: double Tutte is invalid");
+  ec = PE::progressive_embedding(m, uvm);
+  CHECK(ec == PE::OK, "bull seed 0: repaired");
+  PE::Optimization_statistics st;
+  ec = PE::optimize_distortion(m, uvm, PE::parameters::optimization_statistics(&st));
+  CHECK(ec == PE::OK && st.converged && st.report.is_valid(),
+        std::string("bull seed 0: optimization converges at the default settings (") + PE::get_error_name(ec) + ", "
+        + std::to_string(st.iterations) + " iterations, mean " + std::to_string(st.energy_before) + " -> " + std::to_string(st.energy_after) + ")");
+  const double converged = st.energy_after;
+  PE::Optimization_statistics more;
+  ec = PE::optimize_distortion(m, uvm, PE::parameters::optimization_statistics(&more, PE::parameters::convergence_tolerance(0.,
+                                         CGAL::parameters::number_of_iterations(10 * st.iterations))));
+  CHECK(more.report.is_valid() && more.energy_after > 0.95 * converged,
+        "bull seed 0: ten times the iterations improve the mean by less than 5% (" + std::to_string(converged) + " -> "
+        + std::to_string(more.energy_after) + ")");
+}
+
+// The drop-in parameterizer repairs and, by default, optimizes a broken Tutte map (bull.off, last
+// face removed, circular border): certified, and far less distorted than the repair alone.
+void test_parameterizer_optimizes(const std::string& data_dir)
+{
+  namespace SMP = CGAL::Surface_mesh_parameterization;
+  SM m;
+  if(!CGAL::IO::read_polygon_mesh(data_dir + "/meshes/bull.off", m)) { CHECK(false, "read bull.off"); return; }
+  SM::Face_index last;
+  for(SM::Face_index f : m.faces()) last = f;
+  CGAL::Euler::remove_face(m.halfedge(last), m);
+  const auto bhd = CGAL::Polygon_mesh_processing::longest_border(m).first;
+  auto uvm = m.add_property_map<SM::Vertex_index, K::Point_2>("uv").first;
+  typedef PE::Progressive_embedding_parameterizer_3<SM> Param;
+  Param plain(Param::Border_parameterizer(), Param::Optimization::NEVER);
+  SMP::Error_code e1 = SMP::parameterize(m, plain, bhd, uvm);
+  const PE::Embedding_report r1 = PE::check_embedding(m, uvm);
+  CHECK(e1 == SMP::OK && plain.repaired() && !plain.optimized() && r1.is_valid(),
+        "parameterizer, Optimization::NEVER: repaired, not optimized, certified (mean " + std::to_string(r1.mean_energy_3d) + ")");
+  Param quality; // default: WHEN_REPAIRED
+  SMP::Error_code e2 = SMP::parameterize(m, quality, bhd, uvm);
+  const PE::Embedding_report r2 = PE::check_embedding(m, uvm);
+  CHECK(e2 == SMP::OK && quality.repaired() && quality.optimized() && r2.is_valid()
+        && quality.optimization_statistics().energy_after == r2.mean_energy_3d && r2.mean_energy_3d < 1e-6 * r1.mean_energy_3d,
+        "parameterizer, default: repaired and optimized, certified (mean " + std::to_string(r1.mean_energy_3d) + " -> "
+        + std::to_string(r2.mean_energy_3d) + ")");
+}
+
 template <class Kernel2>
 void test_number_type(const char* name)
 {
@@ -258,9 +413,13 @@ void test_number_type(const char* name)
         std::string(name) + ": optimization certified in the number type, energy " + std::to_string(st.energy_before) + " -> " + std::to_string(st.energy_after));
 }
 
-int main()
+int main(int argc, char** argv)
 {
   test_hand_computed();
+  test_free_border_stays_simple();
+  test_specific_errors();
+  if(argc > 1) { test_converges_on_real_failure(argv[1]); test_parameterizer_optimizes(argv[1]); }
+  else CHECK(false, "the data directory (argument 1) is needed for the real-mesh test");
   test_identity_is_minimum<SM>("Surface_mesh");
   test_identity_is_minimum<Poly>("Polyhedron_3");
   test_near_flip<K>("double");

@@ -12,6 +12,7 @@
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
 #include <CGAL/Progressive_embedding/check_embedding.h>
 #include <CGAL/Progressive_embedding/progressive_embedding.h>
+#include <CGAL/Progressive_embedding/optimize_distortion.h>
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
@@ -27,7 +28,8 @@ namespace Progressive_embedding {
 /// A drop-in parameterizer for `CGAL::Surface_mesh_parameterization::parameterize()`: the border is
 /// placed by `BorderParameterizer`, the interior by Tutte's barycentric mapping
 /// (`tutte_embedding()` with the border fixed), and, when the Tutte map fails the exact certificate,
-/// it is repaired by `progressive_embedding()`. It returns
+/// it is repaired by `progressive_embedding()`, then, by default, optimized by `optimize_distortion()` with the
+/// border fixed (see `Optimization`). It returns
 /// `CGAL::Surface_mesh_parameterization::OK` only with a map certified valid by `check_embedding()`,
 /// and `CGAL::Surface_mesh_parameterization::ERROR_NO_1_TO_1_MAPPING` otherwise (CGAL's own
 /// `Barycentric_mapping_parameterizer_3` returns `OK` on broken maps).
@@ -53,9 +55,20 @@ public:
   /// halfedge descriptor of the mesh
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
 
-  /// constructs the parameterizer
-  Progressive_embedding_parameterizer_3(Border_parameterizer border_parameterizer = Border_parameterizer())
-    : m_border(border_parameterizer), m_state(std::make_shared<State>()) { }
+  /// When `optimize_distortion()` runs after the Tutte map.
+  enum class Optimization
+  {
+    NEVER,          ///< the output is Tutte's map, or its repair
+    WHEN_REPAIRED,  ///< a repaired map is optimized; a valid Tutte map is returned as CGAL's barycentric mapping returns it
+    ALWAYS          ///< every map is optimized
+  };
+
+  /// constructs the parameterizer. The default, `Optimization::WHEN_REPAIRED`, keeps the drop-in promise (a valid
+  /// Tutte map is returned unchanged, as CGAL's `Barycentric_mapping_parameterizer_3` computes it) while a repaired
+  /// map, whose faces inherit Tutte's areas of \f$10^{-20}\f$ and below, becomes a map that can be textured.
+  Progressive_embedding_parameterizer_3(Border_parameterizer border_parameterizer = Border_parameterizer(),
+                                        Optimization optimization = Optimization::WHEN_REPAIRED)
+    : m_border(border_parameterizer), m_optimization(optimization), m_state(std::make_shared<State>()) { }
 
   /// returns the statistics of the last call (progressive embedding counts are zero when Tutte was valid).
   /// Copies share them: `CGAL::Surface_mesh_parameterization::parameterize()` takes the parameterizer by value,
@@ -63,6 +76,10 @@ public:
   const Progressive_embedding_statistics& statistics() const { return m_state->stats; }
   /// returns `true` if the last call had to repair the Tutte map (shared by copies, like `statistics()`)
   bool repaired() const { return m_state->repaired; }
+  /// returns `true` if the last call ran `optimize_distortion()` (shared by copies, like `statistics()`)
+  bool optimized() const { return m_state->optimized; }
+  /// returns the statistics of the last optimization, if `optimized()` (shared by copies, like `statistics()`)
+  const Optimization_statistics& optimization_statistics() const { return m_state->optimization; }
 
   /// computes a certified parameterization of the disk `mesh` whose border contains `bhd`.
   /// \tparam VertexUVmap a model of `ReadWritePropertyMap` with `Point_2` values
@@ -79,6 +96,8 @@ public:
     bool& m_repaired = m_state->repaired;
     Progressive_embedding_statistics& m_stats = m_state->stats;
     m_repaired = false;
+    m_state->optimized = false;
+    m_state->optimization = Optimization_statistics();
     m_stats = Progressive_embedding_statistics();
     SMP::Error_code status = m_border.parameterize(mesh, bhd, uvmap, vimap, vpmap);
     if(status != SMP::OK) return status;
@@ -90,10 +109,19 @@ public:
     if(ec != OK) return SMP::ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
     for(auto v : vertices(mesh)) put(vpmap, v, true);
     m_stats.report = check_embedding(mesh, uvmap);
-    if(m_stats.report.is_valid()) return SMP::OK;
-    m_repaired = true;
-    ec = progressive_embedding(mesh, uvmap, parameters::statistics(&m_stats));
-    return (ec == OK && m_stats.report.is_valid()) ? SMP::OK : SMP::ERROR_NO_1_TO_1_MAPPING;
+    if(!m_stats.report.is_valid())
+    {
+      m_repaired = true;
+      ec = progressive_embedding(mesh, uvmap, parameters::statistics(&m_stats));
+      if(ec != OK || !m_stats.report.is_valid()) return SMP::ERROR_NO_1_TO_1_MAPPING;
+    }
+    if(m_optimization == Optimization::ALWAYS || (m_repaired && m_optimization == Optimization::WHEN_REPAIRED))
+    {
+      // any outcome leaves a valid map: the optimizer writes only certified maps
+      optimize_distortion(mesh, uvmap, parameters::optimization_statistics(&m_state->optimization));
+      m_state->optimized = true;
+    }
+    return SMP::OK;
   }
 
 private:
@@ -101,8 +129,11 @@ private:
   {
     Progressive_embedding_statistics stats;
     bool repaired = false;
+    bool optimized = false;
+    Optimization_statistics optimization;
   };
   Border_parameterizer m_border;
+  Optimization m_optimization;
   std::shared_ptr<State> m_state;
 };
 

@@ -11,6 +11,7 @@
 // oriented under the exact predicate and the energy decreases.
 
 #include <CGAL/Progressive_embedding/internal/symmetric_dirichlet.h>
+#include <CGAL/Progressive_embedding/internal/newton_step.h>
 #include <CGAL/Progressive_embedding/internal/number_utils.h>
 #include <CGAL/boost/graph/iterator.h>
 
@@ -22,31 +23,6 @@
 namespace CGAL {
 namespace Progressive_embedding {
 namespace internal {
-
-// Newton direction d = -H^-1 g with the 2x2 Hessian H = (hxx, hxy, hyy) projected to SPD
-// (eigenvalues clamped to a small positive floor); false if no finite direction exists.
-inline bool projected_newton_direction(const double g[2], const double H[3], double d[2])
-{
-  if(!std::isfinite(g[0]) || !std::isfinite(g[1]) || !std::isfinite(H[0]) || !std::isfinite(H[1]) || !std::isfinite(H[2]))
-    return false;
-  const double tr2 = 0.5 * (H[0] + H[2]);
-  const double disc = std::sqrt(0.25 * (H[0] - H[2]) * (H[0] - H[2]) + H[1] * H[1]);
-  double l1 = tr2 + disc, l2 = tr2 - disc;
-  double e1x, e1y; // eigenvector of l1
-  if(std::abs(H[1]) > 0) { e1x = l1 - H[2]; e1y = H[1]; }
-  else if(H[0] >= H[2]) { e1x = 1; e1y = 0; }
-  else { e1x = 0; e1y = 1; }
-  const double nrm = std::sqrt(e1x * e1x + e1y * e1y);
-  if(!(nrm > 0)) return false;
-  e1x /= nrm; e1y /= nrm;
-  const double e2x = -e1y, e2y = e1x;
-  const double floor_l = 1e-12 * (std::max)(std::abs(l1), 1e-300);
-  l1 = (std::max)(l1, floor_l); l2 = (std::max)(l2, floor_l);
-  const double g1 = e1x * g[0] + e1y * g[1], g2 = e2x * g[0] + e2y * g[1];
-  d[0] = -(g1 / l1) * e1x - (g2 / l2) * e2x;
-  d[1] = -(g1 / l1) * e1y - (g2 / l2) * e2y;
-  return std::isfinite(d[0]) && std::isfinite(d[1]) && (d[0] != 0 || d[1] != 0);
-}
 
 template <class Mesh, class Traits>
 struct Local_smoother
@@ -131,9 +107,7 @@ struct Local_smoother
       const double ax = CGAL::to_double(a->x()), ay = CGAL::to_double(a->y());
       const double bx = CGAL::to_double(b->x()), by = CGAL::to_double(b->y());
       const double xx = CGAL::to_double(x.x()), xy = CGAL::to_double(x.y());
-      const double A0 = (ax - xx) * (by - xy) - (ay - xy) * (bx - xx);
-      const double dA = d[0] * (ay - by) + d[1] * (bx - ax); // d/dt of twice the area
-      if(dA < 0 && A0 > 0) tmax = (std::min)(tmax, 0.9 * (A0 / -dA));
+      tmax = (std::min)(tmax, 0.9 * vertex_degeneration_time(xx, xy, d[0], d[1], ax, ay, bx, by));
     }
     const double E0 = CGAL::to_double(E);
     double t = tmax;

@@ -1,0 +1,718 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+#ifndef CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_DISTORTION_OPTIMIZER_H
+#define CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_DISTORTION_OPTIMIZER_H
+
+// The engine of optimize_distortion(), as named steps:
+//   initialize()        reference frames, fixed vertices, stars, colouring
+//   global_step()       projected Newton: per-face Hessians projected to SPD with the analytic
+//                       eigensystem of isotropic energies, one sparse solve
+//   line_search()       flip-free bound, then backtracking; every candidate certified exactly
+//   vertex_sweep()      per-vertex projected Newton steps (border phase checked for simplicity)
+//   certify()/write()   exact certificate of the result, written only if valid
+// Directions are computed in double; positions are stored and certified in the uv number type.
+
+#include <CGAL/Progressive_embedding/Error_code.h>
+#include <CGAL/Progressive_embedding/check_embedding.h>
+#include <CGAL/Progressive_embedding/internal/indexed_disk.h>
+#include <CGAL/Progressive_embedding/internal/border_polygon.h>
+#include <CGAL/Progressive_embedding/internal/certification_kernel.h>
+#include <CGAL/Progressive_embedding/internal/number_utils.h>
+#include <CGAL/Progressive_embedding/internal/newton_step.h>
+#include <CGAL/Progressive_embedding/internal/symmetric_dirichlet.h>
+
+#include <CGAL/Real_timer.h>
+#include <CGAL/tags.h>
+#include <CGAL/Dynamic_property_map.h>
+#include <boost/property_map/function_property_map.hpp>
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_for.h>
+#include <tbb/blocked_range.h>
+#endif
+
+#include <Eigen/Core>
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SVD>
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Progressive_embedding {
+
+/// \ingroup PkgProgressiveEmbeddingEnums
+/// The energy minimized by `optimize_distortion()`.
+enum class Distortion_energy
+{
+  SYMMETRIC_DIRICHLET, ///< \f$\|J\|_F^2 + \|J^{-1}\|_F^2\f$, a barrier against degeneracy (4 for an isometry)
+  ARAP                 ///< as-rigid-as-possible, \f$\|J - R\|_F^2\f$ with \f$R\f$ the closest rotation
+};
+
+/// \ingroup PkgProgressiveEmbeddingReports
+/// What `optimize_distortion()` did, filled when a pointer to it is passed with the `optimization_statistics` named parameter.
+struct Optimization_statistics
+{
+  /// iterations performed
+  std::size_t iterations = 0;
+  /// `true` if the convergence criterion was met
+  bool converged = false;
+  /// area-weighted mean symmetric Dirichlet energy of the input, as `check_embedding()` reports it (`mean_energy_3d`)
+  double energy_before = 0;
+  /// the same for the output (with a free border both are measured against the 3D triangles scaled to the current border area)
+  double energy_after = 0;
+  /// seconds
+  double seconds = 0;
+  /// global (Newton) steps accepted
+  std::size_t global_steps = 0;
+  /// per-vertex sweeps run
+  std::size_t vertex_sweeps = 0;
+  /// certificate of the output (of the input when the input is refused)
+  Embedding_report report;
+};
+
+namespace internal {
+
+// SVD-based quantities of one face's Jacobian for an isotropic energy psi(s1, s2):
+// psi, its gradient (psi1, psi2) and the eigenvalues of its Hessian in F (scaling, twist, flip),
+// clamped at zero (projected Newton).
+struct Isotropic_terms
+{
+  double psi, d1, d2, scale1, scale2, twist, flip;
+};
+
+inline bool isotropic_terms(Distortion_energy e, double s1, double s2, Isotropic_terms& r)
+{
+  if(!(s1 > 0) || !(s2 > 0)) return false;
+  if(e == Distortion_energy::SYMMETRIC_DIRICHLET)
+  {
+    const double i1 = 1 / s1, i2 = 1 / s2;
+    const double i13 = i1 * i1 * i1, i23 = i2 * i2 * i2;
+    r.psi = s1 * s1 + s2 * s2 + i1 * i1 + i2 * i2;
+    r.d1 = 2 * s1 - 2 * i13;
+    r.d2 = 2 * s2 - 2 * i23;
+    r.scale1 = 2 + 6 * i1 * i1 * i1 * i1;
+    r.scale2 = 2 + 6 * i2 * i2 * i2 * i2;
+    // (psi1 + psi2) / (s1 + s2) and (psi1 - psi2) / (s1 - s2) in closed forms, stable for s1 ~ s2
+    const double q = (s1 * s1 + s2 * s2) * i13 * i23;
+    const double m = s1 * s2 * i13 * i23;
+    r.twist = 2 - 2 * (q - m);
+    r.flip = 2 + 2 * (q + m);
+  }
+  else
+  {
+    r.psi = (s1 - 1) * (s1 - 1) + (s2 - 1) * (s2 - 1);
+    r.d1 = 2 * (s1 - 1);
+    r.d2 = 2 * (s2 - 1);
+    r.scale1 = r.scale2 = 2;
+    r.twist = 2 - 4 / (s1 + s2);
+    r.flip = 2;
+  }
+  r.twist = (std::max)(r.twist, 0.);
+  return std::isfinite(r.psi) && std::isfinite(r.d1) && std::isfinite(r.d2) && std::isfinite(r.twist) && std::isfinite(r.flip);
+}
+
+// The 3D reference of each face as a 2x2 edge frame, scaled by k (on lengths): the one place where
+// the optimizer's reference triangles are built (from reference_from_points).
+struct Face_frame
+{
+  std::array<double, 6> G;           // gradient operator: J(r, c) = sum_a G[2a + c] * uv_r(a)
+  Reference_triangle<double> ref;    // corner dot products and squared area (per-vertex steps)
+  double weight = 0;                 // scaled 3D area
+};
+
+inline Face_frame face_frame(const Reference_triangle<double>& ref)
+{
+  Face_frame fr;
+  fr.ref = ref;
+  const double area = std::sqrt(ref.area2);
+  fr.weight = area;
+  const double l2 = ref.dot[0] + ref.dot[1]; // |ab|^2
+  const double lab = std::sqrt(l2);
+  const double r11 = lab, r21 = 0, r12 = ref.dot[0] / lab, r22 = 2 * area / lab;
+  const double det = r11 * r22 - r12 * r21;
+  const double i11 = r22 / det, i12 = -r12 / det, i21 = -r21 / det, i22 = r11 / det;
+  fr.G = {{ -i11 - i21, -i12 - i22, i11, i12, i21, i22 }};
+  return fr;
+}
+
+template <class TriangleMesh, class VertexUVMap, class VertexPointMap, class ConcurrencyTag>
+class Distortion_optimizer
+{
+public:
+  typedef boost::graph_traits<TriangleMesh>                          GT;
+  typedef typename GT::vertex_descriptor                             vertex_descriptor;
+  typedef typename Uv_map_types<VertexUVMap>::Point_2                Point_2;
+  typedef typename Uv_map_types<VertexUVMap>::Traits                 Traits;
+  typedef typename Uv_map_types<VertexUVMap>::FT                     FT;
+  typedef Certification_kernel<FT>                                   CK;
+  typedef Eigen::SparseMatrix<double>                                SpMat;
+
+  struct Settings
+  {
+    std::size_t max_iterations = 1000;
+    double tolerance = 1e-5;
+    double time_budget = std::numeric_limits<double>::infinity();
+    bool free_border = false;
+    Distortion_energy energy = Distortion_energy::SYMMETRIC_DIRICHLET;
+    bool verbose = false;
+    std::function<bool(double)> callback;
+  };
+
+  Distortion_optimizer(const TriangleMesh& tm, VertexUVMap uvm, VertexPointMap vpm, const Settings& s)
+    : tm_(tm), uvm_(uvm), vpm_(vpm), s_(s) {}
+
+  // ---- set-up ------------------------------------------------------------------------------
+  Error_code initialize(const std::vector<vertex_descriptor>& constrained, Optimization_statistics& stats)
+  {
+    if(!(s_.tolerance >= 0) || !(s_.time_budget >= 0)) return ERROR_WRONG_PARAMETER;
+    Error_code ec = make_indexed_disk(tm_, GT::null_halfedge(), disk_);
+    if(ec != OK) return ec;
+    nv_ = disk_.number_of_vertices(); nf_ = disk_.number_of_faces();
+
+    // the input must be valid: the optimization never leaves the valid set
+    stats.report = check_embedding(tm_, uvm_, CGAL::parameters::vertex_point_map(vpm_));
+    if(stats.report.status != OK) return stats.report.status;
+    if(stats.report.non_finite > 0) return ERROR_NON_FINITE_COORDINATES;
+    if(!stats.report.is_valid()) return ERROR_INVALID_EMBEDDING;
+    sgn_ = stats.report.clockwise ? -1. : 1.;   // work on the counterclockwise mirror image
+    positive_ = stats.report.clockwise ? CGAL::RIGHT_TURN : CGAL::LEFT_TURN;
+
+    ec = mark_fixed_vertices(constrained);
+    if(ec != OK) return ec;
+    P_.resize(nv_);
+    for(std::size_t i = 0; i < nv_; ++i) P_[i] = get(uvm_, disk_.vertices[i]);
+    X_.resize(nv_); Y_.resize(nv_);
+    refresh_doubles();
+    ec = build_frames(stats.report.border_area);
+    if(ec != OK) return ec;
+    build_stars_and_colours();
+    return OK;
+  }
+
+  std::size_t number_of_free_vertices() const { return std::size_t(nfree_); }
+
+  // ---- the loop ----------------------------------------------------------------------------
+  Error_code run(Optimization_statistics& stats)
+  {
+    CGAL::Real_timer timer;
+    timer.start();
+    double E = energy(X_, Y_);
+    if(s_.verbose) std::cerr << "[optimize] energy " << E << ", " << nfree_ << " free vertices\n";
+    Error_code result = ERROR_BUDGET_EXHAUSTED;
+    std::size_t quiet = 0; // consecutive iterations below the tolerance
+    for(std::size_t it = 0; it < s_.max_iterations; ++it)
+    {
+      if(timer.time() > s_.time_budget) break;
+      const double E0 = E;
+      // A global step, then a sweep of per-vertex steps if the global step was held back by the
+      // first face to degenerate (far from smooth: tiny faces), where each vertex fixes its own
+      // star at O(n) cost per sweep.
+      const bool global_ok = global_step(E);
+      if(global_ok) ++stats.global_steps;
+      if(!global_ok || held_back_)
+      {
+        vertex_sweep();
+        ++stats.vertex_sweeps;
+        E = energy(X_, Y_);
+      }
+      ++stats.iterations;
+      const double decrease = (E0 - E) / E0;
+      if(s_.verbose) std::cerr << "[optimize] iteration " << stats.iterations << ": energy " << E
+                               << (global_ok ? "" : " (sweep only)") << "\n";
+      if(s_.callback && !s_.callback(double(stats.iterations) / double(s_.max_iterations))) break;
+      // converged: two consecutive iterations lower the energy by less than the tolerance
+      quiet = (decrease < s_.tolerance) ? quiet + 1 : 0;
+      if(quiet >= 2) { result = OK; stats.converged = true; break; }
+    }
+    stats.seconds = timer.time();
+    return result;
+  }
+
+  // exact certificate of the current positions, without writing them
+  Embedding_report certify() const
+  {
+    auto vid = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm_);
+    for(std::size_t i = 0; i < nv_; ++i) put(vid, disk_.vertices[i], i);
+    const std::vector<Point_2>& P = P_;
+    auto current = boost::make_function_property_map<vertex_descriptor, Point_2>(
+      [&](vertex_descriptor v) -> Point_2 { return P[get(vid, v)]; });
+    return check_embedding(tm_, current, CGAL::parameters::vertex_point_map(vpm_));
+  }
+
+  void write() const
+  {
+    for(std::size_t i = 0; i < nv_; ++i)
+      if(var_[i] >= 0) put(uvm_, disk_.vertices[i], P_[i]);
+  }
+
+  // ---- named steps -------------------------------------------------------------------------
+  // Area-weighted mean energy; +inf if a face is not positively oriented (in double).
+  double energy(const std::vector<double>& x, const std::vector<double>& y) const
+  {
+    double e = 0;
+    Isotropic_terms it;
+    for(std::size_t f = 0; f < nf_; ++f)
+    {
+      double s1, s2;
+      if(!singular_values(f, x, y, s1, s2)) return std::numeric_limits<double>::infinity();
+      if(!isotropic_terms(s_.energy, s1, s2, it)) return std::numeric_limits<double>::infinity();
+      e += frames_[f].weight * it.psi;
+    }
+    return e / total_weight_;
+  }
+
+  // One projected Newton step of the whole map; lowers E (mean energy) and returns true if a
+  // step was accepted.
+  bool global_step(double& E)
+  {
+    Eigen::VectorXd grad;
+    if(!assemble(grad)) return false;
+    Eigen::VectorXd d;
+    if(!solve(grad, d)) return false;
+    std::vector<double> dx(nv_, 0.), dy(nv_, 0.);
+    for(std::size_t i = 0; i < nv_; ++i)
+      if(var_[i] >= 0) { dx[i] = d(2 * var_[i]); dy[i] = d(2 * var_[i] + 1); }
+    return line_search(dx, dy, E);
+  }
+
+  // Backtracking from the flip-free bound: accepts the first t whose energy is lower and whose
+  // positions, rounded to the uv number type, pass the exact test (faces positive; with a free
+  // border, the border simple).
+  bool line_search(const std::vector<double>& dx, const std::vector<double>& dy, double& E)
+  {
+    double tmax = 1.0;
+    for(std::size_t f = 0; f < nf_; ++f)
+    {
+      const auto& t = disk_.faces[f];
+      if(var_[t[0]] < 0 && var_[t[1]] < 0 && var_[t[2]] < 0) continue;
+      tmax = (std::min)(tmax, 0.8 * triangle_degeneration_time(X_[t[0]], Y_[t[0]], X_[t[1]], Y_[t[1]], X_[t[2]], Y_[t[2]],
+                                                               dx[t[0]], dy[t[0]], dx[t[1]], dy[t[1]], dx[t[2]], dy[t[2]]));
+    }
+    held_back_ = tmax < 1;
+    std::vector<double> nx(X_), ny(Y_);
+    std::vector<Point_2> Pn(P_);
+    for(double t = tmax; t > 1e-12 * tmax; t *= 0.5)
+    {
+      for(std::size_t i = 0; i < nv_; ++i)
+        if(var_[i] >= 0) { nx[i] = X_[i] + t * dx[i]; ny[i] = Y_[i] + t * dy[i]; }
+      const double En = energy(nx, ny);
+      if(!(En < E)) continue;
+      for(std::size_t i = 0; i < nv_; ++i)
+        if(var_[i] >= 0)
+          Pn[i] = Point_2(P_[i].x() + make_ft<FT>(t * dx[i]), P_[i].y() + make_ft<FT>(sgn_ * t * dy[i]));
+      if(!faces_positive(Pn) || (s_.free_border && !border_simple(Pn))) continue;
+      P_.swap(Pn);
+      refresh_doubles();
+      E = energy(X_, Y_);
+      return true;
+    }
+    return false;
+  }
+
+  // Per-vertex projected Newton steps over all free vertices. With a free border, the border
+  // vertices move first, alone, and their moves are undone together unless the border stays
+  // simple (decided exactly); then the interior vertices move, colour by colour.
+  std::size_t vertex_sweep()
+  {
+    std::size_t moved = 0;
+    if(s_.free_border && !border_free_.empty())
+    {
+      const std::vector<Point_2> saved(P_);
+      std::size_t m = 0;
+      for(std::size_t i : border_free_) if(move_vertex(i)) ++m;
+      if(m > 0 && !border_simple(P_)) { P_ = saved; refresh_doubles(); m = 0; }
+      moved += m;
+    }
+#ifdef CGAL_LINKED_WITH_TBB
+    if(std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value && std::is_floating_point<FT>::value)
+    {
+      for(const std::vector<std::size_t>& cls : colours_)
+      {
+        std::atomic<std::size_t> count(0);
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cls.size(), 64), [&](const tbb::blocked_range<std::size_t>& range) {
+          for(std::size_t k = range.begin(); k != range.end(); ++k)
+            if(move_vertex(cls[k])) ++count;
+        });
+        moved += count;
+      }
+      return moved;
+    }
+#endif
+    for(const std::vector<std::size_t>& cls : colours_)
+      for(std::size_t i : cls)
+        if(move_vertex(i)) ++moved;
+    return moved;
+  }
+
+  // One Newton step on the energy of the star of vertex i, certified exactly; true if i moved.
+  bool move_vertex(std::size_t i)
+  {
+    double g[2] = {0, 0}, H[3] = {0, 0, 0}, E0 = 0;
+    for(const auto& fc : star_[i])
+    {
+      const std::size_t a = corner(fc, 1), b = corner(fc, 2);
+      double Ef; std::array<double, 2> gf; std::array<double, 3> Hf;
+      if(!star_face_terms(fc, X_[i], Y_[i], X_[a], Y_[a], X_[b], Y_[b], Ef, gf, Hf)) return false;
+      const double w = frames_[fc.first].weight;
+      E0 += Ef * w; g[0] += gf[0] * w; g[1] += gf[1] * w;
+      H[0] += Hf[0] * w; H[1] += Hf[1] * w; H[2] += Hf[2] * w;
+    }
+    double d[2];
+    if(!projected_newton_direction(g, H, d)) return false;
+    double tmax = 1.0;
+    for(const auto& fc : star_[i])
+    {
+      const std::size_t a = corner(fc, 1), b = corner(fc, 2);
+      tmax = (std::min)(tmax, 0.8 * vertex_degeneration_time(X_[i], Y_[i], d[0], d[1], X_[a], Y_[a], X_[b], Y_[b]));
+    }
+    typename Traits::Exact_orientation_2 orient = Traits().exact_orientation_2_object();
+    double t = tmax;
+    for(int k = 0; k < 16; ++k, t *= 0.5) // a vertex that cannot move now may move in a later sweep
+    {
+      const double xi = X_[i] + t * d[0], yi = Y_[i] + t * d[1];
+      double En = 0;
+      bool valid = true;
+      for(const auto& fc : star_[i])
+      {
+        const std::size_t a = corner(fc, 1), b = corner(fc, 2);
+        const double e = star_face_energy(fc, xi, yi, X_[a], Y_[a], X_[b], Y_[b]);
+        if(!(e >= 0)) { valid = false; break; }
+        En += e * frames_[fc.first].weight;
+      }
+      if(!valid || !(En < E0)) continue;
+      const Point_2 old = P_[i];
+      P_[i] = Point_2(old.x() + make_ft<FT>(t * d[0]), old.y() + make_ft<FT>(sgn_ * t * d[1]));
+      for(const auto& fc : star_[i])
+      {
+        const auto& tr = disk_.faces[fc.first];
+        if(orient(P_[tr[0]], P_[tr[1]], P_[tr[2]]) != positive_) { valid = false; break; }
+      }
+      if(!valid) { P_[i] = old; continue; }
+      X_[i] = CGAL::to_double(P_[i].x()); Y_[i] = sgn_ * CGAL::to_double(P_[i].y());
+      return true;
+    }
+    return false;
+  }
+
+private:
+  typedef std::pair<std::size_t, int> Face_corner;
+
+  std::size_t corner(const Face_corner& fc, int k) const { return disk_.faces[fc.first][(fc.second + k) % 3]; }
+
+  void refresh_doubles()
+  {
+    for(std::size_t i = 0; i < nv_; ++i) { X_[i] = CGAL::to_double(P_[i].x()); Y_[i] = sgn_ * CGAL::to_double(P_[i].y()); }
+  }
+
+  Error_code mark_fixed_vertices(const std::vector<vertex_descriptor>& constrained)
+  {
+    std::vector<char> fixed(nv_, 0);
+    for(std::size_t i = 0; i < nv_; ++i) if(disk_.on_border[i] && !s_.free_border) fixed[i] = 1;
+    if(!constrained.empty())
+    {
+      auto vid = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm_);
+      for(std::size_t i = 0; i < nv_; ++i) put(vid, disk_.vertices[i], i);
+      for(const vertex_descriptor& v : constrained) fixed[get(vid, v)] = 1; // a vertex of tm: precondition
+    }
+    var_.assign(nv_, -1);
+    nfree_ = 0;
+    for(std::size_t i = 0; i < nv_; ++i) if(!fixed[i]) var_[i] = nfree_++;
+    border_free_.clear();
+    for(std::size_t b : disk_.border) if(var_[b] >= 0) border_free_.push_back(b);
+    return nfree_ > 0 ? OK : ERROR_NO_FREE_VERTEX;
+  }
+
+  // 3D triangles scaled so that the total 3D area equals the area enclosed by the uv border.
+  // Faces with a zero 3D area get an equilateral reference of the mean area (they must still be
+  // shaped by something); a mesh with no 3D area at all, or non-finite points, is refused.
+  Error_code build_frames(double border_area)
+  {
+    std::vector<Reference_triangle<double> > refs(nf_);
+    double total = 0;
+    std::size_t good = 0;
+    for(std::size_t f = 0; f < nf_; ++f)
+    {
+      const auto& t = disk_.faces[f];
+      std::array<std::array<double, 3>, 3> Q;
+      for(int c = 0; c < 3; ++c)
+      {
+        const auto& q = get(vpm_, disk_.vertices[t[c]]);
+        Q[c] = {{ CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()) }};
+        for(double x : Q[c]) if(!std::isfinite(x)) return ERROR_NON_FINITE_COORDINATES;
+      }
+      refs[f] = reference_from_points<double, 3>(Q[0], Q[1], Q[2]);
+      if(refs[f].area2 > 0 && std::isfinite(refs[f].area2) && refs[f].dot[0] + refs[f].dot[1] > 0)
+      { total += std::sqrt(refs[f].area2); ++good; }
+      else refs[f].area2 = 0;
+    }
+    if(good == 0 || !(total > 0) || !std::isfinite(total)) return ERROR_DEGENERATE_3D_FACE;
+    const double k2 = border_area / total;
+    if(!(k2 > 0) || !std::isfinite(k2)) return ERROR_DEGENERATE_BORDER;
+    const double mean_area = total / double(good);
+    const Reference_triangle<double> fallback = equilateral_reference(mean_area, std::sqrt(3.));
+    frames_.resize(nf_);
+    total_weight_ = 0;
+    for(std::size_t f = 0; f < nf_; ++f)
+    {
+      Reference_triangle<double> r = (refs[f].area2 > 0) ? refs[f] : fallback;
+      for(double& d : r.dot) d *= k2;
+      r.area2 *= k2 * k2;
+      frames_[f] = face_frame(r);
+      total_weight_ += frames_[f].weight;
+    }
+    return OK;
+  }
+
+  void build_stars_and_colours()
+  {
+    star_.assign(nv_, std::vector<Face_corner>());
+    for(std::size_t f = 0; f < nf_; ++f)
+      for(int c = 0; c < 3; ++c) star_[disk_.faces[f][c]].push_back(Face_corner(f, c));
+    // greedy colouring of the free interior vertices: two vertices of one colour share no face,
+    // so their steps are independent (parallel sweeps)
+    colours_.clear();
+    std::vector<int> colour(nv_, -1);
+    for(std::size_t i = 0; i < nv_; ++i)
+    {
+      if(var_[i] < 0 || disk_.on_border[i]) continue;
+      std::vector<char> used;
+      for(const auto& fc : star_[i])
+        for(std::size_t j : disk_.faces[fc.first])
+          if(j != i && colour[j] >= 0)
+          {
+            if(used.size() <= std::size_t(colour[j])) used.resize(colour[j] + 1, 0);
+            used[colour[j]] = 1;
+          }
+      int c = 0;
+      while(c < int(used.size()) && used[c]) ++c;
+      colour[i] = c;
+      if(colours_.size() <= std::size_t(c)) colours_.resize(c + 1);
+      colours_[c].push_back(i);
+    }
+  }
+
+  void jacobian(std::size_t f, const std::vector<double>& x, const std::vector<double>& y, Eigen::Matrix2d& J) const
+  {
+    const auto& t = disk_.faces[f];
+    const auto& g = frames_[f].G;
+    J(0, 0) = g[0] * x[t[0]] + g[2] * x[t[1]] + g[4] * x[t[2]];
+    J(0, 1) = g[1] * x[t[0]] + g[3] * x[t[1]] + g[5] * x[t[2]];
+    J(1, 0) = g[0] * y[t[0]] + g[2] * y[t[1]] + g[4] * y[t[2]];
+    J(1, 1) = g[1] * y[t[0]] + g[3] * y[t[1]] + g[5] * y[t[2]];
+  }
+
+  // singular values of the Jacobian of face f (s1 >= s2 > 0), false if the face is not positive
+  bool singular_values(std::size_t f, const std::vector<double>& x, const std::vector<double>& y, double& s1, double& s2) const
+  {
+    Eigen::Matrix2d J;
+    jacobian(f, x, y, J);
+    const double det = J.determinant();
+    if(!(det > 0)) return false;
+    // closed form: s1,2 = (sqrt(|J|^2 + 2 det) +- sqrt(|J|^2 - 2 det)) / 2
+    const double n2 = J.squaredNorm();
+    const double a = std::sqrt(n2 + 2 * det), b = std::sqrt((std::max)(0., n2 - 2 * det));
+    s1 = 0.5 * (a + b);
+    s2 = det / s1; // stable for the small one
+    return s2 > 0 && std::isfinite(s1);
+  }
+
+  // Gradient and projected Hessian of the whole energy (sum of weight * psi), Hessian into H_
+  bool assemble(Eigen::VectorXd& grad)
+  {
+    const long n2 = 2 * nfree_;
+    grad = Eigen::VectorXd::Zero(n2);
+    triplets_.clear();
+    triplets_.reserve(nf_ * 36);
+    for(std::size_t f = 0; f < nf_; ++f)
+    {
+      const auto& t = disk_.faces[f];
+      if(var_[t[0]] < 0 && var_[t[1]] < 0 && var_[t[2]] < 0) continue;
+      Eigen::Matrix2d J;
+      jacobian(f, X_, Y_, J);
+      if(!(J.determinant() > 0)) return false;
+      Eigen::JacobiSVD<Eigen::Matrix2d> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
+      Eigen::Matrix2d U = svd.matrixU(), V = svd.matrixV();
+      Eigen::Vector2d s = svd.singularValues();
+      if(U.determinant() < 0) { U.col(1) *= -1; V.col(1) *= -1; } // both rotations (det J > 0)
+      Isotropic_terms it;
+      if(!isotropic_terms(s_.energy, s(0), s(1), it)) return false;
+      const double w = frames_[f].weight;
+      const auto& g = frames_[f].G;
+      // D^T vec(Q) for a 2x2 Q: per corner a, (g_a0 Q00 + g_a1 Q01, g_a0 Q10 + g_a1 Q11)
+      auto pull = [&](const Eigen::Matrix2d& Q, std::array<double, 6>& out) {
+        for(int a = 0; a < 3; ++a)
+        {
+          out[2 * a] = g[2 * a] * Q(0, 0) + g[2 * a + 1] * Q(0, 1);
+          out[2 * a + 1] = g[2 * a] * Q(1, 0) + g[2 * a + 1] * Q(1, 1);
+        }
+      };
+      const Eigen::Vector2d u1 = U.col(0), u2 = U.col(1), v1 = V.col(0), v2 = V.col(1);
+      std::array<double, 6> gr;
+      pull(U * Eigen::Vector2d(it.d1, it.d2).asDiagonal() * V.transpose(), gr);
+      std::array<std::array<double, 6>, 4> modes;
+      const double r2 = std::sqrt(0.5);
+      pull(u1 * v1.transpose(), modes[0]);
+      pull(u2 * v2.transpose(), modes[1]);
+      pull(r2 * (u2 * v1.transpose() - u1 * v2.transpose()), modes[2]);
+      pull(r2 * (u1 * v2.transpose() + u2 * v1.transpose()), modes[3]);
+      const double lambda[4] = { it.scale1, it.scale2, it.twist, it.flip };
+      for(int p = 0; p < 6; ++p)
+      {
+        const long vp = var_[t[p / 2]];
+        if(vp < 0) continue;
+        const long rp = 2 * vp + (p % 2);
+        grad(rp) += w * gr[p];
+        for(int q = 0; q < 6; ++q)
+        {
+          const long vq = var_[t[q / 2]];
+          if(vq < 0) continue;
+          double h = 0;
+          for(int k = 0; k < 4; ++k) h += lambda[k] * modes[k][p] * modes[k][q];
+          triplets_.emplace_back(rp, 2 * vq + (q % 2), w * h);
+        }
+      }
+    }
+    H_.resize(n2, n2);
+    H_.setFromTriplets(triplets_.begin(), triplets_.end());
+    return grad.allFinite();
+  }
+
+  // d = -H^-1 grad; a small relative shift keeps H definite (a free border leaves translations free)
+  bool solve(const Eigen::VectorXd& grad, Eigen::VectorXd& d)
+  {
+    const long n2 = H_.rows();
+    Eigen::VectorXd diag = H_.diagonal();
+    if(!diag.allFinite()) return false;
+    std::vector<double> dv(diag.data(), diag.data() + n2);
+    std::nth_element(dv.begin(), dv.begin() + n2 / 2, dv.end());
+    const double shift = 1e-10 * dv[n2 / 2] + std::numeric_limits<double>::min();
+    for(long i = 0; i < n2; ++i) H_.coeffRef(i, i) += shift;
+    if(n2 <= direct_solver_limit)
+    {
+      if(!analyzed_) { ldlt_.analyzePattern(H_); analyzed_ = true; } // the pattern never changes
+      ldlt_.factorize(H_);
+      if(ldlt_.info() != Eigen::Success) return false;
+      d = ldlt_.solve(-grad);
+      if(ldlt_.info() != Eigen::Success) return false;
+    }
+    else
+    {
+      // large meshes: a sparse factorization costs O(n^1.5) on 2D meshes; bounded conjugate
+      // gradients keep an iteration linear (the line search decides anyway)
+      cg_.setMaxIterations(200);
+      cg_.setTolerance(1e-6);
+      cg_.compute(H_);
+      d = cg_.solve(-grad);
+    }
+    return d.allFinite() && grad.dot(d) < 0;
+  }
+
+  bool faces_positive(const std::vector<Point_2>& P) const
+  {
+    typename Traits::Exact_orientation_2 orient = Traits().exact_orientation_2_object();
+    for(std::size_t f = 0; f < nf_; ++f)
+    {
+      const auto& tr = disk_.faces[f];
+      if(var_[tr[0]] < 0 && var_[tr[1]] < 0 && var_[tr[2]] < 0) continue;
+      if(orient(P[tr[0]], P[tr[1]], P[tr[2]]) != positive_) return false;
+    }
+    return true;
+  }
+
+  bool border_simple(const std::vector<Point_2>& P) const
+  {
+    std::vector<typename CK::Kernel::Point_2> B;
+    B.reserve(disk_.border.size());
+    for(std::size_t b : disk_.border) B.push_back(CK::convert(P[b]));
+    return count_border_intersections<typename CK::Kernel>(B, 1) == 0;
+  }
+
+  // energy of star face fc with its corner 0 at (x, y): psi * weight is summed by the caller
+  bool star_face_terms(const Face_corner& fc, double x, double y, double ax, double ay, double bx, double by,
+                       double& E, std::array<double, 2>& g, std::array<double, 3>& H) const
+  {
+    if(s_.energy == Distortion_energy::SYMMETRIC_DIRICHLET)
+    {
+      const bool ok = symmetric_dirichlet_local(corner_reference(fc), x, y, ax, ay, bx, by, E, g, H);
+      return ok && std::isfinite(E);
+    }
+    // ARAP: central differences (a diagonal model of the star's Hessian is enough for a descent step)
+    const double h = 1e-7 * (std::abs(x) + std::abs(y) + std::abs(ax - bx) + std::abs(ay - by));
+    E = star_face_energy(fc, x, y, ax, ay, bx, by);
+    const double ex = star_face_energy(fc, x + h, y, ax, ay, bx, by), ey = star_face_energy(fc, x, y + h, ax, ay, bx, by);
+    const double exm = star_face_energy(fc, x - h, y, ax, ay, bx, by), eym = star_face_energy(fc, x, y - h, ax, ay, bx, by);
+    g = {{ (ex - exm) / (2 * h), (ey - eym) / (2 * h) }};
+    H = {{ (ex - 2 * E + exm) / (h * h), 0., (ey - 2 * E + eym) / (h * h) }};
+    return std::isfinite(E) && std::isfinite(g[0]) && std::isfinite(g[1]);
+  }
+
+  double star_face_energy(const Face_corner& fc, double x, double y, double ax, double ay, double bx, double by) const
+  {
+    const Reference_triangle<double> r = corner_reference(fc);
+    if(s_.energy == Distortion_energy::SYMMETRIC_DIRICHLET)
+    {
+      bool ok;
+      const double e = symmetric_dirichlet(r, x, y, ax, ay, bx, by, ok);
+      return (ok && signed_area(x, y, ax, ay, bx, by) > 0 && std::isfinite(e)) ? e : -1;
+    }
+    // ARAP from the singular values: |J|^2 and det J
+    const double A = signed_area(x, y, ax, ay, bx, by);
+    if(!(A > 0)) return -1;
+    const double n2 = dirichlet_term(r, x, y, ax, ay, bx, by), det = A / std::sqrt(r.area2);
+    const double a = std::sqrt(n2 + 2 * det), b = std::sqrt((std::max)(0., n2 - 2 * det));
+    const double s1 = 0.5 * (a + b), s2 = det / s1;
+    return (s1 - 1) * (s1 - 1) + (s2 - 1) * (s2 - 1);
+  }
+
+  // the face's reference with its corners rotated so that corner 0 is the star's centre
+  Reference_triangle<double> corner_reference(const Face_corner& fc) const
+  {
+    Reference_triangle<double> r = frames_[fc.first].ref;
+    const auto& d = frames_[fc.first].ref.dot;
+    r.dot = {{ d[fc.second], d[(fc.second + 1) % 3], d[(fc.second + 2) % 3] }};
+    return r;
+  }
+
+  static constexpr long direct_solver_limit = 100000; // unknowns (2 per free vertex)
+
+  const TriangleMesh& tm_;
+  VertexUVMap uvm_;
+  VertexPointMap vpm_;
+  Settings s_;
+  Indexed_disk<TriangleMesh> disk_;
+  std::size_t nv_ = 0, nf_ = 0;
+  double sgn_ = 1;
+  CGAL::Orientation positive_ = CGAL::LEFT_TURN;
+  std::vector<long> var_;
+  long nfree_ = 0;
+  std::vector<std::size_t> border_free_;
+  std::vector<Point_2> P_;
+  std::vector<double> X_, Y_;
+  std::vector<Face_frame> frames_;
+  double total_weight_ = 1;
+  std::vector<std::vector<Face_corner> > star_;
+  std::vector<std::vector<std::size_t> > colours_;
+  std::vector<Eigen::Triplet<double> > triplets_;
+  SpMat H_;
+  Eigen::SimplicialLDLT<SpMat> ldlt_;
+  bool analyzed_ = false;
+  bool held_back_ = false; // the last global step was limited by the flip-free bound
+  Eigen::ConjugateGradient<SpMat, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double> > cg_;
+};
+
+} // namespace internal
+} // namespace Progressive_embedding
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_DISTORTION_OPTIMIZER_H

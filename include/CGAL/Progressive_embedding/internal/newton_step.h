@@ -1,0 +1,92 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+#ifndef CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_NEWTON_STEP_H
+#define CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_NEWTON_STEP_H
+
+// The pieces of a flip-free Newton step shared by the local smoothing of progressive
+// embedding and by the distortion optimizer:
+//  - the direction of one vertex (2x2 Hessian projected to SPD),
+//  - the first time a triangle degenerates when one corner moves (linear in t) or when all
+//    three move (quadratic in t).
+// Directions and bounds are computed in double; callers certify accepted positions exactly.
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace CGAL {
+namespace Progressive_embedding {
+namespace internal {
+
+// Newton direction d = -H^-1 g with the 2x2 Hessian H = (hxx, hxy, hyy) projected to SPD
+// (eigenvalues clamped to 1e-12 times the largest); false if no finite non-zero direction exists.
+inline bool projected_newton_direction(const double g[2], const double H[3], double d[2])
+{
+  if(!std::isfinite(g[0]) || !std::isfinite(g[1]) || !std::isfinite(H[0]) || !std::isfinite(H[1]) || !std::isfinite(H[2]))
+    return false;
+  const double tr2 = 0.5 * (H[0] + H[2]);
+  const double disc = std::hypot(0.5 * (H[0] - H[2]), H[1]);
+  double l1 = tr2 + disc, l2 = tr2 - disc;
+  double e1x, e1y; // eigenvector of l1
+  if(H[1] != 0) { e1x = l1 - H[2]; e1y = H[1]; }
+  else if(H[0] >= H[2]) { e1x = 1; e1y = 0; }
+  else { e1x = 0; e1y = 1; }
+  const double nrm = std::hypot(e1x, e1y);
+  if(!(nrm > 0) || !std::isfinite(nrm)) return false;
+  e1x /= nrm; e1y /= nrm;
+  const double e2x = -e1y, e2y = e1x;
+  if(!(l1 > 0)) return false; // no positive curvature at all: no Newton direction
+  const double floor_l = 1e-12 * l1; // relative: the Hessian's scale is the energy's
+  l1 = (std::max)(l1, floor_l); l2 = (std::max)(l2, floor_l);
+  const double g1 = e1x * g[0] + e1y * g[1], g2 = e2x * g[0] + e2y * g[1];
+  d[0] = -(g1 / l1) * e1x - (g2 / l2) * e2x;
+  d[1] = -(g1 / l1) * e1y - (g2 / l2) * e2y;
+  return std::isfinite(d[0]) && std::isfinite(d[1]) && (d[0] != 0 || d[1] != 0);
+}
+
+// First t > 0 at which the triangle (p + t d, a, b), positively oriented at t = 0, degenerates
+// (its signed area is affine in t); +infinity if it never does.
+inline double vertex_degeneration_time(double px, double py, double dx, double dy,
+                                       double ax, double ay, double bx, double by)
+{
+  const double A0 = (ax - px) * (by - py) - (ay - py) * (bx - px); // twice the area
+  const double dA = dx * (ay - by) + dy * (bx - ax);                 // its derivative in t
+  if(dA < 0 && A0 > 0) return A0 / -dA;
+  return std::numeric_limits<double>::infinity();
+}
+
+// First t > 0 at which the triangle with corners (x_i + t dx_i, y_i + t dy_i) degenerates
+// (its signed area is quadratic in t); +infinity if it never does.
+inline double triangle_degeneration_time(double x0, double y0, double x1, double y1, double x2, double y2,
+                                         double dx0, double dy0, double dx1, double dy1, double dx2, double dy2)
+{
+  const double ex1 = x1 - x0, ey1 = y1 - y0, ex2 = x2 - x0, ey2 = y2 - y0;
+  const double fx1 = dx1 - dx0, fy1 = dy1 - dy0, fx2 = dx2 - dx0, fy2 = dy2 - dy0;
+  const double c = ex1 * ey2 - ey1 * ex2;
+  const double b = ex1 * fy2 + fx1 * ey2 - ey1 * fx2 - fy1 * ex2;
+  const double a = fx1 * fy2 - fy1 * fx2;
+  double t = std::numeric_limits<double>::infinity();
+  auto consider = [&](double r) { if(r > 0 && r < t) t = r; };
+  if(a == 0)
+  { if(b != 0) consider(-c / b); }
+  else
+  {
+    const double disc = b * b - 4 * a * c;
+    if(disc >= 0)
+    {
+      const double sq = std::sqrt(disc);
+      const double q = -0.5 * (b + (b >= 0 ? sq : -sq)); // stable roots, also for a tiny a
+      if(q != 0) consider(c / q);
+      consider(q / a);
+    }
+  }
+  return t;
+}
+
+} // namespace internal
+} // namespace Progressive_embedding
+} // namespace CGAL
+
+#endif

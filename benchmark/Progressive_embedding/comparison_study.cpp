@@ -1,12 +1,13 @@
-// Comparison study driver (issue 4; not run by ctest): on the same inputs and in one run,
-// CGAL 5.5's Surface_mesh_parameterization (Barycentric_mapping_parameterizer_3 and
-// Mean_value_coordinates_parameterizer_3, default solver, through SMP::parameterize), our
-// tutte_embedding in double / MPFR / exact Gmpq, progressive_embedding (double and MPFR) and
-// Progressive_embedding_parameterizer_3. Every output map is certified with check_embedding.
+// Comparison study driver (run_study.py drives it; ctest runs its --quick mode): on the same
+// inputs and in one run, CGAL 5.5's Surface_mesh_parameterization
+// (Barycentric_mapping_parameterizer_3 and Mean_value_coordinates_parameterizer_3, default
+// solver, through SMP::parameterize), our tutte_embedding in double / MPFR / exact Gmpq,
+// progressive_embedding (double and MPFR) and Progressive_embedding_parameterizer_3. Every output
+// map is certified with check_embedding.
 //
-// Inputs (DESIGN.md section 6):
-//   corpus : every closed genus-0 mesh of DATA_DIR/meshes x seeds, Tutte-failure protocol
-//            (thingi_cut; the removed face's vertices pinned to (0,0), (1/2, sqrt(3)/2), (1,0));
+// Inputs (the OFF meshes of DATA_DIR/meshes, the libcgal-demo data):
+//   corpus : every closed genus-0 mesh x seeds, Tutte-failure protocol (thingi_cut: one face,
+//            chosen by the seed, removed; its vertices pinned to (0,0), (1/2, sqrt(3)/2), (1,0));
 //   disk   : every disk of DATA_DIR/meshes, border on the unit circle (3D arc length), and the
 //            random-init protocol as the input of progressive_embedding.
 // Every method gets the same fixed border: CGAL's parameterizers through a border parameterizer
@@ -15,7 +16,8 @@
 // Each run is executed in a forked child: a per-run time budget (SIGALRM), an isolated
 // peak-memory measurement (getrusage after resetting the high-water mark) and no state shared
 // between runs. Writes OUT/study_runs.csv (one row per run), OUT/study_meta.txt (machine, date,
-// command), and the before/after uv SVG gallery of the worst corpus runs.
+// command), and the before/after uv SVG gallery of the worst corpus runs with its index
+// OUT/study_gallery.csv (run_study.py renders the SVGs to PNG and compresses the CSV).
 //
 //   comparison_study DATA_DIR OUT_DIR [options]
 //     --quick                 a handful of inputs (bull.off seeds 0 and 1, dino.off seeds 0 and 8, 2 disks)
@@ -36,6 +38,8 @@
 //     --gmpq-all-seeds-max-interior N   ... at every seed up to N (default 400), seed 0 only above
 //     --gmpq-budget S         time budget of one Gmpq run (default 180)
 //     --gallery N             SVG pictures (Tutte map, repaired map) of the N worst corpus runs (default 5)
+//     --gallery-runs m:s,...  only the gallery, of these corpus runs (mesh:seed, worst first): no study
+//                             run, study_runs.csv and study_meta.txt are left as they are
 //     --command "..."         the command that launched the study, recorded in the outputs
 //     --list                  print the classification of the meshes and exit
 
@@ -59,7 +63,7 @@
 #include <CGAL/Progressive_embedding/progressive_embedding.h>
 #include <CGAL/Progressive_embedding/Progressive_embedding_parameterizer_3.h>
 #include <CGAL/Progressive_embedding/IO/SVG.h>
-#include <CGAL/Progressive_embedding/internal/protocols.h>
+#include "protocols.h" // test fixtures: test/Progressive_embedding/
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 
 #include <Eigen/Core>
@@ -408,6 +412,7 @@ struct Options
   int gallery = 5;
   std::string command;
   std::vector<std::string> methods; // empty: all
+  std::vector<std::pair<std::string, unsigned> > gallery_runs; // non-empty: the gallery of these runs only
   bool wants(const std::string& m) const { return methods.empty() || std::find(methods.begin(), methods.end(), m) != methods.end(); }
 };
 
@@ -463,6 +468,23 @@ static std::string shell_out(const std::string& cmd)
   return r;
 }
 
+// the gallery's pictures: faces colored by their distortion, so that the repaired maps show where the
+// repair squeezed faces; a zoom that is not a disk (the coloring needs one) is drawn in one color.
+// A failed write is reported and the study goes on without that picture.
+static void write_picture(const std::string& filename, const SM& m, SM::Property_map<vd, K::Point_2> uv, const std::string& title)
+{
+  PE::IO::SVG_options options;
+  options.title = title;
+  options.color_by_distortion = true;
+  PE::Error_code ec = PE::IO::write_SVG(filename, m, uv, options);
+  if(ec != PE::OK && ec != PE::ERROR_CANNOT_WRITE_FILE)
+  {
+    options.color_by_distortion = false;
+    ec = PE::IO::write_SVG(filename, m, uv, options);
+  }
+  if(ec != PE::OK) std::cerr << "cannot write " << filename << ": " << PE::get_error_name(ec) << "\n";
+}
+
 // writes the uv picture of the faces `sel` of `m` only (a copy of them), framed on those faces
 static void write_zoom_SVG(const SM& m, SM::Property_map<vd, K::Point_2> uv, const std::vector<SM::Face_index>& sel,
                            const std::string& filename, const std::string& title)
@@ -481,7 +503,7 @@ static void write_zoom_SVG(const SM& m, SM::Property_map<vd, K::Point_2> uv, con
     }
     z.add_face(t); // a face that would make the copy non-manifold is left out
   }
-  PE::IO::write_SVG(filename, z, zuv, title);
+  write_picture(filename, z, zuv, title);
 }
 
 // the faces whose three uv vertices lie in a square window on the invalid faces (exact orientation
@@ -552,6 +574,18 @@ int main(int argc, char** argv)
     else if(a == "--gmpq-all-seeds-max-interior") o.gmpq_all_seeds_max_interior = std::stoul(next());
     else if(a == "--gallery") o.gallery = std::stoi(next());
     else if(a == "--command") o.command = next();
+    else if(a == "--gallery-runs")
+    {
+      std::stringstream ss(next()); std::string x;
+      while(std::getline(ss, x, ','))
+      {
+        const std::size_t c = x.rfind(':');
+        // a seed of 1 to 9 digits: std::stoul below cannot throw
+        if(c == std::string::npos || c == 0 || c + 1 == x.size() || x.find_first_not_of("0123456789", c + 1) != std::string::npos
+           || x.size() - c > 10) { std::cerr << "--gallery-runs: expected mesh:seed, got " << x << "\n"; return 2; }
+        o.gallery_runs.push_back({ x.substr(0, c), unsigned(std::stoul(x.substr(c + 1))) });
+      }
+    }
     else if(a == "--methods") { std::stringstream ss(next()); std::string x; while(std::getline(ss, x, ',')) if(!x.empty()) o.methods.push_back(x); }
     else { std::cerr << "unknown option " << a << "\n"; return 2; }
   }
@@ -563,7 +597,7 @@ int main(int argc, char** argv)
     while(dirent* e = readdir(dir))
     {
       std::string n = e->d_name;
-      // OFF files only: the 48 closed genus-0 meshes and 25 disks of DESIGN.md section 6
+      // OFF files only: 48 closed genus-0 meshes and 25 disks in libcgal-demo 5.5
       // (sphere.ply, sphere.stl and colored_tetra.ply repeat OFF meshes)
       if(n.size() > 4 && n.substr(n.size() - 4) == ".off") names.push_back(n);
     }
@@ -572,6 +606,8 @@ int main(int argc, char** argv)
   else { std::cerr << "cannot open " << o.data << "/meshes\n"; return 1; }
   std::sort(names.begin(), names.end());
   std::vector<std::pair<std::string, std::size_t> > closed, disks;
+  const bool gallery_only = !o.gallery_runs.empty();
+  if(gallery_only) names.clear(); // the gallery reads its own meshes; classifying every mesh takes seconds
   for(const std::string& n : names)
   {
     SM m; std::string why;
@@ -584,13 +620,17 @@ int main(int argc, char** argv)
       std::cout << n << "\t" << m.number_of_vertices() << "\t" << m.number_of_faces() << "\t"
                 << (c == Mesh_class::CLOSED_GENUS_0 ? "closed-genus-0" : c == Mesh_class::DISK ? "disk" : "other: " + why) << "\n";
   }
-  std::cerr << closed.size() << " closed genus-0 meshes, " << disks.size() << " disks\n";
+  if(!gallery_only) std::cerr << closed.size() << " closed genus-0 meshes, " << disks.size() << " disks\n";
   if(o.list) return 0;
 
   auto selected = [&](const std::string& n) { return o.meshes.empty() || std::find(o.meshes.begin(), o.meshes.end(), n) != o.meshes.end(); };
   std::vector<std::pair<std::string, std::vector<unsigned> > > corpus_jobs;
   std::vector<std::string> disk_jobs;
-  if(o.quick && o.meshes.empty())
+  if(gallery_only)
+  {
+    // the gallery only: no study job, and the outputs of the study that produced the list stay as they are
+  }
+  else if(o.quick && o.meshes.empty())
   {
     // bull.off seeds 0 (fails in double) and 1, dino.off seeds 0 and 8 (the worst corpus run), two small disks;
     // MPFR progressive embedding on the disks only, one gallery pair
@@ -610,6 +650,7 @@ int main(int argc, char** argv)
   }
 
   // ---- machine, date, command
+  if(!gallery_only)
   {
     struct utsname u; uname(&u);
     std::time_t now = std::time(nullptr);
@@ -635,9 +676,13 @@ int main(int argc, char** argv)
     if(!meta) { std::cerr << "cannot write " << o.out << "/study_meta.txt\n"; return 1; }
   }
 
-  std::ofstream csv(o.out + "/study_runs.csv");
-  if(!csv) { std::cerr << "cannot write " << o.out << "/study_runs.csv\n"; return 1; }
-  csv << csv_header << "\n";
+  std::ofstream csv;
+  if(!gallery_only)
+  {
+    csv.open(o.out + "/study_runs.csv");
+    if(!csv) { std::cerr << "cannot write " << o.out << "/study_runs.csv\n"; return 1; }
+    csv << csv_header << "\n";
+  }
 
   CGAL::Real_timer total; total.start();
   struct Worst { std::size_t bad; std::string mesh; unsigned seed; };
@@ -772,27 +817,41 @@ int main(int argc, char** argv)
     in.pe_input_name = "random_init";
     run_all(in);
   }
-  csv.close();
+  if(!gallery_only) csv.close();
 
   // ---- gallery: the double Tutte map and its repair for the worst corpus runs
-  std::sort(worst.begin(), worst.end(), [](const Worst& a, const Worst& b) { return a.bad > b.bad || (a.bad == b.bad && a.mesh < b.mesh); });
+  if(gallery_only)
+  {
+    // in the given order; the invalid-face counts are computed below
+    o.gallery = int(o.gallery_runs.size());
+    for(const auto& g : o.gallery_runs) worst.push_back({ 1, g.first, g.second });
+  }
+  else
+    std::sort(worst.begin(), worst.end(), [](const Worst& a, const Worst& b) { return a.bad > b.bad || (a.bad == b.bad && a.mesh < b.mesh); });
   std::ofstream gal(o.out + "/study_gallery.csv");
   gal << "rank,mesh,seed,tutte_invalid_faces,zoom_faces,tutte_zoom_svg,repaired_zoom_svg,tutte_full_svg,repaired_status,repaired_valid\n";
   for(int k = 0; k < o.gallery && k < int(worst.size()) && worst[k].bad > 0; ++k)
   {
     SM m;
-    CGAL::IO::read_polygon_mesh(o.data + "/meshes/" + worst[k].mesh, m);
+    if(!CGAL::IO::read_polygon_mesh(o.data + "/meshes/" + worst[k].mesh, m) || !CGAL::is_closed(m) || m.is_empty())
+    { std::cerr << "gallery: cannot read " << worst[k].mesh << " as a closed mesh\n"; return 1; }
     std::array<vd, 3> pin;
-    PE::internal::thingi_cut(m, worst[k].seed, pin);
+    if(PE::internal::thingi_cut(m, worst[k].seed, pin) != PE::OK) { std::cerr << "gallery: cut failed on " << worst[k].mesh << "\n"; return 1; }
     auto uv = m.add_property_map<vd, K::Point_2>("v:uv", K::Point_2(0, 0)).first;
     uv[pin[0]] = K::Point_2(0, 0); uv[pin[1]] = K::Point_2(0.5, std::sqrt(3.) / 2); uv[pin[2]] = K::Point_2(1, 0);
     PE::tutte_embedding(m, SM::null_halfedge(), uv);
+    if(gallery_only)
+    {
+      const PE::Embedding_report rep = PE::check_embedding(m, uv, PE::parameters::check_overlap(false));
+      worst[k].bad = rep.flipped + rep.degenerate;
+      if(worst[k].bad == 0) { std::cerr << "gallery: " << worst[k].mesh << " seed " << worst[k].seed << ": the Tutte map is valid, no picture\n"; continue; }
+    }
     const std::string what = worst[k].mesh + " seed " + std::to_string(worst[k].seed);
     const std::string stem = "study_gallery_" + std::to_string(k + 1) + "_" + worst[k].mesh.substr(0, worst[k].mesh.rfind('.')) + "_" + std::to_string(worst[k].seed);
     // the pinned corners are clockwise: so is every face of a valid map
     const std::vector<SM::Face_index> sel = faces_around_invalid(m, uv, CGAL::RIGHT_TURN);
     std::string full_svg;
-    if(k == 0) { full_svg = stem + "_tutte_full.svg"; PE::IO::write_SVG(o.out + "/" + full_svg, m, uv, what + ": Tutte in double (whole map)"); }
+    if(k == 0) { full_svg = stem + "_tutte_full.svg"; write_picture(o.out + "/" + full_svg, m, uv, what + ": Tutte in double (whole map)"); }
     write_zoom_SVG(m, uv, sel, o.out + "/" + stem + "_tutte.svg", what + ": Tutte in double, zoom on the invalid faces");
     const PE::Error_code ec = PE::progressive_embedding(m, uv);
     const bool valid = PE::check_embedding(m, uv).is_valid();
@@ -801,6 +860,7 @@ int main(int argc, char** argv)
         << stem + "_tutte.svg" << ',' << stem + "_repaired.svg" << ',' << full_svg << ',' << PE::get_error_name(ec) << ',' << (valid ? 1 : 0) << "\n";
   }
   std::cerr << "done in " << fmt(total.time()) << " s\n";
-  std::ofstream(o.out + "/study_meta.txt", std::ios::app) << "driver wall-clock seconds: " << fmt(total.time()) << "\n";
+  if(!gallery_only)
+    std::ofstream(o.out + "/study_meta.txt", std::ios::app) << "driver wall-clock seconds: " << fmt(total.time()) << "\n";
   return 0;
 }

@@ -1,6 +1,10 @@
 # Compiles every public header of the package alone, in its own translation unit (syntax only),
 # so that a header that forgets one of its includes is caught.
-#   cmake -DCXX=... -DINCLUDE_DIRS="a;b" -DDEFINITIONS="X;Y" -DHEADER_ROOT=.../include -DWORK_DIR=... -P compile_headers.cmake
+# Also checks that long_double_rejected.cpp does NOT compile and says why (FAIL_SOURCE).
+#   cmake -DCXX=... -DINCLUDE_DIRS="a|b" -DDEFINITIONS="X|Y" -DHEADER_ROOT=.../include -DWORK_DIR=...
+#         [-DFAIL_SOURCE=file.cpp -DFAIL_REGEX=...] -P compile_headers.cmake
+string(REPLACE "|" ";" INCLUDE_DIRS "${INCLUDE_DIRS}")
+string(REPLACE "|" ";" DEFINITIONS "${DEFINITIONS}")
 file(GLOB headers RELATIVE ${HEADER_ROOT}
      ${HEADER_ROOT}/CGAL/progressive_embedding.h
      ${HEADER_ROOT}/CGAL/Progressive_embedding/*.h
@@ -31,6 +35,18 @@ foreach(h ${headers})
 endforeach()
 if(count EQUAL 0)
   message(FATAL_ERROR "no public header found under ${HEADER_ROOT}")
+endif()
+if(FAIL_SOURCE)
+  execute_process(COMMAND ${CXX} ${flags} ${FAIL_SOURCE} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(rc EQUAL 0)
+    message(STATUS "FAILED: ${FAIL_SOURCE} compiled, but it must be rejected")
+    list(APPEND failed ${FAIL_SOURCE})
+  elseif(NOT err MATCHES "${FAIL_REGEX}")
+    message(STATUS "FAILED: ${FAIL_SOURCE} is rejected without the message '${FAIL_REGEX}':\n${err}")
+    list(APPEND failed ${FAIL_SOURCE})
+  else()
+    message(STATUS "ok: ${FAIL_SOURCE} is rejected at compile time ('${FAIL_REGEX}')")
+  endif()
 endif()
 list(LENGTH failed nfailed)
 if(nfailed GREATER 0)

@@ -20,7 +20,7 @@
 #include <CGAL/Progressive_embedding/Progressive_embedding_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Progressive_embedding/internal/protocols.h>
+#include "protocols.h" // test fixtures: test/Progressive_embedding/
 
 #include <cmath>
 #include <cstdlib>

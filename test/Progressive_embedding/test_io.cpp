@@ -5,11 +5,14 @@
 //
 // Author(s) : Progressive_embedding contributors
 
-// Tests of IO/OBJ_with_uv.h and IO/SVG.h.
-// Usage: test_io [data_dir]   (data_dir contains meshes/mushroom.off; optional)
+// Tests of the I/O layer: IO/OBJ_with_uv.h, IO/read_polygon_mesh.h (validating OFF/OBJ/PLY/STL
+// readers with bounded memory), the writers' no-partial-file guarantee, and IO/SVG.h.
+// Usage: test_io [data_dir]   (data_dir contains libcgal-demo's meshes/; optional)
 
 #include <CGAL/Progressive_embedding/IO/OBJ_with_uv.h>
 #include <CGAL/Progressive_embedding/IO/SVG.h>
+#include <CGAL/Progressive_embedding/IO/read_polygon_mesh.h>
+#include <CGAL/Progressive_embedding/check_embedding.h>
 #include <CGAL/Progressive_embedding/parameters.h> // its namespaces must not shadow CGAL's in the IO headers
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -25,7 +28,11 @@
 
 #include <boost/property_map/property_map.hpp>
 
+#include <CGAL/boost/graph/Euler_operations.h>
+
+#include <cerrno>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -36,6 +43,10 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace PE = CGAL::Progressive_embedding;
 
@@ -349,6 +360,17 @@ int test_exact_uv(const Seam_grid& g)
     }
     std::ostringstream svg;
     CHECK(PE::IO::write_SVG(svg, m, uvm) == PE::OK, "gmpq svg");
+    {
+      // distortion colors in an exact number type: the legend is the report's
+      const PE::Embedding_report rep = PE::check_embedding(m, uvm);
+      PE::IO::SVG_options so;
+      so.color_by_distortion = true;
+      so.inset = true;
+      std::ostringstream svg2;
+      CHECK(rep.status == PE::OK && PE::IO::write_SVG(svg2, m, uvm, so) == PE::OK, "gmpq svg with distortion");
+      CHECK(svg2.str().find(">mean " + PE::IO::format_number(rep.mean_energy_3d) + "</text>") != std::string::npos
+            && svg2.str().find(">flipped: " + std::to_string(rep.flipped) + "</text>") != std::string::npos, "gmpq legend");
+    }
   }
   {
     typedef CGAL::Simple_cartesian<CGAL::Gmpfr>::Point_2 FPoint_2;
@@ -367,6 +389,17 @@ int test_exact_uv(const Seam_grid& g)
     }
     std::ostringstream svg;
     CHECK(PE::IO::write_SVG(svg, m, uvm) == PE::OK, "gmpfr svg");
+    {
+      // distortion colors in an exact number type: the legend is the report's
+      const PE::Embedding_report rep = PE::check_embedding(m, uvm);
+      PE::IO::SVG_options so;
+      so.color_by_distortion = true;
+      so.inset = true;
+      std::ostringstream svg2;
+      CHECK(rep.status == PE::OK && PE::IO::write_SVG(svg2, m, uvm, so) == PE::OK, "gmpfr svg with distortion");
+      CHECK(svg2.str().find(">mean " + PE::IO::format_number(rep.mean_energy_3d) + "</text>") != std::string::npos
+            && svg2.str().find(">flipped: " + std::to_string(rep.flipped) + "</text>") != std::string::npos, "gmpfr legend");
+    }
     CGAL::Gmpfr::set_default_precision(old);
   }
   std::cout << "uv in Simple_cartesian<Gmpq> and <Gmpfr>: OK" << std::endl;
@@ -549,6 +582,499 @@ int test_malformed()
 }
 
 // ---------------------------------------------------------------------------
+// read_polygon_mesh: OFF, OBJ, PLY, STL
+
+// A fresh folder for the files of one test, removed by the destructor.
+struct Temp_dir
+{
+  std::filesystem::path path;
+  explicit Temp_dir(const std::string& name)
+  {
+    path = std::filesystem::temp_directory_path() / ("pe_test_io_" + name + "_" + std::to_string(::getpid()));
+    std::error_code ec;
+    std::filesystem::remove_all(path, ec);
+    std::filesystem::create_directories(path);
+  }
+  ~Temp_dir() { std::error_code ec; std::filesystem::remove_all(path, ec); }
+  std::string file(const std::string& name) const { return (path / name).string(); }
+  std::size_t count() const
+  {
+    std::size_t n = 0;
+    for(const auto& e : std::filesystem::directory_iterator(path)) { (void)e; ++n; }
+    return n;
+  }
+};
+
+void write_bytes(const std::string& fname, const std::string& bytes)
+{
+  std::ofstream o(fname, std::ios::binary);
+  o << bytes;
+}
+
+std::string read_bytes(const std::string& fname)
+{
+  std::ifstream in(fname, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string describe(const PE::IO::Read_result& r, int)
+{
+  return std::string(PE::get_error_name(r.status)) + " line " + std::to_string(r.line) + ": " + r.message;
+}
+
+// little-endian binary helpers
+void put_u32(std::string& s, std::uint32_t x) { for(int k = 0; k < 4; ++k) s += char((x >> (8 * k)) & 0xff); }
+void put_f32(std::string& s, float f) { std::uint32_t x; std::memcpy(&x, &f, 4); put_u32(s, x); }
+void put_f32_be(std::string& s, float f)
+{
+  std::uint32_t x; std::memcpy(&x, &f, 4);
+  for(int k = 3; k >= 0; --k) s += char((x >> (8 * k)) & 0xff);
+}
+
+std::string binary_stl(const std::vector<std::array<float, 9> >& tris, std::uint32_t declared)
+{
+  std::string s(80, ' ');
+  s.replace(0, 6, "binary");
+  put_u32(s, declared);
+  for(const auto& t : tris)
+  {
+    for(int k = 0; k < 3; ++k) put_f32(s, 0.f);
+    for(float x : t) put_f32(s, x);
+    s += std::string(2, '\0');
+  }
+  return s;
+}
+
+int test_read_polygon_mesh_errors()
+{
+  Temp_dir dir("read");
+  const std::string off_head = "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n"; // lines 1-6
+  const std::string ply_head = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                               "element face 2\nproperty list uchar int vertex_indices\nend_header\n"
+                               "0 0 0\n1 0 0\n0 1 0\n1 1 0\n"; // lines 1-13
+  const std::string obj_head = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"; // lines 1-4
+  // a binary PLY: 3 vertices (float x y z), faces as uchar-counted int lists
+  auto binary_ply = [](bool big, const std::vector<std::array<float, 3> >& pts, const std::vector<std::vector<int> >& faces,
+                       unsigned long long declared_faces) {
+    std::string s = std::string("ply\nformat ") + (big ? "binary_big_endian" : "binary_little_endian") + " 1.0\n"
+                  + "element vertex " + std::to_string(pts.size()) + "\nproperty float x\nproperty float y\nproperty float z\n"
+                  + "element face " + std::to_string(declared_faces) + "\nproperty list uchar int vertex_indices\nend_header\n";
+    for(const auto& p : pts) for(float x : p) { if(big) put_f32_be(s, x); else put_f32(s, x); }
+    for(const auto& f : faces)
+    {
+      s += char(f.size());
+      for(int i : f)
+      {
+        std::uint32_t u = std::uint32_t(i);
+        if(big) for(int k = 3; k >= 0; --k) s += char((u >> (8 * k)) & 0xff);
+        else put_u32(s, u);
+      }
+    }
+    return s;
+  };
+  const std::vector<std::array<float, 3> > tri3 = {{{0, 0, 0}}, {{1, 0, 0}}, {{0, 1, 0}}};
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+
+  struct Case { std::string name, file, text; PE::Error_code code; std::size_t line; std::string message; };
+  const std::vector<Case> cases = {
+    // declared sizes larger than the file: refused at once, at the line of the declaration
+    { "OFF declaring 10^9 vertices and faces", "huge.off", "OFF\n1000000000 1000000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+      PE::ERROR_MALFORMED_FILE, 2, "declares 1000000000 vertices" },
+    { "OFF face of degree 2e9", "degree.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2000000000 0 1 2\n",
+      PE::ERROR_MALFORMED_FILE, 6, "declares 2000000000 vertices" },
+    { "OFF counts on the header line, truncated", "trunc.off", "OFF 4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n",
+      PE::ERROR_MALFORMED_FILE, 1, "only 5 lines follow" },
+    { "PLY declaring 10^12 vertices", "huge.ply", "ply\nformat ascii 1.0\nelement vertex 1000000000000\nproperty float x\n"
+      "property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n",
+      PE::ERROR_MALFORMED_FILE, 3, "declares 1000000000000 instances" },
+    { "binary PLY declaring 4e9 faces", "huge_binary.ply", binary_ply(false, tri3, {{0, 1, 2}}, 4000000000ull),
+      PE::ERROR_MALFORMED_FILE, 7, "declares 4000000000 instances" },
+    { "binary PLY face list of 255 entries", "list_binary.ply", binary_ply(false, tri3, {}, 1) + std::string(1, char(255)) + std::string(12, '\0'),
+      PE::ERROR_MALFORMED_FILE, 0, "byte offset" },
+    { "binary STL declaring 10^9 triangles", "huge.stl", binary_stl({{{0, 0, 0, 1, 0, 0, 0, 1, 0}}}, 1000000000u),
+      PE::ERROR_MALFORMED_FILE, 0, "declares 1000000000 triangles" },
+    // non-triangular faces: the same code in every format
+    { "OFF quad", "quad.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n", PE::ERROR_NON_TRIANGULAR_MESH, 7, "4 vertices" },
+    { "OBJ quad", "quad.obj", obj_head + "f 1 2 4 3\n", PE::ERROR_NON_TRIANGULAR_MESH, 5, "4 corners" },
+    { "PLY quad", "quad.ply", ply_head + "4 0 1 3 2\n3 0 1 2\n", PE::ERROR_NON_TRIANGULAR_MESH, 14, "4 vertices" },
+    { "binary PLY quad", "quad_binary.ply", binary_ply(true, tri3, {{0, 1, 2, 0}}, 1), PE::ERROR_NON_TRIANGULAR_MESH, 0, "byte offset" },
+    { "STL facet with 4 vertices", "quad.stl", "solid q\n  facet normal 0 0 1\n    outer loop\n      vertex 0 0 0\n      vertex 1 0 0\n"
+      "      vertex 1 1 0\n      vertex 0 1 0\n    endloop\n  endfacet\nendsolid q\n", PE::ERROR_NON_TRIANGULAR_MESH, 7, "more than 3" },
+    // non-finite coordinates
+    { "OFF nan", "nan.off", "OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n", PE::ERROR_NON_FINITE_COORDINATES, 4, "nan" },
+    { "OFF 1e400", "overflow.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 1e400\n3 0 1 2\n", PE::ERROR_NON_FINITE_COORDINATES, 5, "1e400" },
+    { "OBJ inf", "inf.obj", "v 0 0 0\nv 1 -inf 0\nv 0 1 0\nf 1 2 3\n", PE::ERROR_NON_FINITE_COORDINATES, 2, "inf" },
+    { "PLY inf", "inf.ply", ply_head.substr(0, ply_head.size() - 6) + "inf 1 0\n3 0 1 2\n3 1 3 2\n", PE::ERROR_NON_FINITE_COORDINATES, 13, "inf" },
+    { "binary PLY nan", "nan_binary.ply", binary_ply(false, {{{0, 0, 0}}, {{1, nan, 0}}, {{0, 1, 0}}}, {{0, 1, 2}}, 1),
+      PE::ERROR_NON_FINITE_COORDINATES, 0, "byte offset" },
+    { "STL nan", "nan.stl", "solid n\n  facet normal 0 0 1\n    outer loop\n      vertex 0 0 0\n      vertex 1 NaN 0\n"
+      "      vertex 0 1 0\n    endloop\n  endfacet\nendsolid n\n", PE::ERROR_NON_FINITE_COORDINATES, 5, "NaN" },
+    { "binary STL inf", "inf.stl", binary_stl({{{0, 0, 0, 1, 0, 0, 0, std::numeric_limits<float>::infinity(), 0}}}, 1),
+      PE::ERROR_NON_FINITE_COORDINATES, 0, "byte offset 124" },
+    // malformed content, with its line
+    { "OFF index out of range", "range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", PE::ERROR_MALFORMED_FILE, 6, "out of range" },
+    { "OFF negative index", "negative.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", PE::ERROR_MALFORMED_FILE, 6, "'-1'" },
+    { "OFF vertex with 2 coordinates", "short.off", "OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n", PE::ERROR_MALFORMED_FILE, 4, "3 coordinates" },
+    { "OFF not a number", "nan2.off", "OFF\n# comment\n3 1 0\n0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n", PE::ERROR_MALFORMED_FILE, 5, "'x'" },
+    { "OFF bad counts", "counts.off", "OFF\n3 one 0\n", PE::ERROR_MALFORMED_FILE, 2, "counts" },
+    { "OFF 4D", "4d.off", "4OFF\n3 1 0\n", PE::ERROR_MALFORMED_FILE, 1, "unsupported" },
+    { "OBJ index out of range", "range.obj", obj_head + "f 1 2 3\nf 2 5 3\n", PE::ERROR_MALFORMED_FILE, 6, "out of range" },
+    { "OBJ unsupported statement", "stmt.obj", obj_head + "l 1 2\n", PE::ERROR_MALFORMED_FILE, 5, "unsupported" },
+    { "PLY index out of range", "range.ply", ply_head + "3 0 1 2\n3 1 4 2\n", PE::ERROR_MALFORMED_FILE, 15, "out of range" },
+    { "PLY list longer than its line", "list.ply", ply_head + "3 0 1 2\n200 1 3 2\n", PE::ERROR_MALFORMED_FILE, 15, "declares 200 values" },
+    { "PLY too many values", "values.ply", ply_head + "3 0 1 2 7\n3 1 3 2\n", PE::ERROR_MALFORMED_FILE, 14, "too many" },
+    { "PLY without end_header", "header.ply", "ply\nformat ascii 1.0\nelement vertex 3\n", PE::ERROR_MALFORMED_FILE, 3, "end_header" },
+    { "STL vertex outside a loop", "loop.stl", "solid s\nvertex 0 0 0\nendsolid s\n", PE::ERROR_MALFORMED_FILE, 2, "unexpected" },
+    { "STL truncated", "trunc.stl", "solid s\n  facet normal 0 0 1\n    outer loop\n      vertex 0 0 0\n      vertex 1 0 0\n",
+      PE::ERROR_MALFORMED_FILE, 5, "ends inside a facet" },
+    // not a manifold polygon mesh
+    { "repeated vertex", "repeated.off", off_head + "3 0 1 1\n3 1 3 2\n", PE::ERROR_NON_MANIFOLD, 7, "repeated vertex" },
+    { "duplicate face", "dup.off", off_head + "3 0 1 2\n3 2 1 0\n", PE::ERROR_NON_MANIFOLD, 8, "duplicate face" },
+    { "edge of three faces", "edge3.off", "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n1 1 1\n3 0 1 2\n3 1 3 2\n3 1 4 2\n",
+      PE::ERROR_NON_MANIFOLD, 10, "non-manifold edge" },
+    { "two fans at a vertex", "bowtie.ply", "ply\nformat ascii 1.0\nelement vertex 5\nproperty double x\nproperty double y\n"
+      "property double z\nelement face 2\nproperty list uchar uint vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n-1 0 0\n0 -1 0\n"
+      "3 0 1 2\n3 0 3 4\n", PE::ERROR_NON_MANIFOLD, 10, "non-manifold vertex 1" },
+    { "Moebius strip (cannot be oriented)", "moebius.obj",
+      "v 1 0 0\nv 0.3 0.95 0.2\nv -0.8 0.6 -0.2\nv -0.8 -0.6 0.2\nv 0.3 -0.95 -0.2\n"
+      "f 1 2 3\nf 2 3 4\nf 3 4 5\nf 4 5 1\nf 5 1 2\n", PE::ERROR_NON_MANIFOLD, 7, "cannot be fixed" },
+    // empty
+    { "empty OFF", "empty.off", "", PE::ERROR_EMPTY_MESH, 0, "empty" },
+    { "OFF without faces", "nofaces.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n", PE::ERROR_EMPTY_MESH, 0, "no face" },
+    { "OBJ comments only", "comments.obj", "# nothing\n\n", PE::ERROR_EMPTY_MESH, 0, "no face" },
+    { "PLY without faces", "points.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+      "property float z\nend_header\n0 0 0\n", PE::ERROR_EMPTY_MESH, 0, "no face" },
+    { "empty STL", "empty.stl", "", PE::ERROR_EMPTY_MESH, 0, "empty" },
+    { "unknown extension", "mesh.xyz", "OFF\n", PE::ERROR_MALFORMED_FILE, 0, "unknown format" },
+  };
+  for(const Case& c : cases)
+  {
+    const std::string fname = dir.file(c.file);
+    write_bytes(fname, c.text);
+    Mesh m;
+    PE::IO::Read_result r;
+    try { r = PE::IO::read_polygon_mesh(fname, m); }
+    catch(...) { CHECK(false, c.name << ": exception escaped"); }
+    CHECK(r.status == c.code && r.line == c.line && r.message.find(c.message) != std::string::npos,
+          c.name << ": expected " << PE::get_error_name(c.code) << " line " << c.line << " '" << c.message << "', got " << describe(r, 0));
+    CHECK(num_vertices(m) == 0 && num_faces(m) == 0 && !r, c.name << ": mesh not empty after a failure");
+  }
+  std::cout << "read_polygon_mesh: malformed files (" << cases.size() << "): OK" << std::endl;
+
+  // files the system cannot read
+  {
+    Mesh m;
+    PE::IO::Read_result r = PE::IO::read_polygon_mesh(dir.file("no_such_file.off"), m);
+    CHECK(r.status == PE::ERROR_CANNOT_READ_FILE && r.message.find(std::strerror(ENOENT)) != std::string::npos, describe(r, 0));
+    std::filesystem::create_directory(dir.file("folder.off"));
+    r = PE::IO::read_polygon_mesh(dir.file("folder.off"), m);
+    CHECK(r.status == PE::ERROR_CANNOT_READ_FILE && r.message.find(std::strerror(EISDIR)) != std::string::npos, describe(r, 0));
+    // the OBJ reader with uv refuses a folder as well (it used to read it as an empty file)
+    UV_map uvm = m.add_property_map<vertex_descriptor, Point_2>("h:uv").first;
+    std::filesystem::create_directory(dir.file("folder.obj"));
+    r = PE::IO::read_OBJ_with_uv(dir.file("folder.obj"), m, uvm);
+    CHECK(r.status == PE::ERROR_CANNOT_READ_FILE && r.message.find(std::strerror(EISDIR)) != std::string::npos, describe(r, 0));
+    // a mesh that is not empty on entry
+    write_bytes(dir.file("ok.off"), "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    Mesh full;
+    full.add_vertex(Point_3(0, 0, 0));
+    r = PE::IO::read_polygon_mesh(dir.file("ok.off"), full);
+    CHECK(r.status == PE::ERROR_WRONG_PARAMETER && num_vertices(full) == 1, describe(r, 0));
+  }
+  std::cout << "read_polygon_mesh: unreadable files: OK" << std::endl;
+  return EXIT_SUCCESS;
+}
+
+// The bounded memory: with the address space limited to 1 GiB more than what the process uses,
+// reading files that declare 10^9 elements still gives the error of the declaration (a reader
+// trusting the declaration runs out of memory: "out of memory", or is killed).
+int test_read_polygon_mesh_memory_bound()
+{
+#if defined(__SANITIZE_ADDRESS__)
+  std::cout << "read_polygon_mesh: address-space limit skipped under AddressSanitizer" << std::endl;
+  return EXIT_SUCCESS;
+#else
+  Temp_dir dir("memory");
+  write_bytes(dir.file("h.off"), "OFF\n1000000000 1000000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  write_bytes(dir.file("d.off"), "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2000000000 0 1 2\n");
+  write_bytes(dir.file("h.stl"), binary_stl({{{0, 0, 0, 1, 0, 0, 0, 1, 0}}}, 4000000000u));
+  std::size_t vm = 0; // current virtual size, in bytes
+  {
+    std::ifstream st("/proc/self/statm");
+    st >> vm;
+    vm *= std::size_t(::sysconf(_SC_PAGESIZE));
+  }
+  struct rlimit old;
+  CHECK(::getrlimit(RLIMIT_AS, &old) == 0, "getrlimit");
+  struct rlimit lim = old;
+  lim.rlim_cur = rlim_t(vm) + (rlim_t(1) << 30);
+  if(old.rlim_cur != RLIM_INFINITY && old.rlim_cur < lim.rlim_cur) lim.rlim_cur = old.rlim_cur;
+  CHECK(::setrlimit(RLIMIT_AS, &lim) == 0, "setrlimit");
+  PE::IO::Read_result r[3];
+  const char* names[3] = { "h.off", "d.off", "h.stl" };
+  for(int k = 0; k < 3; ++k)
+  {
+    Mesh m;
+    r[k] = PE::IO::read_polygon_mesh(dir.file(names[k]), m);
+  }
+  ::setrlimit(RLIMIT_AS, &old);
+  CHECK(r[0].status == PE::ERROR_MALFORMED_FILE && r[0].line == 2, describe(r[0], 0));
+  CHECK(r[1].status == PE::ERROR_MALFORMED_FILE && r[1].line == 6, describe(r[1], 0));
+  CHECK(r[2].status == PE::ERROR_MALFORMED_FILE && r[2].message.find("4000000000") != std::string::npos, describe(r[2], 0));
+  std::cout << "read_polygon_mesh: huge declared counts under a 1 GiB address-space margin: OK" << std::endl;
+  return EXIT_SUCCESS;
+#endif
+}
+
+// n x n grid, z = a bump: the same mesh written by CGAL's writers in every format is read back
+void make_bump_grid(Mesh& m, int n)
+{
+  std::vector<vertex_descriptor> v;
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i)
+    {
+      const double x = i / double(n - 1), y = j / double(n - 1);
+      v.push_back(m.add_vertex(Point_3(x, y, 0.25 * std::sin(3 * x) * std::cos(2 * y))));
+    }
+  for(int j = 0; j + 1 < n; ++j)
+    for(int i = 0; i + 1 < n; ++i)
+    {
+      const vertex_descriptor a = v[j * n + i], b = v[j * n + i + 1], c = v[(j + 1) * n + i + 1], d = v[(j + 1) * n + i];
+      m.add_face(a, b, c);
+      m.add_face(a, c, d);
+    }
+}
+
+int test_read_polygon_mesh_formats(const std::string& data_dir)
+{
+  Temp_dir dir("formats");
+  Mesh g;
+  make_bump_grid(g, 9);
+  struct Written { std::string file; bool exact; };
+  const std::vector<Written> written = { {"g.off", true}, {"g.obj", true}, {"g_ascii.ply", true}, {"g_binary.ply", true},
+                                         {"g_ascii.stl", false}, {"g_binary.STL", false} };
+  CHECK(CGAL::IO::write_OFF(dir.file("g.off"), g, CGAL::parameters::stream_precision(17)), "write off");
+  CHECK(CGAL::IO::write_OBJ(dir.file("g.obj"), g, CGAL::parameters::stream_precision(17)), "write obj");
+  CHECK(CGAL::IO::write_PLY(dir.file("g_ascii.ply"), g, CGAL::parameters::use_binary_mode(false).stream_precision(17)), "write ply");
+  CHECK(CGAL::IO::write_PLY(dir.file("g_binary.ply"), g, CGAL::parameters::use_binary_mode(true)), "write binary ply");
+  CHECK(CGAL::IO::write_STL(dir.file("g_ascii.stl"), g, CGAL::parameters::use_binary_mode(false)), "write stl");
+  CHECK(CGAL::IO::write_STL(dir.file("g_binary.STL"), g, CGAL::parameters::use_binary_mode(true)), "write binary stl");
+  for(const Written& w : written)
+  {
+    Mesh m;
+    PE::IO::Read_result r = PE::IO::read_polygon_mesh(dir.file(w.file), m);
+    CHECK(r.status == PE::OK && r.line == 0 && r.message.empty(), w.file << ": " << describe(r, 0));
+    CHECK(num_vertices(m) == num_vertices(g) && num_faces(m) == num_faces(g) && r.number_of_faces == num_faces(g),
+          w.file << ": " << num_vertices(m) << " vertices, " << num_faces(m) << " faces");
+    CHECK(CGAL::is_valid_polygon_mesh(m) && CGAL::is_triangle_mesh(m) && !r.reoriented, w.file);
+    if(w.exact)
+    {
+      auto it = vertices(g).begin();
+      for(vertex_descriptor v : vertices(m))
+      {
+        CHECK(m.point(v) == g.point(*it), w.file << ": coordinates");
+        ++it;
+      }
+      CHECK(face_list(m, 0) == face_list(g, 0), w.file << ": faces");
+    }
+  }
+  // another FaceGraph: Polyhedron_3
+  {
+    Polyhedron P;
+    PE::IO::Read_result r = PE::IO::read_polygon_mesh(dir.file("g_binary.ply"), P);
+    CHECK(r && num_vertices(P) == num_vertices(g) && num_faces(P) == num_faces(g) && CGAL::is_valid_polygon_mesh(P), describe(r, 0));
+    Polyhedron Q;
+    r = PE::IO::read_polygon_mesh(dir.file("g.obj"), Q, CGAL::parameters::vertex_point_map(get(CGAL::vertex_point, Q)));
+    CHECK(r && num_faces(Q) == num_faces(g), describe(r, 0));
+  }
+  // unreferenced vertices are dropped in every format, as read_OBJ_with_uv() drops unused vt
+  {
+    const std::vector<std::pair<std::string, std::string> > files = {
+      { "u.off", "OFF\n4 1 0\n9 9 9\n0 0 0\n1 0 0\n0 1 0\n3 1 2 3\n" },
+      { "u.obj", "v 9 9 9\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 2 3 4\n" },
+      { "u.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                 "element face 1\nproperty list uchar int vertex_indices\nend_header\n9 9 9\n0 0 0\n1 0 0\n0 1 0\n3 1 2 3\n" } };
+    for(const auto& f : files)
+    {
+      write_bytes(dir.file(f.first), f.second);
+      Mesh m;
+      PE::IO::Read_result r = PE::IO::read_polygon_mesh(dir.file(f.first), m);
+      CHECK(r && num_vertices(m) == 3 && r.number_of_positions == 4 && r.number_of_unreferenced_vertices == 1, f.first << ": " << describe(r, 0));
+      CHECK(m.point(*vertices(m).begin()) == Point_3(0, 0, 0), f.first << ": order");
+    }
+    Mesh m;
+    UV_map uvm = m.add_property_map<vertex_descriptor, Point_2>("h:uv").first;
+    std::istringstream in("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 9 9\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/2 2/3 3/4\n");
+    PE::IO::Read_result r = PE::IO::read_OBJ_with_uv(in, m, uvm);
+    CHECK(r && num_vertices(m) == 3 && r.number_of_unreferenced_vertices == 1, describe(r, 0));
+  }
+  // variants: OFF keywords, comments, colours; OBJ corner forms; a face reversed (reoriented)
+  {
+    const std::vector<std::pair<std::string, std::string> > files = {
+      { "c.off", "COFF\n# colours\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n3 0 1 2 128 128 128\n" },
+      { "n.off", "3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n" },
+      { "forms.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvn 0 0 1\nf 1/1 2/1/1 3//1\nf 2 -1 -2\n" },
+      { "crlf.ply", "ply\r\nformat ascii 1.0\r\ncomment x\r\nelement vertex 3\r\nproperty double x\r\nproperty double y\r\n"
+                    "property double z\r\nproperty uchar red\r\nelement face 1\r\nproperty list uint8 uint32 vertex_index\r\n"
+                    "property int flags\r\nend_header\r\n0 0 0 1\r\n1 0 0 2\r\n0 1 0 3\r\n3 0 1 2 7\r\n" },
+      { "two.stl", "solid a\n  facet normal nan nan nan\n    outer loop\n      vertex 0 0 0\n      vertex 1 0 0\n      vertex 0 1 0\n"
+                   "    endloop\n  endfacet\nendsolid a\nsolid b\n  facet normal 0 0 1\n    outer loop\n      vertex 1 0 0\n"
+                   "      vertex 1 1 0\n      vertex 0 1 0\n    endloop\n  endfacet\nendsolid b\n" } };
+    const std::size_t expected_faces[] = { 1, 1, 2, 1, 2 };
+    for(std::size_t k = 0; k < files.size(); ++k)
+    {
+      write_bytes(dir.file(files[k].first), files[k].second);
+      Mesh m;
+      PE::IO::Read_result r = PE::IO::read_polygon_mesh(dir.file(files[k].first), m);
+      CHECK(r && num_faces(m) == expected_faces[k], files[k].first << ": " << describe(r, 0));
+    }
+    write_bytes(dir.file("reversed.off"), "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 1 2 3\n");
+    Mesh m;
+    PE::IO::Read_result r = PE::IO::read_polygon_mesh(dir.file("reversed.off"), m);
+    CHECK(r && r.reoriented && num_faces(m) == 2 && CGAL::is_valid_polygon_mesh(m), describe(r, 0));
+  }
+  std::cout << "read_polygon_mesh: formats (OFF, OBJ, PLY ascii and binary, STL ascii and binary): OK" << std::endl;
+
+  // libcgal-demo's meshes: the same meshes as CGAL's reader where both accept a triangle mesh
+  if(!data_dir.empty() && std::filesystem::is_directory(data_dir + "/meshes"))
+  {
+    std::size_t n_same = 0, n_refused = 0;
+    for(const auto& e : std::filesystem::directory_iterator(data_dir + "/meshes"))
+    {
+      const std::string f = e.path().string();
+      const std::string ext = e.path().extension().string();
+      if(ext != ".off" && ext != ".ply" && ext != ".stl" && ext != ".obj") continue;
+      if(e.file_size() > (std::uintmax_t(20) << 20)) continue;
+      Mesh a, b;
+      const PE::IO::Read_result r = PE::IO::read_polygon_mesh(f, a);
+      bool ok = false;
+      try { ok = CGAL::IO::read_polygon_mesh(f, b); } catch(...) { ok = false; }
+      if(r)
+      {
+        CHECK(CGAL::is_valid_polygon_mesh(a) && CGAL::is_triangle_mesh(a), f);
+        if(ok && !r.reoriented && CGAL::is_triangle_mesh(b))
+        {
+          CHECK(num_faces(a) == num_faces(b) && num_vertices(a) + r.number_of_unreferenced_vertices == num_vertices(b), f);
+          ++n_same;
+        }
+      }
+      else
+      {
+        CHECK(!r.message.empty() && r.status != PE::ERROR_CANNOT_READ_FILE, f << ": " << describe(r, 0));
+        if(ok && !CGAL::is_triangle_mesh(b)) CHECK(r.status == PE::ERROR_NON_TRIANGULAR_MESH, f << ": " << describe(r, 0));
+        ++n_refused;
+      }
+    }
+    Mesh q;
+    const PE::IO::Read_result r = PE::IO::read_polygon_mesh(data_dir + "/meshes/cube_quad.off", q);
+    CHECK(r.status == PE::ERROR_NON_TRIANGULAR_MESH && r.line == 11, describe(r, 0));
+    std::cout << "read_polygon_mesh: libcgal-demo meshes: OK (" << n_same << " identical to CGAL's reader, "
+              << n_refused << " refused with a reason)" << std::endl;
+  }
+  return EXIT_SUCCESS;
+}
+
+// Truncated and corrupted files of every format: every call returns, a failure leaves the mesh
+// empty with a reason and a line within the file, a success is a valid triangle mesh.
+int test_read_polygon_mesh_fuzz()
+{
+  Mesh g;
+  make_bump_grid(g, 4);
+  Temp_dir dir("fuzz");
+  CHECK(CGAL::IO::write_OFF(dir.file("g.off"), g, CGAL::parameters::stream_precision(17)), "off");
+  CHECK(CGAL::IO::write_OBJ(dir.file("g.obj"), g, CGAL::parameters::stream_precision(17)), "obj");
+  CHECK(CGAL::IO::write_PLY(dir.file("a.ply"), g, CGAL::parameters::use_binary_mode(false).stream_precision(17)), "ply");
+  CHECK(CGAL::IO::write_PLY(dir.file("b.ply"), g, CGAL::parameters::use_binary_mode(true)), "binary ply");
+  CHECK(CGAL::IO::write_STL(dir.file("a.stl"), g, CGAL::parameters::use_binary_mode(false)), "stl");
+  CHECK(CGAL::IO::write_STL(dir.file("b.stl"), g, CGAL::parameters::use_binary_mode(true)), "binary stl");
+  const std::vector<std::pair<std::string, std::string> > inputs = {
+    { "off", read_bytes(dir.file("g.off")) }, { "obj", read_bytes(dir.file("g.obj")) }, { "ply", read_bytes(dir.file("a.ply")) },
+    { "ply", read_bytes(dir.file("b.ply")) }, { "stl", read_bytes(dir.file("a.stl")) }, { "stl", read_bytes(dir.file("b.stl")) } };
+  std::mt19937 rng(4321);
+  std::size_t n_ok = 0, n_fail = 0;
+  auto check = [&](const std::string& format, const std::string& text) -> int {
+    Mesh m;
+    std::istringstream in(text);
+    PE::IO::Read_result r;
+    try { r = PE::IO::read_polygon_mesh(in, format, m); }
+    catch(...) { CHECK(false, "exception escaped"); }
+    std::size_t nlines = 1;
+    for(char c : text) nlines += (c == '\n');
+    if(r)
+    {
+      ++n_ok;
+      CHECK(CGAL::is_valid_polygon_mesh(m) && CGAL::is_triangle_mesh(m) && num_faces(m) == r.number_of_faces, "invalid mesh accepted");
+      for(vertex_descriptor v : vertices(m)) CHECK(std::isfinite(m.point(v).x()) && std::isfinite(m.point(v).z()), "non-finite accepted");
+    }
+    else
+    {
+      ++n_fail;
+      CHECK(num_vertices(m) == 0 && !r.message.empty() && r.line <= nlines, format << ": " << describe(r, 0));
+      CHECK(r.status == PE::ERROR_MALFORMED_FILE || r.status == PE::ERROR_NON_TRIANGULAR_MESH || r.status == PE::ERROR_NON_MANIFOLD
+            || r.status == PE::ERROR_NON_FINITE_COORDINATES || r.status == PE::ERROR_EMPTY_MESH, format << ": " << describe(r, 0));
+    }
+    return EXIT_SUCCESS;
+  };
+  for(const auto& input : inputs)
+  {
+    const std::string& text = input.second;
+    const std::size_t step = (std::max)(std::size_t(1), text.size() / 300);
+    for(std::size_t k = 0; k <= text.size(); k += step) RUN(check(input.first, text.substr(0, k)));
+    const std::string alphabet = "0123456789 \n-.e#xnaif";
+    std::uniform_int_distribution<std::size_t> pos(0, text.size() - 1);
+    std::uniform_int_distribution<int> byte(0, 255), pick(0, int(alphabet.size()) + 2);
+    for(int k = 0; k < 400; ++k)
+    {
+      std::string t = text;
+      for(int c = 0; c < 1 + k % 3; ++c)
+      {
+        const int a = pick(rng);
+        t[pos(rng)] = (a < int(alphabet.size())) ? alphabet[std::size_t(a)] : char(byte(rng));
+      }
+      RUN(check(input.first, t));
+    }
+  }
+  std::cout << "read_polygon_mesh: fuzzing (truncations and corruptions of 6 files): OK (" << n_ok << " accepted, "
+            << n_fail << " rejected)" << std::endl;
+  return EXIT_SUCCESS;
+}
+
+// The bad inputs of test/Progressive_embedding/data (also used by the tool's tests): code and line.
+int test_data_files()
+{
+  const std::filesystem::path data = std::filesystem::path(__FILE__).parent_path() / "data";
+  if(!std::filesystem::is_directory(data))
+  {
+    std::cout << "read_polygon_mesh: " << data << " not found, data files skipped" << std::endl;
+    return EXIT_SUCCESS;
+  }
+  struct Case { const char* file; PE::Error_code code; std::size_t line; };
+  const Case cases[] = {
+    { "huge_counts.off", PE::ERROR_MALFORMED_FILE, 2 },
+    { "huge_face_degree.off", PE::ERROR_MALFORMED_FILE, 6 },
+    { "quad.off", PE::ERROR_NON_TRIANGULAR_MESH, 7 },
+    { "quad.obj", PE::ERROR_NON_TRIANGULAR_MESH, 5 },
+    { "quad.ply", PE::ERROR_NON_TRIANGULAR_MESH, 14 },
+    { "quad.stl", PE::ERROR_NON_TRIANGULAR_MESH, 7 },
+    { "nan.off", PE::ERROR_NON_FINITE_COORDINATES, 4 },
+    { "non_manifold_edge.off", PE::ERROR_NON_MANIFOLD, 10 },
+    { "duplicate_face.off", PE::ERROR_NON_MANIFOLD, 7 },
+    { "index_out_of_range.ply", PE::ERROR_MALFORMED_FILE, 13 },
+    { "malformed.obj", PE::ERROR_MALFORMED_FILE, 6 },
+  };
+  for(const Case& c : cases)
+  {
+    Mesh m;
+    const PE::IO::Read_result r = PE::IO::read_polygon_mesh((data / c.file).string(), m);
+    CHECK(r.status == c.code && r.line == c.line, c.file << ": " << describe(r, 0));
+  }
+  std::cout << "read_polygon_mesh: data files (" << sizeof(cases) / sizeof(cases[0]) << "): OK" << std::endl;
+  return EXIT_SUCCESS;
+}
+
+// ---------------------------------------------------------------------------
 // SVG
 
 // n x n grid on [0,1]^2, counterclockwise triangles, uv = (x, y)
@@ -610,11 +1136,18 @@ int test_svg()
   CHECK(svg.find(">flipped: " + std::to_string(neg) + "</text>") != std::string::npos, "flipped count");
   CHECK(svg.find(">degenerate: " + std::to_string(zero) + "</text>") != std::string::npos, "degenerate count");
   CHECK(svg.find(">faces: " + std::to_string(num_faces(m)) + "</text>") != std::string::npos, "face count");
-  std::size_t n_polygons = 0, n_circles = 0;
-  for(std::size_t k = svg.find("<polygon"); k != std::string::npos; k = svg.find("<polygon", k + 1)) ++n_polygons;
-  for(std::size_t k = svg.find("<circle"); k != std::string::npos; k = svg.find("<circle", k + 1)) ++n_circles;
-  CHECK(n_polygons == num_faces(m), "one polygon per face: " << n_polygons);
-  CHECK(n_circles == neg + zero, "markers");
+  // every face is one closed subpath of the face group; one marker per flipped or degenerate face
+  const std::size_t g0 = svg.find("<g id=\"pe-faces\">"), g1 = svg.find("</g>", g0);
+  CHECK(g0 != std::string::npos && g1 != std::string::npos, "no face group");
+  const std::string face_group = svg.substr(g0, g1 - g0);
+  std::size_t n_closed = 0;
+  for(char c : face_group) n_closed += (c == 'Z');
+  CHECK(n_closed == num_faces(m), "one subpath per face: " << n_closed);
+  CHECK(svg.find("<polygon") == std::string::npos && svg.find("<circle") == std::string::npos, "one element per face");
+  std::size_t n_flipped_markers = 0, n_degenerate_markers = 0;
+  for(std::size_t k = svg.find("a6 6 0 1 0 12 0"); k != std::string::npos; k = svg.find("a6 6 0 1 0 12 0", k + 1)) ++n_flipped_markers;
+  for(std::size_t k = svg.find("a9 9 0 1 0 18 0"); k != std::string::npos; k = svg.find("a9 9 0 1 0 18 0", k + 1)) ++n_degenerate_markers;
+  CHECK(n_flipped_markers == neg && n_degenerate_markers == zero, "markers: " << n_flipped_markers << ", " << n_degenerate_markers);
   CHECK(svg.find("caf\xc3\xa9") != std::string::npos && svg.find("&lt;7x7&gt; &amp; &quot;dragged&quot;") != std::string::npos,
         "title");
   bool checked = false;
@@ -631,7 +1164,7 @@ int test_svg()
   uvm[v22] = Point_2(std::numeric_limits<double>::infinity(), 0);
   std::ostringstream out3;
   CHECK(PE::IO::write_SVG(out3, m, uvm) == PE::OK, "svg non-finite");
-  CHECK(out3.str().find(">non-finite: 6</text>") != std::string::npos, "non-finite count");
+  CHECK(out3.str().find(">non-finite vertices: 1</text>") != std::string::npos, "non-finite count");
   CHECK(xml_is_valid(out3.str(), checked), "invalid XML (non-finite)");
 
   // errors
@@ -655,19 +1188,291 @@ int test_svg()
   return EXIT_SUCCESS;
 }
 
+// ---------------------------------------------------------------------------
+// Writers: a failed write never leaves a partial file
+
+bool is_char_device(const std::string& f) { struct stat st; return ::stat(f.c_str(), &st) == 0 && S_ISCHR(st.st_mode); }
+bool is_folder(const std::string& f) { struct stat st; return ::stat(f.c_str(), &st) == 0 && S_ISDIR(st.st_mode); }
+bool exists(const std::string& f) { struct stat st; return ::lstat(f.c_str(), &st) == 0; }
+
+// the names in the folder, sorted
+std::vector<std::string> listing(const Temp_dir& dir)
+{
+  std::vector<std::string> names;
+  for(const auto& e : std::filesystem::directory_iterator(dir.path)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+int test_atomic_writes()
+{
+  Temp_dir dir("write");
+  Mesh m;
+  UV_map uvm = m.add_property_map<vertex_descriptor, Point_2>("h:uv").first;
+  make_grid(m, uvm, 120); // an OBJ of about 1 MB, an SVG of about 1.5 MB
+  PE::IO::SVG_options so;
+  so.title = "grid";
+  std::ostringstream obj_ref, svg_ref;
+  CHECK(PE::IO::write_OBJ_with_uv(obj_ref, m, uvm) == PE::OK, "obj to a stream");
+  CHECK(PE::IO::write_SVG(svg_ref, m, uvm, so) == PE::OK, "svg to a stream");
+
+  // success: the same bytes as the stream writers; an existing file keeps its mode; a symbolic
+  // link is kept and its target replaced; nothing else is left in the folder
+  const std::string obj = dir.file("out.obj"), svg = dir.file("out.svg");
+  write_bytes(obj, "old content\n");
+  CHECK(::chmod(obj.c_str(), 0640) == 0, "chmod");
+  CHECK(PE::IO::write_OBJ_with_uv(obj, m, uvm) == PE::OK, "write obj");
+  CHECK(read_bytes(obj) == obj_ref.str(), "file and stream outputs differ");
+  struct stat st;
+  CHECK(::stat(obj.c_str(), &st) == 0 && (st.st_mode & 07777) == 0640, "mode not kept: " << std::oct << (st.st_mode & 07777));
+  CHECK(PE::IO::write_SVG(svg, m, uvm, so) == PE::OK && read_bytes(svg) == svg_ref.str(), "write svg");
+  CHECK(::symlink("out.svg", dir.file("link.svg").c_str()) == 0, "symlink");
+  write_bytes(svg, "old");
+  CHECK(PE::IO::write_SVG(dir.file("link.svg"), m, uvm, "grid") == PE::OK, "write through a link");
+  CHECK(::lstat(dir.file("link.svg").c_str(), &st) == 0 && S_ISLNK(st.st_mode) && read_bytes(svg) == svg_ref.str(), "link replaced");
+  CHECK(listing(dir) == std::vector<std::string>({"link.svg", "out.obj", "out.svg"}), "unexpected files");
+
+  // devices are written in place and stay devices; a full device is an error
+  CHECK(PE::IO::write_OBJ_with_uv("/dev/null", m, uvm) == PE::OK && is_char_device("/dev/null"), "/dev/null");
+  CHECK(PE::IO::write_SVG("/dev/null", m, uvm, so) == PE::OK && is_char_device("/dev/null"), "/dev/null svg");
+  if(is_char_device("/dev/full"))
+  {
+    CHECK(PE::IO::write_OBJ_with_uv("/dev/full", m, uvm) == PE::ERROR_CANNOT_WRITE_FILE && is_char_device("/dev/full"), "/dev/full");
+    CHECK(PE::IO::write_SVG("/dev/full", m, uvm, so) == PE::ERROR_CANNOT_WRITE_FILE && is_char_device("/dev/full"), "/dev/full svg");
+  }
+
+  // a folder, a missing folder
+  std::filesystem::create_directory(dir.file("folder.obj"));
+  CHECK(PE::IO::write_OBJ_with_uv(dir.file("folder.obj"), m, uvm) == PE::ERROR_CANNOT_WRITE_FILE && is_folder(dir.file("folder.obj")), "folder");
+  CHECK(PE::IO::write_SVG(dir.file("folder.obj"), m, uvm, so) == PE::ERROR_CANNOT_WRITE_FILE && is_folder(dir.file("folder.obj")), "folder svg");
+  CHECK(PE::IO::write_OBJ_with_uv(dir.file("no_such_folder/x.obj"), m, uvm) == PE::ERROR_CANNOT_WRITE_FILE, "missing folder");
+
+  // a file size limit (SIGXFSZ ignored, so that write() fails with EFBIG): errors, the old
+  // content intact, the new names absent, no temporary left
+  write_bytes(obj, "old content\n");
+  void (*old_handler)(int) = std::signal(SIGXFSZ, SIG_IGN);
+  struct rlimit old_limit;
+  CHECK(::getrlimit(RLIMIT_FSIZE, &old_limit) == 0, "getrlimit");
+  struct rlimit lim = old_limit;
+  lim.rlim_cur = 64 * 1024;
+  CHECK(::setrlimit(RLIMIT_FSIZE, &lim) == 0, "setrlimit");
+  const PE::Error_code e_old = PE::IO::write_OBJ_with_uv(obj, m, uvm);
+  const PE::Error_code e_new = PE::IO::write_OBJ_with_uv(dir.file("new.obj"), m, uvm);
+  const PE::Error_code e_svg = PE::IO::write_SVG(dir.file("new.svg"), m, uvm, so);
+  const PE::Error_code e_svg_old = PE::IO::write_SVG(svg, m, uvm, "grid");
+  ::setrlimit(RLIMIT_FSIZE, &old_limit);
+  std::signal(SIGXFSZ, old_handler);
+  CHECK(e_old == PE::ERROR_CANNOT_WRITE_FILE && read_bytes(obj) == "old content\n", "existing target: " << PE::get_error_name(e_old));
+  CHECK(e_new == PE::ERROR_CANNOT_WRITE_FILE && !exists(dir.file("new.obj")), "new target: " << PE::get_error_name(e_new));
+  CHECK(e_svg == PE::ERROR_CANNOT_WRITE_FILE && !exists(dir.file("new.svg")), "new svg: " << PE::get_error_name(e_svg));
+  CHECK(e_svg_old == PE::ERROR_CANNOT_WRITE_FILE && read_bytes(svg) == svg_ref.str(), "existing svg: " << PE::get_error_name(e_svg_old));
+  CHECK(listing(dir) == std::vector<std::string>({"folder.obj", "link.svg", "out.obj", "out.svg"}), "temporary files left");
+
+  // data errors leave nothing either
+  uvm[*vertices(m).begin()] = Point_2(std::numeric_limits<double>::quiet_NaN(), 0);
+  CHECK(PE::IO::write_OBJ_with_uv(dir.file("nan.obj"), m, uvm) == PE::ERROR_NON_FINITE_COORDINATES && !exists(dir.file("nan.obj")), "nan");
+  CHECK(listing(dir).size() == 4, "temporary left after a data error");
+  std::cout << "writers: no partial file (/dev/full, file size limit, folder), devices written in place: OK" << std::endl;
+  return EXIT_SUCCESS;
+}
+
+// ---------------------------------------------------------------------------
+// SVG with distortion colors and an inset
+
+// the text of the <text> element with the id `id` ("" if none)
+std::string svg_text(const std::string& svg, const std::string& id)
+{
+  const std::size_t k = svg.find("id=\"" + id + "\"");
+  if(k == std::string::npos) return std::string();
+  const std::size_t b = svg.find('>', k), e = svg.find("</text>", k);
+  if(b == std::string::npos || e == std::string::npos || e < b) return std::string();
+  return svg.substr(b + 1, e - b - 1);
+}
+
+std::size_t occurrences(const std::string& s, const std::string& what)
+{
+  std::size_t n = 0;
+  for(std::size_t k = s.find(what); k != std::string::npos; k = s.find(what, k + 1)) ++n;
+  return n;
+}
+
+// A big triangle (the border) around a small hexagon of radius r with its center: the failure
+// region of a Tutte map often is this small. With `flip`, the center leaves the hexagon.
+void make_tiny_region(Mesh& m, UV_map uvm, double r, bool flip)
+{
+  std::vector<vertex_descriptor> big, hex;
+  const double c[3][2] = { {0, 0}, {1, 0}, {0.5, 0.8660254037844386} };
+  for(int k = 0; k < 3; ++k) big.push_back(m.add_vertex(Point_3(c[k][0], c[k][1], 0)));
+  const double cx = 0.5, cy = 0.3;
+  for(int k = 0; k < 6; ++k)
+    hex.push_back(m.add_vertex(Point_3(cx + r * std::cos(k * M_PI / 3), cy + r * std::sin(k * M_PI / 3), 0)));
+  const vertex_descriptor center = m.add_vertex(Point_3(cx, cy, 0));
+  for(int k = 0; k < 6; ++k) m.add_face(center, hex[std::size_t(k)], hex[std::size_t((k + 1) % 6)]);
+  // hexagon vertices 0,1 face corner 2 (top), 2,3 corner 0 (left), 4,5 corner 1 (right)
+  m.add_face(hex[0], big[2], hex[1]); m.add_face(hex[1], big[2], hex[2]);
+  m.add_face(hex[2], big[2], big[0]); m.add_face(hex[2], big[0], hex[3]); m.add_face(hex[3], big[0], hex[4]);
+  m.add_face(hex[4], big[0], big[1]); m.add_face(hex[4], big[1], hex[5]); m.add_face(hex[5], big[1], hex[0]);
+  m.add_face(hex[0], big[1], big[2]);
+  for(vertex_descriptor v : vertices(m)) uvm[v] = Point_2(m.point(v).x(), m.point(v).y());
+  if(flip) uvm[center] = Point_2(cx + 2 * r, cy + 0.1 * r);
+}
+
+int test_svg_distortion_and_inset(const std::string& out_dir)
+{
+  // format_number is printf's %.*g in the C locale
+  {
+    const double values[] = { 4, 4.000001, 12.345, 1234.5678, 1.1e15, 6.2e-7, -3.25, 0, 99.95, 123456789 };
+    for(double x : values)
+      for(int d : { 3, 6 })
+      {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%.*g", d, x);
+        CHECK(PE::IO::format_number(x, d) == buf, x << ": " << PE::IO::format_number(x, d) << " vs " << buf);
+      }
+    CHECK(PE::IO::format_number(std::numeric_limits<double>::infinity()) == "inf"
+          && PE::IO::format_number(-std::numeric_limits<double>::infinity()) == "-inf"
+          && PE::IO::format_number(std::numeric_limits<double>::quiet_NaN()) == "nan"
+          && PE::IO::format_number(-0.0) == "0", "non-finite values, negative zero");
+  }
+
+  // a valid map of a curved grid: the legend's numbers are the report's; no inset without flipped faces
+  Mesh m;
+  make_bump_grid(m, 9);
+  UV_map uvm = m.add_property_map<vertex_descriptor, Point_2>("h:uv").first;
+  for(vertex_descriptor v : vertices(m)) uvm[v] = Point_2(m.point(v).x(), m.point(v).y() * (1 + 0.3 * m.point(v).x()));
+  PE::Embedding_report rep = PE::check_embedding(m, uvm);
+  CHECK(rep.is_valid() && rep.has_3d_energy && std::isfinite(rep.mean_energy_3d) && rep.mean_energy_3d > 4, rep.summary());
+  PE::IO::SVG_options o;
+  o.title = "bump";
+  o.color_by_distortion = true;
+  o.inset = true;
+  for(int digits : { 3, 6 })
+  {
+    o.significant_digits = digits;
+    std::ostringstream out;
+    CHECK(PE::IO::write_SVG(out, m, uvm, o) == PE::OK, "svg");
+    const std::string svg = out.str();
+    CHECK(svg_text(svg, "pe-energy-mean") == "mean " + PE::IO::format_number(rep.mean_energy_3d, digits), svg_text(svg, "pe-energy-mean"));
+    CHECK(svg_text(svg, "pe-energy-max") == "max " + PE::IO::format_number(rep.max_energy_3d, digits), svg_text(svg, "pe-energy-max"));
+    CHECK(svg_text(svg, "pe-energy-median") == "median " + PE::IO::format_number(rep.distortion.symmetric_dirichlet_quantiles[0], digits),
+          svg_text(svg, "pe-energy-median"));
+    const std::string min_text = svg_text(svg, "pe-energy-min");
+    CHECK(min_text.size() > 4 && std::stod(min_text.substr(4)) >= 3.99 && std::stod(min_text.substr(4)) <= rep.mean_energy_3d, min_text);
+    CHECK(svg_text(svg, "pe-count-flipped") == "flipped: 0" && svg_text(svg, "pe-count-faces") == "faces: " + std::to_string(rep.faces), "counts");
+    CHECK(svg.find("pe-inset") == std::string::npos, "an inset without flipped or degenerate faces");
+    CHECK(occurrences(svg, "<path fill=\"") <= std::size_t(o.color_levels) && occurrences(svg, "<path fill=\"") >= 3,
+          "faces are grouped by color: " << occurrences(svg, "<path fill=\""));
+    bool checked = false;
+    CHECK(xml_is_valid(svg, checked), "invalid XML");
+  }
+
+  // flipped faces: the counts are the report's, the mean and max are infinite, an inset is drawn
+  {
+    const std::size_t n = 9;
+    uvm[vertex_descriptor(std::uint32_t(3 * n + 3))] = Point_2(0.62, 0.55);
+    rep = PE::check_embedding(m, uvm);
+    CHECK(rep.flipped > 0 && !rep.is_valid(), rep.summary());
+    o.significant_digits = 3;
+    std::ostringstream out;
+    CHECK(PE::IO::write_SVG(out, m, uvm, o) == PE::OK, "svg");
+    const std::string svg = out.str();
+    CHECK(svg_text(svg, "pe-count-flipped") == "flipped: " + std::to_string(rep.flipped), svg_text(svg, "pe-count-flipped"));
+    CHECK(svg_text(svg, "pe-count-degenerate") == "degenerate: " + std::to_string(rep.degenerate), "degenerate");
+    CHECK(svg_text(svg, "pe-energy-mean") == "mean inf" && PE::IO::format_number(rep.mean_energy_3d) == "inf", "mean");
+    CHECK(svg.find("<g id=\"pe-inset\">") != std::string::npos && svg.find("id=\"pe-inset-region\"") != std::string::npos, "no inset");
+    o.inset = false;
+    std::ostringstream out2;
+    CHECK(PE::IO::write_SVG(out2, m, uvm, o) == PE::OK && out2.str().find("pe-inset") == std::string::npos, "inset not asked for");
+    o.inset = true;
+  }
+
+  // a failure region 10^-6 of the view: the inset chooses its own scale, flipped faces inside it
+  {
+    Mesh t;
+    UV_map tuv = t.add_property_map<vertex_descriptor, Point_2>("h:uv").first;
+    make_tiny_region(t, tuv, 1e-6, true);
+    rep = PE::check_embedding(t, tuv);
+    CHECK(rep.status == PE::OK && rep.flipped > 0, rep.summary());
+    std::ostringstream out;
+    o.title = "a failure region of 1e-6";
+    CHECK(PE::IO::write_SVG(out, t, tuv, o) == PE::OK, "svg");
+    const std::string svg = out.str();
+    const std::size_t z = svg.find("zoom &#215;");
+    CHECK(z != std::string::npos, "zoom label");
+    const double zoom = std::stod(svg.substr(z + 11, 12));
+    CHECK(zoom > 1e4, "zoom " << zoom);
+    const std::string inset = svg.substr(svg.find("<g id=\"pe-inset\">"));
+    CHECK(inset.find("class=\"pe-flipped\"") != std::string::npos, "flipped faces not drawn in the inset");
+    CHECK(svg_text(svg, "pe-count-flipped") == "flipped: " + std::to_string(rep.flipped), "count");
+    if(!out_dir.empty()) { std::ofstream f(out_dir + "/tiny_region.svg"); f << svg; }
+    // the same map without the flip: no inset
+    Mesh t2;
+    UV_map tuv2 = t2.add_property_map<vertex_descriptor, Point_2>("h:uv").first;
+    make_tiny_region(t2, tuv2, 1e-6, false);
+    std::ostringstream out2;
+    CHECK(PE::IO::write_SVG(out2, t2, tuv2, o) == PE::OK && out2.str().find("pe-inset") == std::string::npos, "inset of a valid map");
+  }
+
+  // malformed options and unusable meshes: an error code, nothing written
+  {
+    std::vector<PE::IO::SVG_options> bad(7, o);
+    bad[0].size = std::numeric_limits<double>::quiet_NaN();
+    bad[1].flipped_color = "red";
+    bad[2].significant_digits = 0;
+    bad[3].color_levels = 1;
+    bad[4].coordinate_decimals = 7;
+    bad[5].edge_width = -1;
+    bad[6].inset_size = 1e9;
+    for(const PE::IO::SVG_options& b : bad)
+    {
+      std::ostringstream out;
+      CHECK(PE::IO::write_SVG(out, m, uvm, b) == PE::ERROR_WRONG_PARAMETER && out.str().empty(), "bad options accepted");
+    }
+    Temp_dir dir("svg");
+    CHECK(PE::IO::write_SVG(dir.file("bad.svg"), m, uvm, bad[1]) == PE::ERROR_WRONG_PARAMETER && dir.count() == 0, "file written");
+
+    Mesh tet; // closed: not a disk
+    UV_map tuv = tet.add_property_map<vertex_descriptor, Point_2>("h:uv").first;
+    CGAL::make_tetrahedron(Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(0, 1, 0), Point_3(0, 0, 1), tet);
+    for(vertex_descriptor v : vertices(tet)) tuv[v] = Point_2(tet.point(v).x() + 0.3 * tet.point(v).z(), tet.point(v).y());
+    std::ostringstream out;
+    CHECK(PE::IO::write_SVG(out, tet, tuv, o) == PE::ERROR_NOT_A_DISK && out.str().empty(), "not a disk");
+    o.color_by_distortion = false;
+    CHECK(PE::IO::write_SVG(out, tet, tuv, o) == PE::OK, "not a disk, no distortion");
+    o.color_by_distortion = true;
+    Mesh flat;
+    UV_map fuv = flat.add_property_map<vertex_descriptor, Point_2>("h:uv").first;
+    make_grid(flat, fuv, 4);
+    for(vertex_descriptor v : vertices(flat)) flat.point(v) = Point_3(1, 1, 1);
+    std::ostringstream out2;
+    CHECK(PE::IO::write_SVG(out2, flat, fuv, o) == PE::ERROR_DEGENERATE_3D_FACE && out2.str().empty(), "no 3D area");
+  }
+  std::cout << "SVG with distortion colors and inset: OK (legend = check_embedding's numbers, inset zoom on a 1e-6 region)" << std::endl;
+  return EXIT_SUCCESS;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
+  const std::string data_dir = argc > 1 ? argv[1] : std::string();
+  const std::string out_dir = argc > 2 ? argv[2] : std::string(); // optional: where to leave pictures
   const Seam_grid g = make_seam_grid();
   RUN(test_round_trip_surface_mesh(g));
   RUN(test_round_trip_polyhedron(g));
   RUN(test_exact_uv(g));
   RUN(test_malformed());
   RUN(test_fuzz(g));
+  RUN(test_read_polygon_mesh_errors());
+  RUN(test_read_polygon_mesh_memory_bound());
+  RUN(test_read_polygon_mesh_formats(data_dir));
+  RUN(test_read_polygon_mesh_fuzz());
+  RUN(test_data_files());
   RUN(test_svg());
-  if(argc > 1)
-    RUN(test_mushroom(argv[1]));
+  RUN(test_svg_distortion_and_inset(out_dir));
+  RUN(test_atomic_writes());
+  if(!data_dir.empty())
+    RUN(test_mushroom(data_dir));
   else
     std::cout << "no data directory given: mushroom.off round trip skipped" << std::endl;
   std::cout << "test_io: all checks passed" << std::endl;

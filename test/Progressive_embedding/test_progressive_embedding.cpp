@@ -2,22 +2,23 @@
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 // Author(s) : Progressive_embedding contributors
 
-// Tests of progressive_embedding() (issue 3): broken Tutte maps (deep stacked triangulation,
-// corpus runs of libcgal-demo), random initializations, all interior vertices at one point,
-// a clockwise border, and the inputs it must refuse -- in double, Gmpq and Gmpfr, on
-// Surface_mesh and on Polyhedron_3. Every success is checked with an independent certificate,
-// a bit-exact border and unchanged connectivity.
+// Tests of progressive_embedding(): broken Tutte maps (deep stacked triangulation, corpus runs
+// of libcgal-demo), random initializations, all interior vertices at one point, a clockwise
+// border, maps at any scale, and the inputs it must refuse -- in double, Gmpq and Gmpfr, on
+// Surface_mesh and on Polyhedron_3. Every success is checked with an independent certificate
+// and a bit-exact border; the internal working copy must get the input connectivity back.
 //
 // Usage: test_progressive_embedding DATA_DIR   (DATA_DIR contains libcgal-demo's meshes/)
 
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
 #include <CGAL/Progressive_embedding/check_embedding.h>
 #include <CGAL/Progressive_embedding/progressive_embedding.h>
-#include <CGAL/Progressive_embedding/internal/protocols.h>
+#include "protocols.h" // test fixtures: test/Progressive_embedding/
 
 #include "test_util.h"
 
 #include <limits>
+#include <sstream>
 
 namespace {
 
@@ -46,8 +47,6 @@ int repair_and_certify(Mesh& m, UVM& uv, const std::string& what, bool expect_no
   // what must not change
   std::vector<std::pair<vertex_descriptor<Mesh>, P> > border;
   for(auto v : vertices(m)) if(CGAL::is_border(v, m)) border.emplace_back(v, get(uv, v));
-  const auto faces_before = face_list(m);
-  const std::size_t nv = num_vertices(m), nf = num_faces(m);
   const PE::Embedding_report before = PE::check_embedding(m, uv);
 
   PE::Progressive_embedding_statistics st;
@@ -78,7 +77,8 @@ int repair_and_certify(Mesh& m, UVM& uv, const std::string& what, bool expect_no
   }
   for(const auto& b : border)
     CHECK(same_uv(get(uv, b.first), b.second), what << ": border vertex moved");
-  CHECK(num_vertices(m) == nv && num_faces(m) == nf && face_list(m) == faces_before, what << ": connectivity unchanged");
+  // (the mesh is taken by const reference: its connectivity cannot change; that the algorithm's
+  // working copy gets the input connectivity back is the "restoration" group)
   if(expect_no_extra_smoothing)
     CHECK(st.insertions_with_extra_smoothing == 0, what << ": no insertion needed extra smoothing (Lemma A.11)");
   return EXIT_SUCCESS;
@@ -106,7 +106,7 @@ int test_stacked(std::size_t depth)
   pin_corners<Epick>(uv, c);
   CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uv, PE::parameters::border_shape(PE::Border_shape::FIXED)) == PE::OK, "Tutte");
   const PE::Embedding_report r = PE::check_embedding(m, uv);
-  std::cout << "  double Tutte: " << r.summary() << " (DESIGN.md: 3 flipped at depth 40, 49 at depth 80)" << std::endl;
+  std::cout << "  double Tutte: " << r.summary() << " (3 flipped at depth 40, 49 at depth 80 with Eigen's SimplicialLDLT)" << std::endl;
   CHECK(!r.is_valid() && r.flipped > 0, "the double Tutte map is broken");
   std::map<vertex_descriptor<Mesh>, Epick::Point_2> tutte;
   for(auto v : vertices(m)) tutte[v] = get(uv, v);
@@ -278,6 +278,279 @@ int test_random_inits()
   return rc;
 }
 
+// ---- the working copy gets the input connectivity back -----------------------------------
+
+// Runs the internal embedder on the map `uv` of `m` and checks that undoing every collapse gave
+// the working mesh exactly the input faces (as triples of input indices), and that the
+// positions it returns keep the border and make a valid map.
+template <class Mesh, class UVM>
+int check_restoration(const Mesh& m, const UVM& uv, const std::string& what)
+{
+  typedef typename PE::internal::Uv_map_types<UVM>::Traits Traits;
+  typedef typename Traits::FT FT;
+  typedef typename Traits::Point_2 P;
+  PE::internal::Indexed_disk<Mesh> disk;
+  CHECK(PE::internal::make_indexed_disk(m, null_h<Mesh>(), disk) == PE::OK, what << ": a disk");
+  const std::size_t nv = disk.number_of_vertices(), nb = disk.border.size();
+  std::vector<P> pos(nv);
+  for(std::size_t i = 0; i < nv; ++i) pos[i] = get(uv, disk.vertices[i]);
+  FT twice_area(0);
+  for(std::size_t k = 0; k < nb; ++k)
+  {
+    const P& a = pos[disk.border[k]];
+    const P& b = pos[disk.border[(k + 1) % nb]];
+    twice_area += a.x() * b.y() - a.y() * b.x();
+  }
+  if(twice_area < FT(0)) // the embedder works on counterclockwise borders, as progressive_embedding() mirrors
+  {
+    for(P& p : pos) p = P(p.x(), -p.y());
+    twice_area = -twice_area;
+  }
+  const std::vector<P> input = pos;
+  typename PE::internal::Progressive_embedder<Traits>::Options opt;
+  opt.insertion.smoothing_iterations = Traits::has_exact_constructions ? 0 : 10;
+  PE::internal::Progressive_embedder<Traits> pe{Traits(), opt};
+  const PE::Error_code ec = pe.run(pos, disk.faces, disk.on_border, twice_area / FT(2));
+  std::cout << "  " << what << ": embedder " << PE::get_error_name(ec) << ", collapses " << pe.counters.collapses
+            << ", insertions " << pe.counters.insertions << std::endl;
+  CHECK(ec == PE::OK, what << ": " << PE::get_error_name(ec));
+  CHECK(pe.counters.collapses > 0 && pe.counters.insertions == pe.counters.collapses, what << ": collapses undone");
+  std::vector<std::array<std::size_t, 3> > expected;
+  for(const auto& t : disk.faces) expected.push_back(PE::internal::Working_mesh<Traits>::normalized_face(t));
+  std::sort(expected.begin(), expected.end());
+  const auto restored = pe.working_mesh().input_faces();
+  CHECK(restored.size() == expected.size(), what << ": " << restored.size() << " faces restored, " << expected.size() << " in the input");
+  CHECK(restored == expected, what << ": the working mesh has the input faces again");
+  const typename Traits::Exact_orientation_2 orient = Traits().exact_orientation_2_object();
+  for(std::size_t i = 0; i < nv; ++i)
+    if(disk.on_border[i]) CHECK(pos[i] == input[i], what << ": border kept");
+  for(const auto& t : disk.faces)
+    CHECK(orient(pos[t[0]], pos[t[1]], pos[t[2]]) == CGAL::LEFT_TURN, what << ": every face positively oriented");
+  return EXIT_SUCCESS;
+}
+
+// The two stages alone, on the broken Tutte map of a stacked triangulation (counterclockwise
+// after mirroring): the collapse stage leaves no invalid face and records every collapse; the
+// insertion stage undoes them all, every face positive, the input faces back.
+template <class Mesh>
+int test_stages()
+{
+  typedef PE::Progressive_embedding_traits_2<Epick> Traits;
+  typedef PE::internal::Working_mesh<Traits> WMesh;
+  Mesh m;
+  const auto c = PE::internal::make_stacked_triangulation(80, m);
+  auto uv = make_uv_map(m, Epick::Point_2());
+  pin_corners<Epick>(uv, c);
+  CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uv, PE::parameters::border_shape(PE::Border_shape::FIXED)) == PE::OK, "Tutte");
+  PE::internal::Indexed_disk<Mesh> disk;
+  CHECK(PE::internal::make_indexed_disk(m, null_h<Mesh>(), disk) == PE::OK, "a disk");
+  std::vector<Epick::Point_2> pos;
+  for(auto v : disk.vertices) pos.push_back(Epick::Point_2(get(uv, v).x(), -get(uv, v).y())); // counterclockwise
+  double twice_area = 0;
+  for(std::size_t k = 0; k < disk.border.size(); ++k)
+  {
+    const Epick::Point_2& a = pos[disk.border[k]];
+    const Epick::Point_2& b = pos[disk.border[(k + 1) % disk.border.size()]];
+    twice_area += a.x() * b.y() - a.y() * b.x();
+  }
+  CHECK(twice_area > 0, "counterclockwise border");
+  WMesh wm;
+  CHECK(wm.build(pos, disk.faces, disk.on_border) == PE::OK, "working mesh");
+  PE::internal::Validity_criteria<Traits> validity;
+  validity.orient = Traits().exact_orientation_2_object();
+  validity.set_mean_area(twice_area / 2 / double(disk.faces.size()));
+  PE::internal::Embedder_counters counters;
+  std::vector<PE::internal::Collapse_record<typename WMesh::vertex_descriptor> > history;
+  {
+    PE::internal::Collapse_stage<Traits> collapse(wm, validity, counters, std::size_t(-1), []() { return false; }, false);
+    CHECK(collapse.run(history) == PE::OK, "collapse stage");
+    std::size_t invalid = 0;
+    for(auto f : wm.m.faces()) if(collapse.face_invalid(f)) ++invalid;
+    std::cout << "  collapse stage: " << counters.invalid_faces_before << " invalid faces, " << history.size()
+              << " collapses, " << invalid << " invalid faces left" << std::endl;
+    CHECK(counters.invalid_faces_before > 0 && !history.empty() && history.size() == counters.collapses, "collapses recorded");
+    CHECK(invalid == 0, "no invalid face after the collapse stage");
+  }
+  {
+    PE::internal::Insertion_stage<Traits> insertion(wm, Traits(), validity, counters, PE::internal::Insertion_options(),
+                                                    []() { return false; }, std::function<bool(double)>(), false);
+    CHECK(insertion.run(history, twice_area / 2) == PE::OK, "insertion stage");
+  }
+  std::cout << "  insertion stage: " << counters.insertions << " insertions, " << counters.smoothing_steps << " smoothing steps" << std::endl;
+  CHECK(counters.insertions == history.size(), "every collapse undone");
+  for(auto f : wm.m.faces())
+  {
+    const auto h = wm.m.halfedge(f);
+    CHECK(validity.orient(wm.point(wm.m.source(h)), wm.point(wm.m.target(h)), wm.point(wm.m.target(wm.m.next(h)))) == CGAL::LEFT_TURN,
+          "every face positive after the insertion stage");
+  }
+  std::vector<std::array<std::size_t, 3> > expected;
+  for(const auto& t : disk.faces) expected.push_back(WMesh::normalized_face(t));
+  std::sort(expected.begin(), expected.end());
+  CHECK(wm.input_faces() == expected, "the input faces are back");
+  return EXIT_SUCCESS;
+}
+
+template <class Mesh>
+int test_restoration(const std::string& data)
+{
+  std::cout << "[" << mesh_name<Mesh>() << "] restoration of the connectivity" << std::endl;
+  RUN(test_stages<Mesh>());
+  {
+    Mesh m;
+    const auto c = PE::internal::make_stacked_triangulation(80, m);
+    auto uv = make_uv_map(m, Epick::Point_2());
+    pin_corners<Epick>(uv, c);
+    CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uv, PE::parameters::border_shape(PE::Border_shape::FIXED)) == PE::OK, "Tutte");
+    RUN(check_restoration(m, uv, "stacked depth 80, double"));
+    auto uvq = make_uv_map(m, Kq::Point_2());
+    convert_uv(m, uv, uvq);
+    RUN(check_restoration(m, uvq, "stacked depth 80, Gmpq"));
+  }
+  {
+    Mesh m;
+    PE::internal::make_grid_disk(16, m);
+    auto uv = make_uv_map(m, Epick::Point_2());
+    CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uv, PE::parameters::border_shape(PE::Border_shape::CIRCLE)) == PE::OK, "border");
+    random_init(m, uv, 5);
+    RUN(check_restoration(m, uv, "random init 16x16"));
+  }
+  {
+    Mesh m;
+    CHECK(read_mesh(data + "/meshes/bull.off", m), "read bull.off");
+    std::array<vertex_descriptor<Mesh>, 3> pinned;
+    CHECK(PE::internal::thingi_cut(m, 0, pinned) == PE::OK, "cut");
+    auto uv = make_uv_map(m, Epick::Point_2());
+    pin_corners<Epick>(uv, pinned);
+    CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uv, PE::parameters::border_shape(PE::Border_shape::FIXED)) == PE::OK, "Tutte");
+    RUN(check_restoration(m, uv, "bull seed 0"));
+  }
+  return EXIT_SUCCESS;
+}
+
+// ---- any scale the number type represents --------------------------------------------
+
+// `uv` multiplied by `s` (in FT: 10^k is not a power of two, so the scaled map is a new map)
+template <class Mesh, class UVM, class FT>
+void scale_uv(const Mesh& m, UVM& uv, const FT& s)
+{
+  typedef typename boost::property_traits<UVM>::value_type P;
+  for(auto v : vertices(m)) put(uv, v, P(get(uv, v).x() * s, get(uv, v).y() * s));
+}
+
+// A valid map at scale s: accepted as it is (no face invalid, nothing moved, bit for bit).
+template <class Mesh>
+int valid_map_at_scale(double s)
+{
+  Mesh m;
+  PE::internal::make_grid_disk(12, m);
+  auto uv = make_uv_map(m, Epick::Point_2());
+  CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uv, PE::parameters::border_shape(PE::Border_shape::CIRCLE)) == PE::OK, "Tutte");
+  scale_uv(m, uv, s);
+  CHECK(PE::check_embedding(m, uv).is_valid(), "the scaled Tutte map of a grid is valid");
+  std::vector<Epick::Point_2> before;
+  for(auto v : vertices(m)) before.push_back(get(uv, v));
+  PE::Progressive_embedding_statistics st;
+  const PE::Error_code ec = PE::progressive_embedding(m, uv, PE::parameters::statistics(&st));
+  std::cout << "  valid map at scale " << s << ": " << PE::get_error_name(ec) << ", invalid faces " << st.invalid_faces_before << std::endl;
+  CHECK(ec == PE::OK, "valid map at scale " << s << ": " << PE::get_error_name(ec));
+  CHECK(st.invalid_faces_before == 0 && st.collapses == 0, "valid map at scale " << s << ": no face is invalid");
+  CHECK(st.report.is_valid(), "certified");
+  std::size_t k = 0;
+  for(auto v : vertices(m))
+  {
+    const Epick::Point_2 p = get(uv, v), q = before[k++];
+    CHECK(same_bits(p.x(), q.x()) && same_bits(p.y(), q.y()), "valid map at scale " << s << ": unchanged bit for bit");
+  }
+  return EXIT_SUCCESS;
+}
+
+// The power-of-two normalization alone: extent brought to [1/2, 1), exact round trips, and the
+// identity when a border coordinate would not come back bit-exactly.
+template <class K>
+int scaling_case(const std::vector<typename K::Point_2>& border, long expected_exponent, const std::string& what)
+{
+  typedef typename K::FT FT;
+  const auto s = PE::internal::Power_of_two_scaling<FT>::normalizing(border);
+  std::cout << "  scaling of " << what << ": 2^" << s.exponent() << std::endl;
+  CHECK(s.exponent() == expected_exponent, what << ": exponent " << s.exponent() << ", expected " << expected_exponent);
+  for(const auto& p : border)
+  {
+    CHECK(s.backward(s.forward(p.x())) == p.x() && s.backward(s.forward(p.y())) == p.y(), what << ": exact round trip");
+    if(s.exponent() != 0)
+    {
+      const FT x = s.forward(p.x());
+      CHECK(CGAL::abs(x) <= FT(1), what << ": scaled coordinates within the unit box");
+    }
+  }
+  return EXIT_SUCCESS;
+}
+
+int test_scaling_helper()
+{
+  // extent 2e200 = 2^665.x: scaled by 2^-666 into [1/2, 1)
+  RUN(scaling_case<Epick>({ Epick::Point_2(-1e200, 0), Epick::Point_2(1e200, 0), Epick::Point_2(0, 1e200) }, -666, "double at 1e200"));
+  RUN(scaling_case<Epick>({ Epick::Point_2(0, 0), Epick::Point_2(1, 0), Epick::Point_2(0, 1) }, 0, "double at 1 (left alone)"));
+  // 1e-300 * 2^-997 underflows: it would not come back, so no scaling at all
+  RUN(scaling_case<Epick>({ Epick::Point_2(1e-300, 0), Epick::Point_2(1e300, 0), Epick::Point_2(0, 1e300) }, 0, "double with a coordinate that underflows"));
+  // beyond double range, exactly: 2^1100 and 2^-5000 in Gmpq
+  const CGAL::Gmpq big = PE::internal::power_of_two<CGAL::Gmpq>(1100), tiny = PE::internal::power_of_two<CGAL::Gmpq>(-5000);
+  CHECK(big == CGAL::Gmpq(1) / PE::internal::power_of_two<CGAL::Gmpq>(-1100), "2^1100 is exact");
+  RUN(scaling_case<Kq>({ Kq::Point_2(0, 0), Kq::Point_2(big, 0), Kq::Point_2(0, big) }, -1101, "Gmpq at 2^1100"));
+  RUN(scaling_case<Kq>({ Kq::Point_2(0, 0), Kq::Point_2(tiny * 3, 0), Kq::Point_2(0, tiny) }, 4998, "Gmpq at 2^-5000"));
+  return EXIT_SUCCESS;
+}
+
+template <class Mesh>
+int test_scale()
+{
+  std::cout << "[" << mesh_name<Mesh>() << "] maps at any scale" << std::endl;
+  RUN(test_scaling_helper());
+  const double scales[] = { 1e80, 1e200, 1e-80, 1e-200, 1e300, 1e-300 };
+  for(double s : scales)
+    RUN(valid_map_at_scale<Mesh>(s));
+
+  // broken Tutte maps (deep stacked triangulation) and random initializations, scaled, in double
+  Mesh m;
+  const auto c = PE::internal::make_stacked_triangulation(40, m);
+  auto uv = make_uv_map(m, Epick::Point_2());
+  for(double s : scales)
+  {
+    pin_corners<Epick>(uv, c);
+    CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uv, PE::parameters::border_shape(PE::Border_shape::FIXED)) == PE::OK, "Tutte");
+    scale_uv(m, uv, s);
+    CHECK(!PE::check_embedding(m, uv).is_valid(), "the scaled Tutte map is broken");
+    std::ostringstream what; what << "stacked depth 40 at scale " << s << ", double";
+    RUN(repair_and_certify(m, uv, what.str(), false));
+  }
+  Mesh g;
+  PE::internal::make_grid_disk(12, g);
+  auto uvg = make_uv_map(g, Epick::Point_2());
+  for(double s : { 1e80, 1e-200 })
+  {
+    CHECK(PE::tutte_embedding(g, null_h<Mesh>(), uvg, PE::parameters::border_shape(PE::Border_shape::CIRCLE)) == PE::OK, "border");
+    random_init(g, uvg, 3);
+    scale_uv(g, uvg, s);
+    for(auto v : vertices(g)) put(uvg, v, Epick::Point_2(get(uvg, v).x(), -get(uvg, v).y())); // clockwise too
+    std::ostringstream what; what << "clockwise random init at scale " << s << ", double";
+    RUN(repair_and_certify(g, uvg, what.str(), false));
+  }
+
+  // the broken double map converted exactly to Gmpq, then scaled by 10^200 and 10^-200 exactly
+  pin_corners<Epick>(uv, c);
+  CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uv, PE::parameters::border_shape(PE::Border_shape::FIXED)) == PE::OK, "Tutte");
+  for(int e : { 200, -200 })
+  {
+    auto uvq = make_uv_map(m, Kq::Point_2());
+    convert_uv(m, uv, uvq);
+    CGAL::Gmpq s(1);
+    for(int i = 0; i < 200; ++i) s = (e > 0) ? s * CGAL::Gmpq(10) : s / CGAL::Gmpq(10);
+    scale_uv(m, uvq, s);
+    RUN(repair_and_certify(m, uvq, "stacked depth 40 at scale 1e" + std::to_string(e) + ", Gmpq", true));
+  }
+  return EXIT_SUCCESS;
+}
+
 // one group of tests on one mesh type
 template <class Mesh>
 int run_group(const std::string& group, const std::string& data)
@@ -288,6 +561,8 @@ int run_group(const std::string& group, const std::string& data)
   if(group == "refused") return test_refused_inputs<Mesh>();
   if(group == "bull") return test_corpus<Mesh>(data, "bull.off", 0);
   if(group == "man") return test_corpus<Mesh>(data, "man.off", 35);
+  if(group == "scale") return test_scale<Mesh>();
+  if(group == "restoration") return test_restoration<Mesh>(data);
   std::cerr << "unknown group " << group << std::endl;
   return EXIT_FAILURE;
 }
@@ -295,7 +570,7 @@ int run_group(const std::string& group, const std::string& data)
 } // namespace
 
 // Usage: test_progressive_embedding DATA_DIR [GROUP [surface_mesh|polyhedron]]
-// GROUP: stacked, random_init, special, refused, bull, man (default: all, on both mesh types)
+// GROUP: stacked, random_init, special, refused, bull, man, scale, restoration (default: all, on both mesh types)
 int main(int argc, char** argv)
 {
   if(argc < 2)
@@ -305,7 +580,7 @@ int main(int argc, char** argv)
   }
   const std::string data = argv[1];
   const std::string group = (argc > 2) ? argv[2] : "all", mesh = (argc > 3) ? argv[3] : "all";
-  const std::vector<std::string> groups = { "stacked", "random_init", "special", "refused", "bull", "man" };
+  const std::vector<std::string> groups = { "stacked", "random_init", "special", "refused", "bull", "man", "scale", "restoration" };
   bool ran = false;
   for(const std::string& g : groups)
   {

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 // Author(s) : Progressive_embedding contributors
 
-// Tests of the foundation (issue 2): generic Tutte embedding in double, Gmpq and Gmpfr,
+// Tests of the foundation: generic Tutte embedding in double, Gmpq and Gmpfr,
 // the exact validity certificate, and the error codes of bad inputs. Every test body is
 // a template run on Surface_mesh and on Polyhedron_3.
 //
@@ -11,7 +11,7 @@
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
 #include <CGAL/Progressive_embedding/check_embedding.h>
 #include <CGAL/Progressive_embedding/IO/OBJ_with_uv.h>
-#include <CGAL/Progressive_embedding/internal/protocols.h>
+#include "protocols.h" // test fixtures: test/Progressive_embedding/
 
 #include "test_util.h"
 
@@ -381,6 +381,414 @@ int test_bad_inputs()
   return EXIT_SUCCESS;
 }
 
+// ---- exactness at any scale ----------------------------------------------------------------
+
+// The certificate of a map copied into K with every coordinate times 2^e equals the certificate
+// of the double map (a uniform scaling changes no sign), and the independent exact count agrees.
+template <class K, class Mesh, class UVD>
+int check_scaled(const Mesh& m, const UVD& uvd, const PE::Embedding_report& rd, long e, const char* what)
+{
+  auto uvk = make_uv_map(const_cast<Mesh&>(m), typename K::Point_2());
+  scaled_copy<K>(m, uvd, uvk, e);
+  const PE::Embedding_report r = PE::check_embedding(m, uvk);
+  std::size_t fl = 0, dg = 0;
+  count_orientations(m, uvk, r.clockwise ? CGAL::RIGHT_TURN : CGAL::LEFT_TURN, fl, dg);
+  std::cout << "  " << what << " in " << nt_name<K>() << " times 2^" << e << ": " << r.summary()
+            << " (border intersections " << r.border_intersections << ")" << std::endl;
+  CHECK(r.status == PE::OK, what << ": checked");
+  CHECK(r.is_valid() == rd.is_valid(), what << " 2^" << e << ": same validity as at scale 1 in double");
+  CHECK(r.flipped == rd.flipped && r.degenerate == rd.degenerate && r.clockwise == rd.clockwise, what << ": same orientations");
+  CHECK(r.flipped == fl && r.degenerate == dg, what << ": the independent exact count agrees (" << fl << " flipped, " << dg << " degenerate)");
+  CHECK(r.border_simple == rd.border_simple && r.border_intersections == rd.border_intersections, what << ": same border intersections");
+  CHECK(r.overlap_checked == rd.overlap_checked && r.overlapping_pairs == rd.overlapping_pairs, what << ": same overlapping pairs");
+  CHECK(r.non_finite == 0, what << ": every coordinate is finite");
+  // the energies are scale invariant: computed on exactly rescaled coordinates
+  if(rd.is_valid())
+  {
+    CHECK(std::isfinite(r.max_energy_3d) && std::abs(r.max_energy_3d - rd.max_energy_3d) <= 1e-9 * rd.max_energy_3d,
+          what << ": same max energy " << r.max_energy_3d << " vs " << rd.max_energy_3d);
+    CHECK(std::abs(r.mean_energy_equilateral - rd.mean_energy_equilateral) <= 1e-9 * rd.mean_energy_equilateral, what << ": same mean energy");
+  }
+  // areas are reported in the map's units: beyond double range they round to infinity or zero
+  if(e >= 1100) CHECK(std::isinf(r.border_area) && r.border_area > 0, what << ": border area beyond double range");
+  if(e <= -1100) CHECK(r.border_area == 0, what << ": border area below double range");
+  // (exact areas rounded once vs double evaluations within their error bound)
+  if(e == 0) CHECK(r.border_area == rd.border_area && std::abs(r.min_signed_area - rd.min_signed_area) <= 1e-12 * std::abs(rd.min_signed_area),
+                   what << ": same areas at scale 1");
+  return EXIT_SUCCESS;
+}
+
+template <class Mesh, class UVD>
+int check_all_scales(const Mesh& m, const UVD& uvd, const char* what, bool expect_valid)
+{
+  const PE::Embedding_report rd = PE::check_embedding(m, uvd);
+  std::cout << "  " << what << " in double: " << rd.summary() << std::endl;
+  CHECK(rd.is_valid() == expect_valid, what << ": reference validity");
+  for(long e : { 0L, 1100L, -1100L })
+  {
+    RUN((check_scaled<Kq>(m, uvd, rd, e, what)));
+    RUN((check_scaled<Kfr>(m, uvd, rd, e, what)));
+  }
+  return EXIT_SUCCESS;
+}
+
+template <class Mesh>
+int test_exact_scales()
+{
+  std::cout << "[" << mesh_name<Mesh>() << "] certificates in Gmpq and Gmpfr at 2^1100 and 2^-1100" << std::endl;
+  const std::size_t n = 8;
+  {
+    Mesh m;
+    PE::internal::make_grid_disk(n, m);
+    auto uv = make_uv_map(m, Epick::Point_2());
+    auto vpm = get(CGAL::vertex_point, m);
+    for(auto v : vertices(m)) put(uv, v, Epick::Point_2(get(vpm, v).x(), get(vpm, v).y()));
+    RUN(check_all_scales(m, uv, "grid", true));
+
+    // flipped and overlapping: an interior vertex dragged across its neighbour
+    const double h = 1. / double(n - 1);
+    for(auto v : vertices(m))
+      if(get(vpm, v).x() == 3 * h && get(vpm, v).y() == 3 * h) put(uv, v, Epick::Point_2(4.6 * h, 3.3 * h));
+    const PE::Embedding_report rd = PE::check_embedding(m, uv);
+    CHECK(rd.flipped > 0 && rd.overlapping_pairs > 0, "the dragged vertex flips and overlaps faces");
+    RUN(check_all_scales(m, uv, "grid with a dragged vertex", false));
+
+    // mirrored: valid, clockwise
+    for(auto v : vertices(m)) put(uv, v, Epick::Point_2(get(vpm, v).x(), -get(vpm, v).y()));
+    RUN(check_all_scales(m, uv, "mirrored grid", true));
+
+    // Exact Tutte with a fixed square border of side 2^1100 (and 2^-1100): valid
+    for(long e : { 1100L, -1100L })
+    {
+      auto uvq = make_uv_map(m, Kq::Point_2());
+      for(auto v : vertices(m)) put(uvq, v, Kq::Point_2(scaled_ft<CGAL::Gmpq>(get(vpm, v).x(), e), scaled_ft<CGAL::Gmpq>(get(vpm, v).y(), e)));
+      for(auto v : vertices(m)) if(!CGAL::is_border(v, m)) put(uvq, v, Kq::Point_2(0, 0));
+      CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uvq, fixed_border()) == PE::OK, "Gmpq Tutte at 2^" << e);
+      const PE::Embedding_report rq = PE::check_embedding(m, uvq);
+      std::cout << "  Gmpq Tutte, square of side 2^" << e << ": " << rq.summary() << std::endl;
+      CHECK(rq.is_valid() && rq.flipped == 0 && rq.overlap_checked, "Gmpq Tutte at 2^" << e << " is valid");
+    }
+  }
+  {
+    Mesh m;
+    auto uv = make_uv_map(m, Epick::Point_2());
+    make_double_covered_strip(m, uv, 30);
+    RUN(check_all_scales(m, uv, "doubly covered strip", false));
+  }
+  return EXIT_SUCCESS;
+}
+
+// ---- zero-length border edges ------------------------------------------------------------------
+
+// A wheel: a center, a ring of `k` interior vertices, a ring of `k` border vertices; every face
+// has an interior vertex. Returns the border ring.
+template <class Mesh>
+std::vector<vertex_descriptor<Mesh> > make_wheel(Mesh& m, std::size_t k)
+{
+  typedef vertex_descriptor<Mesh> vd;
+  auto vpm = get(CGAL::vertex_point, m);
+  const vd c = add_vertex(m);
+  put(vpm, c, Epick::Point_3(0, 0, 0));
+  std::vector<vd> in(k), out(k);
+  for(std::size_t i = 0; i < k; ++i)
+  {
+    const double t = 2 * CGAL_PI * double(i) / double(k);
+    in[i] = add_vertex(m); out[i] = add_vertex(m);
+    put(vpm, in[i], Epick::Point_3(std::cos(t), std::sin(t), 0));
+    put(vpm, out[i], Epick::Point_3(2 * std::cos(t), 2 * std::sin(t), 0.5));
+  }
+  for(std::size_t i = 0; i < k; ++i)
+  {
+    const std::size_t j = (i + 1) % k;
+    CGAL::Euler::add_face(std::vector<vd>{ c, in[i], in[j] }, m);
+    CGAL::Euler::add_face(std::vector<vd>{ in[i], out[i], out[j] }, m);
+    CGAL::Euler::add_face(std::vector<vd>{ in[i], out[j], in[j] }, m);
+  }
+  return out;
+}
+
+template <class Mesh>
+int test_zero_length_border()
+{
+  std::cout << "[" << mesh_name<Mesh>() << "] zero-length border edges" << std::endl;
+  {
+    // the parameterization alone: strictly increasing, runs share the next edge evenly
+    const std::vector<double> s = PE::internal::arc_length_parameters({ 1, 0, 0, 1, 0, 2 });
+    CHECK(s.size() == 7 && s[0] == 0 && s[6] == 1, "parameters from 0 to 1");
+    for(std::size_t k = 0; k < 6; ++k) CHECK(s[k] < s[k + 1], "strictly increasing at " << k);
+    // edges 1, 2 (zero) and 3 (length 1) share its length: 1/3 each; edge 4 (zero) and 5 (length 2): 1 each
+    CHECK(s[1] == 0.25 && std::abs((s[2] - s[1]) - 1. / 12) < 1e-15 && std::abs((s[4] - s[3]) - 1. / 12) < 1e-15
+          && std::abs((s[5] - s[4]) - 0.25) < 1e-15, "even spacing along the runs");
+    const std::vector<double> z = PE::internal::arc_length_parameters({ 0, 0, 0, 0 });
+    CHECK(z[1] == 0.25 && z[2] == 0.5 && z[3] == 0.75, "zero total length: even spacing");
+    const std::vector<double> r = PE::internal::arc_length_parameters({ 1, 2, 1 });
+    CHECK(r[1] == 0.25 && r[2] == 0.75, "no zero length: arc length");
+  }
+  for(int all : { 0, 1 })
+  {
+    Mesh m;
+    const auto out = make_wheel(m, 16);
+    auto vpm = get(CGAL::vertex_point, m);
+    if(all) { for(auto v : out) put(vpm, v, get(vpm, out[0])); }  // every border point at one place
+    else
+    {
+      // two runs of duplicated points: (1,2,3) and (9,10)
+      put(vpm, out[2], get(vpm, out[1])); put(vpm, out[3], get(vpm, out[1]));
+      put(vpm, out[10], get(vpm, out[9]));
+    }
+    const char* what = all ? "all border points coincide" : "duplicated border points";
+    for(PE::Border_shape b : { PE::Border_shape::CIRCLE, PE::Border_shape::SQUARE, PE::Border_shape::TRIANGLE })
+    {
+      auto uv = make_uv_map(m, Epick::Point_2());
+      CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uv, PE::parameters::border_shape(b)) == PE::OK, what << ": Tutte");
+      const PE::Embedding_report r = PE::check_embedding(m, uv);
+      std::cout << "  " << what << ", border shape " << int(b) << ": " << r.summary() << std::endl;
+      CHECK(r.border_simple && r.border_intersections == 0, what << ": distinct, simple border, shape " << int(b));
+      CHECK(r.is_valid() && r.degenerate == 0 && r.flipped == 0, what << ": valid map, shape " << int(b));
+    }
+  }
+  return EXIT_SUCCESS;
+}
+
+// ---- progress and time budget of the solve ------------------------------------------------------
+
+template <class Mesh>
+int test_budget()
+{
+  std::cout << "[" << mesh_name<Mesh>() << "] progress callback and running-time limit" << std::endl;
+  Mesh m;
+  PE::internal::make_grid_disk(12, m);
+  auto circle = PE::parameters::border_shape(PE::Border_shape::CIRCLE);
+  const Kq::Point_2 sentinel(7, -3);
+  auto uvq = make_uv_map(m, Kq::Point_2());
+  auto untouched = [&]() { for(auto v : vertices(m)) if(get(uvq, v) != sentinel) return false; return true; };
+  for(auto v : vertices(m)) put(uvq, v, sentinel);
+
+  std::size_t calls = 0;
+  PE::Error_code ec = PE::tutte_embedding(m, null_h<Mesh>(), uvq,
+                        circle.callback(std::function<bool(double)>([&](double) { ++calls; return false; })));
+  std::cout << "  callback returning false: " << PE::get_error_name(ec) << " after " << calls << " call(s)" << std::endl;
+  CHECK(ec == PE::ERROR_BUDGET_EXHAUSTED && calls == 1 && untouched(), "stopped by the callback, uv map untouched");
+
+  std::vector<double> seen;
+  ec = PE::tutte_embedding(m, null_h<Mesh>(), uvq,
+         circle.callback(std::function<bool(double)>([&](double f) { seen.push_back(f); return seen.size() < 3; })));
+  std::cout << "  callback stopping at its third call: " << PE::get_error_name(ec) << ", last fraction " << seen.back() << std::endl;
+  CHECK(ec == PE::ERROR_BUDGET_EXHAUSTED && untouched(), "stopped on the way, uv map untouched");
+  CHECK(seen.size() == 3 && seen[1] > 0 && seen.back() > seen[1] && seen.back() < 1, "progress inside the solve");
+
+  ec = PE::tutte_embedding(m, null_h<Mesh>(), uvq, circle.maximum_running_time(0.));
+  CHECK(ec == PE::ERROR_BUDGET_EXHAUSTED && untouched(), "no time: ERROR_BUDGET_EXHAUSTED, uv map untouched");
+  ec = PE::tutte_embedding(m, null_h<Mesh>(), uvq, circle.maximum_running_time(-1.));
+  CHECK(ec == PE::ERROR_WRONG_PARAMETER && untouched(), "a negative time is a wrong parameter");
+
+  seen.clear();
+  ec = PE::tutte_embedding(m, null_h<Mesh>(), uvq,
+         circle.callback(std::function<bool(double)>([&](double f) { seen.push_back(f); return true; })).maximum_running_time(600.));
+  CHECK(ec == PE::OK, "Gmpq Tutte with a callback");
+  std::cout << "  " << seen.size() << " progress reports from " << seen.front() << " to " << seen.back() << std::endl;
+  CHECK(seen.size() > 2 && seen.front() == 0 && seen.back() == 1, "progress from 0 to 1");
+  for(std::size_t k = 1; k < seen.size(); ++k) CHECK(seen[k - 1] <= seen[k], "progress never goes back");
+  CHECK(PE::check_embedding(m, uvq).is_valid(), "the exact Tutte map is valid");
+
+  // the elimination gives the exact solution: the same rationals as Eigen's sparse LU
+  typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<CGAL::Eigen_sparse_matrix<CGAL::Gmpq>::EigenType, Eigen::COLAMDOrdering<int> > > LU;
+  auto uvl = make_uv_map(m, Kq::Point_2());
+  CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uvl, circle.sparse_linear_solver(LU())) == PE::OK, "Gmpq Tutte with Eigen's LU");
+  for(auto v : vertices(m)) CHECK(get(uvl, v) == get(uvq, v), "the same exact solution");
+
+  // the rational elimination alone (the fallback of the p-adic solve) gives the same rationals
+  {
+    PE::internal::Indexed_disk<Mesh> disk;
+    CHECK(PE::internal::make_indexed_disk(m, null_h<Mesh>(), disk) == PE::OK, "disk");
+    std::vector<std::vector<std::pair<std::size_t, double> > > adj;
+    CHECK(PE::internal::tutte_weights(disk, get(CGAL::vertex_point, m), PE::Weights::UNIFORM, adj) == PE::OK, "weights");
+    std::vector<Kq::Point_2> pos(disk.number_of_vertices());
+    for(std::size_t i = 0; i < pos.size(); ++i) pos[i] = get(uvq, disk.vertices[i]);
+    PE::internal::Tutte_system<CGAL::Gmpq> S;
+    PE::internal::assemble_tutte_system(disk, adj, pos, S);
+    PE::internal::Progress_budget budget;
+    std::vector<CGAL::Gmpq> eu, ev, lu, lv;
+    CHECK(PE::internal::solve_by_elimination(S, budget, eu, ev) == PE::OK, "rational elimination");
+    CHECK(PE::internal::solve_by_p_adic_lifting(S, budget, lu, lv) == PE::OK, "p-adic lifting");
+    CHECK(eu == lu && ev == lv, "the same exact solution");
+    for(std::size_t i = 0; i < pos.size(); ++i)
+      if(S.row[i] >= 0) CHECK(eu[S.row[i]] == pos[i].x() && ev[S.row[i]] == pos[i].y(), "the solution of tutte_embedding");
+  }
+
+  // mean value weights (a non-symmetric system), exact: valid
+  CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uvq, PE::parameters::weights(PE::Weights::MEAN_VALUE, circle)) == PE::OK, "exact Floater");
+  CHECK(PE::check_embedding(m, uvq).is_valid(), "exact Floater is valid");
+
+  // MPFR goes through the elimination too
+  auto uvf = make_uv_map(m, Kfr::Point_2());
+  seen.clear();
+  CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uvf,
+          circle.callback(std::function<bool(double)>([&](double f) { seen.push_back(f); return true; }))) == PE::OK, "Gmpfr Tutte");
+  CHECK(seen.size() > 2 && seen.back() == 1 && PE::check_embedding(m, uvf).is_valid(), "Gmpfr Tutte with progress is valid");
+
+  // double: the factorization cannot be observed, progress before and after
+  auto uvd = make_uv_map(m, Epick::Point_2());
+  seen.clear();
+  CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uvd,
+          circle.callback(std::function<bool(double)>([&](double f) { seen.push_back(f); return true; }))) == PE::OK, "double Tutte");
+  CHECK(seen.size() >= 2 && seen.front() == 0 && seen.back() == 1, "double Tutte reports 0 and 1");
+  const Epick::Point_2 dsent(5, 5);
+  for(auto v : vertices(m)) put(uvd, v, dsent);
+  CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uvd, circle.callback(std::function<bool(double)>([](double) { return false; })))
+          == PE::ERROR_BUDGET_EXHAUSTED, "double Tutte stopped");
+  for(auto v : vertices(m)) CHECK(get(uvd, v) == dsent, "double uv map untouched");
+  return EXIT_SUCCESS;
+}
+
+// ---- geom_traits ---------------------------------------------------------------------------------
+
+// The default traits with an orientation predicate that counts its calls.
+struct Counting_traits : public PE::Progressive_embedding_traits_2<Kq>
+{
+  typedef PE::Progressive_embedding_traits_2<Kq> Base;
+  static inline std::size_t calls = 0;
+  struct Exact_orientation_2
+  {
+    typedef CGAL::Orientation result_type;
+    CGAL::Orientation operator()(const Kq::Point_2& p, const Kq::Point_2& q, const Kq::Point_2& r) const
+    { ++calls; return Base::Exact_orientation_2()(p, q, r); }
+  };
+  Exact_orientation_2 exact_orientation_2_object() const { return Exact_orientation_2(); }
+};
+
+template <class Mesh>
+int test_traits()
+{
+  std::cout << "[" << mesh_name<Mesh>() << "] geom_traits" << std::endl;
+  Mesh m;
+  PE::internal::make_grid_disk(6, m);
+  auto uvq = make_uv_map(m, Kq::Point_2());
+  CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uvq, PE::parameters::border_shape(PE::Border_shape::CIRCLE)) == PE::OK, "Tutte");
+  Counting_traits::calls = 0;
+  CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uvq, fixed_border().geom_traits(Counting_traits())) == PE::OK, "fixed border");
+  const std::size_t tutte_calls = Counting_traits::calls;
+  Counting_traits::calls = 0;
+  const PE::Embedding_report r = PE::check_embedding(m, uvq, CGAL::parameters::geom_traits(Counting_traits()));
+  const std::size_t check_calls = Counting_traits::calls;
+  Counting_traits::calls = 0;
+  const PE::Distortion_report d = PE::measure_distortion(m, uvq, CGAL::parameters::geom_traits(Counting_traits()));
+  std::cout << "  orientation calls: tutte_embedding " << tutte_calls << ", check_embedding " << check_calls
+            << ", measure_distortion " << Counting_traits::calls << std::endl;
+  CHECK(tutte_calls >= 20 && check_calls >= count_faces(m) && Counting_traits::calls >= count_faces(m), "the given traits decide the signs");
+  CHECK(r.is_valid() && d.status == PE::OK && d.max_symmetric_dirichlet == r.distortion.max_symmetric_dirichlet, "same report");
+  return EXIT_SUCCESS;
+}
+
+// ---- internal helpers, each alone ----------------------------------------------------------------
+
+template <class Mesh>
+int test_helpers()
+{
+  std::cout << "[" << mesh_name<Mesh>() << "] exact predicates and passes alone" << std::endl;
+  typedef Kq::Point_2 Q;
+  auto big = [](double x, double y, long e) { return Q(scaled_ft<CGAL::Gmpq>(x, e), scaled_ft<CGAL::Gmpq>(y, e)); };
+  for(long e : { 0L, 1100L, -1100L })
+  {
+    // orientation decided exactly where the intervals are infinite or zero
+    CHECK(PE::internal::exact_orientation(big(0, 0, e), big(1, 0, e), big(1, 1, e)) == CGAL::LEFT_TURN, "left turn at 2^" << e);
+    CHECK(PE::internal::exact_orientation(big(0, 0, e), big(1, 1, e), big(2, 2, e)) == CGAL::COLLINEAR, "collinear at 2^" << e);
+    const Q a = big(0, 0, e), b = big(2, 2, e), c = big(0, 2, e), d = big(2, 0, e), f = big(3, 3, e), g = big(5, 5, e);
+    PE::internal::Exact_orientation_2<Q> orient;
+    CHECK(PE::internal::closed_segments_intersect(a, b, c, d, orient), "crossing segments at 2^" << e);
+    CHECK(PE::internal::closed_segments_intersect(a, b, b, d, orient), "segments sharing an end");
+    CHECK(!PE::internal::closed_segments_intersect(a, b, f, g, orient), "disjoint collinear segments");
+    // a bowtie: one self-intersection; a square: none
+    CHECK(PE::internal::count_polygon_self_intersections(std::vector<Q>{ a, d, c, b }, orient, 10) == 1, "bowtie at 2^" << e);
+    CHECK(PE::internal::count_polygon_self_intersections(std::vector<Q>{ a, d, b, c }, orient, 10) == 0, "square at 2^" << e);
+    CHECK((PE::internal::count_border_intersections<Kq>(std::vector<Q>{ a, d, c, b }, 10) == 1), "the kernel interface");
+    // boxes enclose the points
+    PE::internal::Conservative_boxes<Q> boxes;
+    boxes.build(std::vector<Q>{ a, b, f });
+    CHECK(boxes.box[1][0] <= boxes.box[1][1] && boxes.box[2][0] > boxes.box[1][1] && std::isfinite(boxes.box[2][1]), "scaled boxes at 2^" << e);
+  }
+  {
+    // the passes on the doubly covered strip, in Gmpq at 2^1100
+    Mesh m;
+    auto uv = make_uv_map(m, Epick::Point_2());
+    make_double_covered_strip(m, uv, 30);
+    auto uvq = make_uv_map(m, Kq::Point_2());
+    scaled_copy<Kq>(m, uv, uvq, 1100);
+    PE::internal::Indexed_disk<Mesh> disk;
+    CHECK(PE::internal::make_indexed_disk(m, null_h<Mesh>(), disk) == PE::OK, "disk");
+    PE::internal::Uv_samples<Q> s;
+    PE::internal::sample_uv(disk, uvq, s);
+    CHECK(s.non_finite == 0 && s.shift < -1000, "samples scaled down");
+    for(std::size_t i = 0; i < s.X.size(); ++i) CHECK(std::isfinite(s.X[i]) && std::abs(s.X[i]) <= 2, "scaled sample");
+    PE::internal::Face_orientations o;
+    PE::internal::orientation_pass(disk, s, PE::internal::Exact_orientation_2<Q>(), o);
+    CHECK(o.flipped == 0 && o.degenerate == 0 && o.border_sign == CGAL::LEFT_TURN, "orientation pass");
+    const std::size_t bi = PE::internal::border_pass(disk, s, PE::internal::Exact_orientation_2<Q>(), 1000);
+    const PE::internal::Overlap_result ov = PE::internal::overlap_pass(disk, s, o, PE::internal::Exact_orientation_2<Q>(), 1000);
+    std::cout << "  strip at 2^1100: border intersections " << bi << ", overlapping pairs " << ov.overlapping_pairs << std::endl;
+    CHECK(bi > 0 && ov.checked && ov.overlapping_pairs > 0, "border and overlap passes");
+  }
+  {
+    // border placement alone: 8 border vertices evenly spaced on a square and a triangle
+    std::vector<double> s8(9);
+    for(std::size_t k = 0; k <= 8; ++k) s8[k] = double(k) / 8;
+    std::vector<Q> sq, tri, circ;
+    CHECK(PE::internal::square_border<CGAL::Gmpq>(s8, sq) == PE::OK && sq.size() == 8, "square border");
+    CHECK(sq[0] == Q(0, 0) && sq[1] == Q(CGAL::Gmpq(1, 2), 0) && sq[2] == Q(1, 0) && sq[4] == Q(1, 1) && sq[6] == Q(0, 1), "square corners");
+    const std::array<Q, 3> corners = {{ Q(0, 0), Q(4, 0), Q(0, 4) }};
+    CHECK((PE::internal::triangle_border<CGAL::Gmpq>(s8, std::vector<std::size_t>{ 0, 2, 5 }, corners, PE::Progressive_embedding_traits_2<Kq>(), tri)) == PE::OK,
+          "triangle border");
+    CHECK(tri[0] == corners[0] && tri[1] == Q(2, 0) && tri[2] == corners[1] && tri[5] == corners[2], "triangle corners");
+    CHECK((PE::internal::triangle_border<CGAL::Gmpq>(s8, std::vector<std::size_t>{ 0, 2, 5 }, {{ Q(0, 0), Q(1, 1), Q(2, 2) }},
+            PE::Progressive_embedding_traits_2<Kq>(), tri)) == PE::ERROR_DEGENERATE_BORDER, "collinear corners refused");
+    PE::internal::circle_border<double>(s8, circ);
+    CHECK(circ.size() == 8 && CGAL::to_double(circ[2].y()) == 1, "circle border");
+  }
+  {
+    // area and distortion passes alone on one right triangle, at 2^-1100 in Gmpq: the energy is scale invariant
+    Mesh m;
+    auto vpm = get(CGAL::vertex_point, m);
+    std::vector<vertex_descriptor<Mesh> > V(3);
+    const double P3[3][2] = { { 0, 0 }, { 1, 0 }, { 0, 1 } };
+    for(int k = 0; k < 3; ++k) { V[k] = add_vertex(m); put(vpm, V[k], Epick::Point_3(P3[k][0], P3[k][1], 0)); }
+    CGAL::Euler::add_face(V, m);
+    auto uvq = make_uv_map(m, Q());
+    put(uvq, V[0], big(0, 0, -1100)); put(uvq, V[1], big(2, 0, -1100)); put(uvq, V[2], big(0, 0.5, -1100));
+    PE::internal::Indexed_disk<Mesh> disk;
+    CHECK(PE::internal::make_indexed_disk(m, null_h<Mesh>(), disk) == PE::OK, "triangle disk");
+    PE::internal::Uv_samples<Q> s;
+    PE::internal::sample_uv(disk, uvq, s);
+    PE::internal::Face_orientations o;
+    PE::internal::orientation_pass(disk, s, PE::internal::Exact_orientation_2<Q>(), o);
+    PE::internal::Face_areas a;
+    PE::internal::area_pass(disk, s, o, a);
+    CHECK(a.min_area == 0 && a.scaled[0] > 0 && a.border_area_scaled == a.scaled[0], "area pass at 2^-1100");
+    bool has_3d = false;
+    const PE::Distortion_report d = PE::internal::distortion_pass(disk, vpm, s, o, a, has_3d);
+    CHECK(has_3d && std::abs(d.max_symmetric_dirichlet - 8.5) < 1e-12, "distortion pass: diag(2, 1/2) scores 8.5, got " << d.max_symmetric_dirichlet);
+    const PE::internal::Equilateral_energies eq = PE::internal::equilateral_energy_pass(disk, s, o, a, 1e20);
+    CHECK(std::isfinite(eq.max_energy) && eq.max_energy >= 4 && eq.high_energy_faces == 0, "equilateral energy pass");
+  }
+  {
+    // the elimination alone on a 3 x 3 system: 4x - y = 1, -x + 4y - z = 2, -y + 4z = 3
+    PE::internal::Tutte_system<CGAL::Gmpq> S;
+    S.n = 3;
+    S.off = { { { 1, CGAL::Gmpq(-1) } }, { { 0, CGAL::Gmpq(-1) }, { 2, CGAL::Gmpq(-1) } }, { { 1, CGAL::Gmpq(-1) } } };
+    S.diag = { CGAL::Gmpq(4), CGAL::Gmpq(4), CGAL::Gmpq(4) };
+    S.bu = { CGAL::Gmpq(1), CGAL::Gmpq(2), CGAL::Gmpq(3) };
+    S.bv = { CGAL::Gmpq(0), CGAL::Gmpq(0), CGAL::Gmpq(0) };
+    PE::internal::Progress_budget budget;
+    std::vector<CGAL::Gmpq> xu, xv;
+    CHECK(PE::internal::solve_by_elimination(S, budget, xu, xv) == PE::OK, "elimination");
+    CHECK(xu[0] == CGAL::Gmpq(13, 28) && xu[1] == CGAL::Gmpq(6, 7) && xu[2] == CGAL::Gmpq(27, 28) && xv[1] == 0, "exact solution");
+  }
+  // long double is refused at compile time (see Check_number_type); its trait says so
+  static_assert(!PE::internal::Is_supported_number_type<long double>::value, "long double is not supported");
+  static_assert(PE::internal::Is_supported_number_type<double>::value && PE::internal::Is_supported_number_type<CGAL::Gmpq>::value
+                && PE::internal::Is_supported_number_type<CGAL::Gmpfr>::value, "double, Gmpq, Gmpfr are");
+  return EXIT_SUCCESS;
+}
+
 int test_unreadable_file()
 {
   Surface_mesh m;
@@ -397,6 +805,11 @@ int run_group(const std::string& group, const std::string& data)
   if(group == "stacked") return test_stacked_triangulation<Mesh>(40);
   if(group == "bull") return test_bull<Mesh>(data);
   if(group == "disks") return test_disk_maps<Mesh>(data);
+  if(group == "exact_scales") return test_exact_scales<Mesh>();
+  if(group == "zero_length_border") return test_zero_length_border<Mesh>();
+  if(group == "budget") return test_budget<Mesh>();
+  if(group == "traits") return test_traits<Mesh>();
+  if(group == "helpers") return test_helpers<Mesh>();
   if(group == "bad_inputs")
   {
     RUN(test_bad_inputs<Mesh>());
@@ -409,7 +822,8 @@ int run_group(const std::string& group, const std::string& data)
 } // namespace
 
 // Usage: test_tutte_and_check DATA_DIR [GROUP [surface_mesh|polyhedron]]
-// GROUP: stacked, bull, disks, bad_inputs (default: all, on both mesh types)
+// GROUP: stacked, bull, disks, bad_inputs, exact_scales, zero_length_border, budget, traits, helpers
+// (default: all, on both mesh types)
 int main(int argc, char** argv)
 {
   if(argc < 2)
@@ -419,7 +833,8 @@ int main(int argc, char** argv)
   }
   const std::string data = argv[1];
   const std::string group = (argc > 2) ? argv[2] : "all", mesh = (argc > 3) ? argv[3] : "all";
-  const std::vector<std::string> groups = { "stacked", "bull", "disks", "bad_inputs" };
+  const std::vector<std::string> groups = { "stacked", "bull", "disks", "bad_inputs", "exact_scales", "zero_length_border",
+                                            "budget", "traits", "helpers" };
   bool ran = false;
   for(const std::string& g : groups)
   {

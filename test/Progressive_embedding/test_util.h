@@ -127,21 +127,56 @@ std::vector<std::array<std::size_t, 3> > face_list(const Mesh& m)
   return F;
 }
 
-// Independent certificate count: orientation of every face with CGAL::orientation on Epick
-// points (exact predicate), compared with the orientation `expected` of a valid map.
+// exact rationals of the coordinates, written independently of the package
+inline CGAL::Gmpq exact_rational(double d) { return CGAL::Gmpq(d); }
+inline CGAL::Gmpq exact_rational(const CGAL::Gmpq& q) { return q; }
+inline CGAL::Gmpq exact_rational(const CGAL::Gmpfr& f) { return CGAL::Gmpq(f); }
+
+// Independent certificate count: orientation of every face with CGAL::orientation on exact
+// rational points (whatever the number type and magnitude of the uv coordinates), compared
+// with the orientation `expected` of a valid map.
 template <class Mesh, class UVM>
 void count_orientations(const Mesh& m, const UVM& uv, CGAL::Orientation expected, std::size_t& flipped, std::size_t& degenerate)
 {
   flipped = degenerate = 0;
   for(auto f : faces(m))
   {
-    std::vector<Epick::Point_2> p;
+    std::vector<Kq::Point_2> p;
     for(auto v : CGAL::vertices_around_face(halfedge(f, m), m))
-      p.push_back(Epick::Point_2(CGAL::to_double(get(uv, v).x()), CGAL::to_double(get(uv, v).y())));
+      p.push_back(Kq::Point_2(exact_rational(get(uv, v).x()), exact_rational(get(uv, v).y())));
     const CGAL::Orientation o = CGAL::orientation(p[0], p[1], p[2]);
     if(o == CGAL::COLLINEAR) ++degenerate;
     else if(o != expected) ++flipped;
   }
+}
+
+// d * 2^e, exactly, in FT (Gmpfr: 53 bits, enough for a double)
+template <class FT>
+FT scaled_ft(double d, long e)
+{
+  if constexpr(std::is_same<FT, CGAL::Gmpq>::value)
+  {
+    CGAL::Gmpq q(d), r;
+    if(e >= 0) mpq_mul_2exp(r.mpq(), q.mpq(), static_cast<mp_bitcnt_t>(e));
+    else mpq_div_2exp(r.mpq(), q.mpq(), static_cast<mp_bitcnt_t>(-e));
+    return r;
+  }
+  else
+  {
+    static_assert(std::is_same<FT, CGAL::Gmpfr>::value, "Gmpq or Gmpfr");
+    CGAL::Gmpfr r(d, 53); // exact; r is not shared, its value can be scaled in place
+    mpfr_mul_2si(r.fr(), r.fr(), e, MPFR_RNDN);
+    return r;
+  }
+}
+
+// copies a double uv map into K, every coordinate times 2^e exactly
+template <class K, class Mesh, class From, class To>
+void scaled_copy(const Mesh& m, const From& from, To& to, long e)
+{
+  typedef typename K::FT FT;
+  for(auto v : vertices(m))
+    put(to, v, typename K::Point_2(scaled_ft<FT>(get(from, v).x(), e), scaled_ft<FT>(get(from, v).y(), e)));
 }
 
 template <class Mesh>
@@ -151,7 +186,7 @@ bool read_mesh(const std::string& filename, Mesh& m)
   return true;
 }
 
-// The Tutte-failure protocol's pins (DESIGN.md section 6), clockwise.
+// The Tutte-failure protocol's pins, clockwise.
 template <class K, class UVM, class VD>
 void pin_corners(UVM& uv, const std::array<VD, 3>& c)
 {

@@ -14,9 +14,21 @@ whatever it is. With `CGAL::Exact_predicates_inexact_constructions_kernel` and w
 kernels, `Orientation_2` is already exact; with `CGAL::Simple_cartesian<CGAL::Gmpfr>` or
 `CGAL::Simple_cartesian<double>` it is not.
 
-The number type `FT` must be a field type: `double`, an exact rational type
-(`CGAL::Gmpq`, `CGAL::Lazy_exact_nt<...>`), or `CGAL::Gmpfr`. A ring such as `CGAL::Mpzf`
-is not suitable, because the algorithms divide (linear solves, barycenters, line searches).
+The number type `FT` must be a field type: `float`, `double`, an exact rational type
+(`CGAL::Gmpq`, `CGAL::Lazy_exact_nt<...>`, `boost::multiprecision` rationals), or `CGAL::Gmpfr`.
+A ring such as `CGAL::Mpzf` is not suitable, because the algorithms divide (linear solves,
+barycenters, line searches). `long double` is not supported: the exact predicates decide signs
+in double or in rationals, and a `long double` would be rounded to double there. The default
+traits and every function of the package reject these types at compile time with a message
+naming the supported ones.
+
+A model is passed to the functions of the package with the named parameter
+`CGAL::parameters::geom_traits()` (`tutte_embedding()`, `check_embedding()`,
+`measure_distortion()`); by default they use
+`CGAL::Progressive_embedding::Progressive_embedding_traits_2<K>` with `K` the kernel of the uv
+map's point type. The certificate decides every sign with `Exact_orientation_2` and exact
+comparisons of coordinates, so a model whose `Exact_orientation_2` is exact makes the certificate
+exact.
 
 \cgalHasModel `CGAL::Progressive_embedding::Progressive_embedding_traits_2<K>`, for any %CGAL `Kernel` `K`
 whose `FT` is one of the types above.
@@ -67,7 +79,8 @@ A function object providing
 `CGAL::Orientation operator()(const Point_2& p, const Point_2& q, const Point_2& r)`
 with the same meaning as `Orientation_2`, but whose result is the exact sign of the
 orientation determinant of the three points as they are represented in `FT`,
-for every supported number type.
+for every supported number type and at every magnitude of the coordinates (values beyond the range
+of `double`, such as rationals of size 2^1100 or 2^-1100, included).
 The validity certificate (`check_embedding()`) and every test deciding whether a
 triangle of an embedding is positively oriented use this predicate.
 */

@@ -10,6 +10,7 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Progressive_embedding/internal/number_utils.h>
+#include <CGAL/Progressive_embedding/internal/exact_predicates.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Interval_nt.h>
@@ -30,9 +31,11 @@ namespace Progressive_embedding {
 /// kernel predicates round, it is an interval filter with an exact fallback on
 /// rationals (an MPFR value converts exactly to a `CGAL::Gmpq`).
 ///
-/// \tparam K a model of `Kernel` whose `FT` is `double`, an exact field number type
-///           (`CGAL::Gmpq`, `CGAL::Lazy_exact_nt`, ...) or `CGAL::Gmpfr`.
-///           `CGAL::Mpzf` is rejected at compile time (it is a ring).
+/// \tparam K a model of `Kernel` whose `FT` is `float`, `double`, an exact field number type
+///           (`CGAL::Gmpq`, `CGAL::Lazy_exact_nt`, `boost::multiprecision` rationals) or `CGAL::Gmpfr`.
+///           Other number types are rejected at compile time with a message naming the supported ones:
+///           `long double` (the exact predicates would round it to double), `CGAL::Mpzf` (a ring)
+///           and integral types.
 ///
 /// \cgalModels `ProgressiveEmbeddingTraits_2`
 template <class K>
@@ -54,7 +57,8 @@ public:
   /// `true` when `FT` computes exactly (then no smoothing is needed for insertion, Lemma A.11)
   static constexpr bool has_exact_constructions = internal::Is_exact_ft<FT>::value;
 
-  /// Orientation predicate, exact whatever the number type.
+  /// Orientation predicate, exact whatever the number type (`internal/exact_predicates.h`:
+  /// an interval filter used only on finite bounds, then exact arithmetic).
   struct Exact_orientation_2
   {
     /// the result type
@@ -63,36 +67,7 @@ public:
     /// returns the orientation of the triangle `(p, q, r)`, exactly
     CGAL::Orientation operator()(const Point_2& p, const Point_2& q, const Point_2& r) const
     {
-      if constexpr(std::is_floating_point<FT>::value)
-      {
-        typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
-        return Epick::Orientation_2()(Epick::Point_2(double(p.x()), double(p.y())),
-                                      Epick::Point_2(double(q.x()), double(q.y())),
-                                      Epick::Point_2(double(r.x()), double(r.y())));
-      }
-      else if constexpr(internal::Is_exact_ft<FT>::value)
-      {
-        return typename K::Orientation_2()(p, q, r);
-      }
-      else
-      {
-        // interval filter, then exact rationals
-        {
-          typedef CGAL::Interval_nt<false> I;
-          typename I::Protector protector;
-          const I px(CGAL::to_interval(p.x())), py(CGAL::to_interval(p.y()));
-          const I qx(CGAL::to_interval(q.x())), qy(CGAL::to_interval(q.y()));
-          const I rx(CGAL::to_interval(r.x())), ry(CGAL::to_interval(r.y()));
-          const I det = (qx - px) * (ry - py) - (qy - py) * (rx - px);
-          if(det.inf() > 0) return CGAL::LEFT_TURN;
-          if(det.sup() < 0) return CGAL::RIGHT_TURN;
-        }
-        using internal::to_rational;
-        const CGAL::Gmpq px = to_rational(p.x()), py = to_rational(p.y());
-        const CGAL::Gmpq det = (to_rational(q.x()) - px) * (to_rational(r.y()) - py)
-                             - (to_rational(q.y()) - py) * (to_rational(r.x()) - px);
-        return CGAL::Orientation(CGAL::sign(det));
-      }
+      return internal::exact_orientation(p, q, r);
     }
   };
 
@@ -120,6 +95,7 @@ struct Uv_map_types
   typedef typename CGAL::Kernel_traits<Point_2>::Kernel             Kernel;
   typedef typename Get_pe_traits<Kernel>::type                      Traits;
   typedef typename Traits::FT                                       FT;
+  static_assert(Check_number_type<FT>::value, "");
 };
 
 } // namespace internal

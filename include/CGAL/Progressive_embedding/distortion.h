@@ -12,6 +12,8 @@
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 #include <CGAL/Progressive_embedding/internal/symmetric_dirichlet.h>
+#include <CGAL/Progressive_embedding/internal/check_passes.h>
+#include <CGAL/Progressive_embedding/Progressive_embedding_traits_2.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
@@ -145,7 +147,91 @@ std::vector<Face_distortion> face_distortions(const Indexed_disk<TriangleMesh>& 
   return out;
 }
 
+// Distortion pass: the distortion of every correctly oriented face against its 3D triangle,
+// aggregated. Computed on the scaled coordinates (the measures are scale invariant).
+// `has_3d` receives whether the 3D triangles have a positive total area and the border encloses some.
+template <class TriangleMesh, class VPM, class Point_2>
+Distortion_report distortion_pass(const Indexed_disk<TriangleMesh>& disk, VPM vpm, const Uv_samples<Point_2>& s,
+                                  const Face_orientations& o, const Face_areas& a, bool& has_3d)
+{
+  const std::size_t nf = disk.number_of_faces();
+  const double sgn = (o.border_sign == CGAL::RIGHT_TURN) ? -1. : 1.;
+  std::vector<double> rel_area(nf, 0.);
+  for(std::size_t f = 0; f < nf; ++f)
+    rel_area[f] = (o.face_ok[f] && o.fo[f] == o.border_sign) ? a.scaled[f] : 0.;
+  const std::vector<Face_distortion> fds = face_distortions(disk, vpm, s.X, s.Y, sgn, rel_area, a.border_area_scaled);
+  Distortion_report r;
+  aggregate_distortion(fds, r);
+  double wsum = 0;
+  for(const Face_distortion& fd : fds) wsum += fd.weight;
+  has_3d = wsum > 0 && a.border_area_scaled > 0;
+  return r;
+}
+
+// The traits named by `geom_traits`, or the default traits of the uv map's point type.
+template <class VertexUVMap, class NamedParameters>
+struct Check_traits
+{
+  typedef typename Uv_map_types<VertexUVMap>::Traits                              Default_traits;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<
+            CGAL::internal_np::geom_traits_t, NamedParameters, Default_traits>::type type;
+  static_assert(std::is_same<typename type::Point_2, typename Uv_map_types<VertexUVMap>::Point_2>::value,
+                "the geom_traits' Point_2 must be the value type of the uv map");
+};
+
 } // namespace internal
+
+/// \ingroup PkgProgressiveEmbeddingMainFunctions
+///
+/// measures the distortion of the uv map `uvm` of the disk `tm` against its 3D triangles (see
+/// `Distortion_report`). The values are the ones `check_embedding()` reports (the same passes:
+/// exact orientations, then the measures on the coordinates scaled by a power of two, so that
+/// they do not depend on the magnitude of the coordinates).
+///
+/// \tparam TriangleMesh a model of `FaceGraph`
+/// \tparam VertexUVMap a model of `ReadablePropertyMap` with `Point_2` values
+/// \tparam NamedParameters a sequence of named parameters
+/// \param tm the mesh \param uvm the uv map
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the 3D points}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `Point_3` values}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{the traits class whose exact orientation predicate decides the face and border orientations}
+///     \cgalParamType{a model of `ProgressiveEmbeddingTraits_2` whose `Point_2` is the uv map's value type}
+///     \cgalParamDefault{`Progressive_embedding_traits_2<K>`, `K` the kernel of the uv map's point type}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <typename TriangleMesh, typename VertexUVMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Distortion_report measure_distortion(const TriangleMesh& tm, VertexUVMap uvm,
+                                     const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename internal::Check_traits<VertexUVMap, CGAL_NP_CLASS>::type Traits;
+  typedef typename internal::Uv_map_types<VertexUVMap>::Point_2             Point_2;
+  const Traits traits = choose_parameter<Traits>(get_parameter(np, CGAL::internal_np::geom_traits));
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+
+  Distortion_report r;
+  internal::Indexed_disk<TriangleMesh> disk;
+  r.status = internal::make_indexed_disk(tm, boost::graph_traits<TriangleMesh>::null_halfedge(), disk);
+  if(r.status != OK) return r;
+  internal::Uv_samples<Point_2> samples;
+  internal::sample_uv(disk, uvm, samples);
+  internal::Face_orientations orientations;
+  internal::orientation_pass(disk, samples, traits.exact_orientation_2_object(), orientations);
+  internal::Face_areas areas;
+  internal::area_pass(disk, samples, orientations, areas);
+  bool has_3d = false;
+  r = internal::distortion_pass(disk, vpm, samples, orientations, areas, has_3d);
+  r.status = OK;
+  return r;
+}
 
 } // namespace Progressive_embedding
 } // namespace CGAL
@@ -153,6 +239,3 @@ std::vector<Face_distortion> face_distortions(const Indexed_disk<TriangleMesh>& 
 #include <CGAL/enable_warnings.h>
 
 #endif // CGAL_PROGRESSIVE_EMBEDDING_DISTORTION_H
-
-// measure_distortion() is defined with check_embedding(), which computes the same values.
-#include <CGAL/Progressive_embedding/check_embedding.h>

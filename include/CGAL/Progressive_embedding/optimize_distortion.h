@@ -94,6 +94,11 @@ namespace Progressive_embedding {
 ///     \cgalParamType{`Distortion_energy`}
 ///     \cgalParamDefault{`Distortion_energy::SYMMETRIC_DIRICHLET`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{the traits class whose exact orientation predicate certifies every step}
+///     \cgalParamType{a model of `ProgressiveEmbeddingTraits_2` whose `Point_2` is the uv map's value type}
+///     \cgalParamDefault{`Progressive_embedding_traits_2<K>`, `K` the kernel of the uv map's point type}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{the 3D points}
 ///     \cgalParamType{a model of `ReadablePropertyMap` with `Point_3` values}
@@ -135,7 +140,9 @@ Error_code optimize_distortion(const TriangleMesh& tm, VertexUVMap uvm,
   using CGAL::parameters::get_parameter;
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor    vertex_descriptor;
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
-  typedef internal::Distortion_optimizer<TriangleMesh, VertexUVMap, decltype(vpm), ConcurrencyTag> Optimizer;
+  typedef typename internal::Check_traits<VertexUVMap, CGAL_NP_CLASS>::type Traits;
+  typedef internal::Distortion_optimizer<TriangleMesh, VertexUVMap, decltype(vpm), ConcurrencyTag, Traits> Optimizer;
+  const Traits traits = choose_parameter<Traits>(get_parameter(np, CGAL::internal_np::geom_traits));
 
   Optimization_statistics local_stats;
   Optimization_statistics* stats_out =
@@ -154,7 +161,7 @@ Error_code optimize_distortion(const TriangleMesh& tm, VertexUVMap uvm,
   const std::vector<vertex_descriptor> constrained =
     choose_parameter(get_parameter(np, internal_np::constrained_vertices), std::vector<vertex_descriptor>());
 
-  Optimizer optimizer(tm, uvm, vpm, settings);
+  Optimizer optimizer(tm, uvm, vpm, settings, traits);
   Error_code ec = optimizer.initialize(constrained, stats);
   stats.energy_before = stats.report.mean_energy_3d;
   if(ec != OK) return ec;                                   // nothing written

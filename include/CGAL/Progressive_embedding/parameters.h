@@ -143,7 +143,7 @@ template <typename T> unspecified_type statistics(const T& t);
 /// area (`double`; default 1e-12 in floating point, 0 in exact arithmetic)
 template <typename T> unspecified_type minimum_area_ratio(const T& t);
 /// \ingroup PkgProgressiveEmbeddingNamedParameters
-/// `optimize_distortion()` stops when an iteration lowers the energy by less than this fraction (`double`, default 1e-4)
+/// `optimize_distortion()` has converged when two consecutive iterations each lower the energy by less than this fraction (`double`, default 1e-5)
 template <typename T> unspecified_type convergence_tolerance(const T& t);
 /// \ingroup PkgProgressiveEmbeddingNamedParameters
 /// whether `optimize_distortion()` may move the border vertices (`bool`, default `false`); the border stays simple

@@ -16,6 +16,8 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Progressive_embedding/Error_code.h>
+#include <CGAL/Progressive_embedding/IO/Read_result.h>
+#include <CGAL/Progressive_embedding/IO/internal/atomic_output.h>
 #include <CGAL/Progressive_embedding/internal/number_utils.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -34,8 +36,10 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cerrno>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <exception>
 #include <fstream>
 #include <iostream>
@@ -49,32 +53,16 @@
 #include <utility>
 #include <vector>
 
+#include <sys/stat.h>
+
 namespace CGAL {
 namespace Progressive_embedding {
 namespace IO {
 
 /// \ingroup PkgProgressiveEmbeddingIO
 ///
-/// The outcome of `read_OBJ_with_uv()`: a status, and where and why reading failed.
-struct OBJ_read_result
-{
-  /// `OK`, or the reason of the failure
-  Error_code status = OK;
-  /// the 1-based number of the offending line; 0 when the error concerns no line
-  /// (`ERROR_EMPTY_MESH`, `ERROR_CANNOT_READ_FILE` on opening) or on success
-  std::size_t line = 0;
-  /// a human-readable explanation; empty on success
-  std::string message;
-  /// the number of `v` lines read (all of them on success)
-  std::size_t number_of_positions = 0;
-  /// the number of `vt` lines read (all of them on success)
-  std::size_t number_of_texture_coordinates = 0;
-  /// the number of faces read (all of them on success)
-  std::size_t number_of_faces = 0;
-
-  /// returns `true` if and only if `status == OK`
-  explicit operator bool() const { return status == OK; }
-};
+/// The former name of `Read_result`, the outcome of `read_OBJ_with_uv()`.
+typedef Read_result OBJ_read_result;
 
 #ifndef DOXYGEN_RUNNING
 namespace internal {
@@ -186,7 +174,7 @@ struct Obj_face
 };
 
 // Error reporting
-inline OBJ_read_result& obj_fail(OBJ_read_result& r, Error_code c, std::size_t line, std::string msg)
+inline Read_result& obj_fail(Read_result& r, Error_code c, std::size_t line, std::string msg)
 {
   r.status = c;
   r.line = line;
@@ -231,7 +219,7 @@ struct Obj_soup
 };
 
 // Parses the whole stream; on error, fills `r` and returns false.
-inline bool obj_parse(std::istream& in, Obj_soup& soup, OBJ_read_result& r)
+inline bool obj_parse(std::istream& in, Obj_soup& soup, Read_result& r)
 {
   std::string line;
   std::vector<std::string_view> tok;
@@ -405,6 +393,20 @@ struct Obj_stream_state_guard
   ~Obj_stream_state_guard() { out.flags(flags); out.precision(precision); out.imbue(locale); }
 };
 
+// Opens `filename` for reading; returns "" on success, or why it cannot be read (folders are
+// refused here: on POSIX systems an ifstream opens them and then reads nothing).
+inline std::string open_for_reading(const std::string& filename, std::ifstream& in)
+{
+  struct stat st;
+  if(::stat(filename.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    return "cannot read '" + filename + "': " + std::strerror(EISDIR);
+  errno = 0;
+  in.open(filename, std::ios::binary);
+  if(!in)
+    return "cannot open '" + filename + "': " + std::strerror(errno != 0 ? errno : ENOENT);
+  return std::string();
+}
+
 template <class TriangleMesh, class NamedParameters>
 struct Obj_point_3
 {
@@ -425,7 +427,8 @@ struct Obj_point_3
 /// A file with 3643 `v` and 3791 `vt` cut into a disk thus gives a disk with 3791 vertices.
 ///
 /// The mesh vertices are the `vt` entries referenced by at least one face, in
-/// increasing `vt` order (file order); unreferenced `vt` entries are dropped.
+/// increasing `vt` order (file order); unreferenced `vt` entries are dropped (counted in
+/// `Read_result::number_of_unreferenced_vertices`), as `read_polygon_mesh()` drops unreferenced vertices.
 /// The 3D point of a vertex is the `v` that the faces pair with its `vt`; pairing a
 /// `vt` with two different `v` is an error.
 ///
@@ -480,7 +483,7 @@ struct Obj_point_3
 ///
 /// \sa `write_OBJ_with_uv()`
 template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
-OBJ_read_result
+Read_result
 read_OBJ_with_uv(std::istream& in, TriangleMesh& tm, VertexUVMap uvm,
                  std::vector<std::size_t>* vt_to_v = nullptr,
                  std::vector<typename boost::property_traits<
@@ -496,7 +499,7 @@ read_OBJ_with_uv(std::istream& in, TriangleMesh& tm, VertexUVMap uvm,
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
 
-  OBJ_read_result r;
+  Read_result r;
   if(vt_to_v) vt_to_v->clear();
   if(positions) positions->clear();
   try
@@ -545,7 +548,7 @@ read_OBJ_with_uv(std::istream& in, TriangleMesh& tm, VertexUVMap uvm,
     std::vector<vertex_descriptor> vt_vertex(soup.uvs.size(), GT::null_vertex());
     for(std::size_t t = 0; t < soup.uvs.size(); ++t)
     {
-      if(vt_v[t] == none) continue;
+      if(vt_v[t] == none) { ++r.number_of_unreferenced_vertices; continue; }
       vertex_descriptor vd = add_vertex(tm);
       vt_vertex[t] = vd;
       put(vpm, vd, internal::obj_make_point_3<Point_3>(soup.positions[vt_v[t]]));
@@ -623,22 +626,24 @@ read_OBJ_with_uv(std::istream& in, TriangleMesh& tm, VertexUVMap uvm,
 /// see the stream overload for the format and the parameters.
 ///
 /// \return as the stream overload; the status is `ERROR_CANNOT_READ_FILE` if the file cannot be opened
+///         or is a folder (the message gives the system's reason, e.g. "Is a directory")
 template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
-OBJ_read_result
+Read_result
 read_OBJ_with_uv(const std::string& filename, TriangleMesh& tm, VertexUVMap uvm,
                  std::vector<std::size_t>* vt_to_v = nullptr,
                  std::vector<typename boost::property_traits<
                    typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::type>::value_type>* positions = nullptr,
                  const NamedParameters& np = CGAL::parameters::default_values())
 {
-  std::ifstream in(filename, std::ios::binary);
-  if(!in)
+  std::ifstream in;
+  const std::string why = internal::open_for_reading(filename, in);
+  if(!why.empty())
   {
-    OBJ_read_result r;
+    Read_result r;
     try { internal::obj_clear_mesh(tm); } catch(...) { }
     if(vt_to_v) vt_to_v->clear();
     if(positions) positions->clear();
-    return internal::obj_fail(r, ERROR_CANNOT_READ_FILE, 0, "cannot open '" + filename + "'");
+    return internal::obj_fail(r, ERROR_CANNOT_READ_FILE, 0, why);
   }
   return read_OBJ_with_uv(in, tm, uvm, vt_to_v, positions, np);
 }
@@ -809,7 +814,15 @@ write_OBJ_with_uv(std::ostream& out, const TriangleMesh& tm, VertexUVMap uvm,
 /// writes a triangle mesh with texture coordinates to the Wavefront OBJ file `filename`;
 /// see the stream overload for the parameters.
 ///
-/// \return as the stream overload; `ERROR_CANNOT_WRITE_FILE` if the file cannot be opened or written
+/// A failed write never leaves a partial file: when `filename` is a regular file or does not exist,
+/// the content is written to a temporary file in the same folder, which replaces `filename` only
+/// once it is completely written and closed (a symbolic link is kept and its target replaced);
+/// on failure the temporary file is removed and an existing `filename` is left untouched.
+/// Anything else (a device such as `/dev/null` or `/dev/stdout`, a pipe) is written directly.
+/// No exception escapes.
+///
+/// \return as the stream overload; `ERROR_CANNOT_WRITE_FILE` if the file cannot be written (a folder,
+///         no permission, no space left, a file size limit, ...)
 template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Error_code
 write_OBJ_with_uv(const std::string& filename, const TriangleMesh& tm, VertexUVMap uvm,
@@ -817,12 +830,9 @@ write_OBJ_with_uv(const std::string& filename, const TriangleMesh& tm, VertexUVM
                   const std::vector<typename internal::Obj_point_3<TriangleMesh, NamedParameters>::type>* positions = nullptr,
                   const NamedParameters& np = CGAL::parameters::default_values())
 {
-  std::ofstream out(filename, std::ios::binary);
-  if(!out) return ERROR_CANNOT_WRITE_FILE;
-  const Error_code ec = write_OBJ_with_uv(out, tm, uvm, vt_to_v, positions, np);
-  out.close();
-  if(ec == OK && !out) return ERROR_CANNOT_WRITE_FILE;
-  return ec;
+  return internal::write_file_atomically(filename, [&](std::ostream& out) {
+    return write_OBJ_with_uv(out, tm, uvm, vt_to_v, positions, np);
+  });
 }
 
 } // namespace IO

@@ -9,17 +9,23 @@
 #define CGAL_PROGRESSIVE_EMBEDDING_IO_SVG_H
 
 /// \file SVG.h
-/// A picture of a uv layout: faces coloured by distortion, flipped and degenerate
-/// faces highlighted, border, legend.
+/// A picture of a uv layout: faces colored by their distortion against the 3D triangles, flipped
+/// and degenerate faces highlighted, an inset zoomed on them, border, legend.
 
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/Progressive_embedding_traits_2.h>
-#include <CGAL/Progressive_embedding/internal/symmetric_dirichlet.h>
+#include <CGAL/Progressive_embedding/check_embedding.h>
+#include <CGAL/Progressive_embedding/distortion.h>
+#include <CGAL/Progressive_embedding/parameters.h>
+#include <CGAL/Progressive_embedding/internal/check_passes.h>
+#include <CGAL/Progressive_embedding/internal/indexed_disk.h>
+#include <CGAL/Progressive_embedding/IO/internal/atomic_output.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
@@ -34,15 +40,75 @@
 #include <charconv>
 #include <cmath>
 #include <cstddef>
-#include <fstream>
 #include <iostream>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Progressive_embedding {
 namespace IO {
+
+/// \ingroup PkgProgressiveEmbeddingIO
+///
+/// What `write_SVG()` draws. Every member has a default; `write_SVG()` returns
+/// `ERROR_WRONG_PARAMETER` (and writes nothing) if a value is out of its documented range.
+struct SVG_options
+{
+  /// a title drawn above the picture (escaped for XML; invalid UTF-8 bytes become '?')
+  std::string title;
+  /// if `true`, each face is filled with a color giving its symmetric Dirichlet energy against its
+  /// 3D triangle (the per-face value whose mean and max `check_embedding()` reports as
+  /// `Embedding_report::mean_energy_3d` and `Embedding_report::max_energy_3d`), on a logarithmic
+  /// scale from the isometry value 4 to the largest finite energy, with a legend giving the
+  /// minimum, median, mean and maximum; requires a disk with 3D points. If `false`, faces are
+  /// filled with `face_color`.
+  bool color_by_distortion = false;
+  /// if `true` and the map has flipped or degenerate faces, a framed inset, beside the legend, shows
+  /// the bounding box of those faces zoomed to the inset's size (whatever its size: a failure
+  /// region a million times smaller than the map is shown as well), and a rectangle marks that
+  /// region in the main view; nothing is added when there are no such faces
+  bool inset = false;
+  /// the size in pixels of the longer side of the main view; in [100, 100000]
+  double size = 1000;
+  /// the width in pixels of the face edges (0: no edges); in [0, 100]
+  double edge_width = 0.3;
+  /// the width in pixels of the border; in [0, 100]
+  double border_width = 2;
+  /// the fill color of flipped faces, `#rgb` or `#rrggbb`
+  std::string flipped_color = "#e4002b";
+  /// the color of the outline of degenerate (zero-area) faces, `#rgb` or `#rrggbb`
+  std::string degenerate_color = "#ff00ff";
+  /// the fill color of the other faces when `color_by_distortion` is `false`, `#rgb` or `#rrggbb`
+  std::string face_color = "#dce6f0";
+  /// the number of significant digits of the numbers printed (see `format_number()`); in [1, 17]
+  int significant_digits = 3;
+  /// the number of decimals of the pixel coordinates; in [0, 6]
+  int coordinate_decimals = 1;
+  /// the size in pixels of the inset; in [100, 100000]
+  double inset_size = 360;
+  /// the number of distinct colors of the distortion scale (faces of one color are one SVG path); in [2, 1024]
+  int color_levels = 64;
+};
+
+/// \ingroup PkgProgressiveEmbeddingIO
+///
+/// formats `x` as `std::printf("%.*g", significant_digits, x)` does in the "C" locale (e.g.
+/// `12.3`, `1.1e+15`, `4` for 3 digits), independently of the global locale; non-finite values
+/// give `inf`, `-inf` and `nan`, and a negative zero gives `0`. This is the format of every number that `write_SVG()` prints,
+/// so that a program printing a measure with it prints the same text as the picture.
+/// `significant_digits` is clamped to [1, 17].
+inline std::string format_number(double x, int significant_digits = 3)
+{
+  if(std::isnan(x)) return "nan";
+  if(std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  significant_digits = (std::max)(1, (std::min)(17, significant_digits));
+  if(x == 0) x = 0; // no "-0"
+  char buf[64];
+  const std::to_chars_result r = std::to_chars(buf, buf + sizeof(buf), x, std::chars_format::general, significant_digits);
+  return std::string(buf, r.ptr);
+}
 
 #ifndef DOXYGEN_RUNNING
 namespace internal {
@@ -52,7 +118,7 @@ inline void svg_append(std::string& s, double x, int decimals = 2)
 {
   char buf[64];
   if(!std::isfinite(x)) x = 0;
-  if(std::abs(x) < 0.5 * std::pow(10.0, -decimals)) x = 0; // no "-0.00"
+  if(std::abs(x) < 0.5 * std::pow(10.0, -decimals)) x = 0; // no "-0.0"
   const std::to_chars_result r = std::to_chars(buf, buf + sizeof(buf), x, std::chars_format::fixed, decimals);
   s.append(buf, r.ptr);
 }
@@ -113,25 +179,33 @@ inline std::string svg_escape(const std::string& in)
   return s;
 }
 
-// Colour scale: YlGnBu, light (energy 4, the minimum) to dark (1e4 and above), log scale.
-struct Svg_colour_map
+inline bool svg_is_color(const std::string& c)
 {
-  static constexpr int number_of_stops = 5;
+  if(c.size() != 4 && c.size() != 7) return false;
+  if(c[0] != '#') return false;
+  for(std::size_t i = 1; i < c.size(); ++i)
+    if(!((c[i] >= '0' && c[i] <= '9') || (c[i] >= 'a' && c[i] <= 'f') || (c[i] >= 'A' && c[i] <= 'F'))) return false;
+  return true;
+}
+
+inline bool svg_options_are_valid(const SVG_options& o)
+{
+  auto in = [](double x, double lo, double hi) { return std::isfinite(x) && x >= lo && x <= hi; };
+  return in(o.size, 100, 100000) && in(o.edge_width, 0, 100) && in(o.border_width, 0, 100)
+      && in(o.inset_size, 100, 100000) && o.significant_digits >= 1 && o.significant_digits <= 17
+      && o.coordinate_decimals >= 0 && o.coordinate_decimals <= 6 && o.color_levels >= 2 && o.color_levels <= 1024
+      && svg_is_color(o.flipped_color) && svg_is_color(o.degenerate_color) && svg_is_color(o.face_color);
+}
+
+// Sequential color scale (YlGnBu): light for low energies, dark blue for high ones; red, the
+// color of flipped faces, is not on it.
+struct Svg_color_map
+{
   static const std::array<std::array<int, 3>, 5>& stops()
   {
     static const std::array<std::array<int, 3>, 5> s = {{
       {{0xff, 0xff, 0xd9}}, {{0xc7, 0xe9, 0xb4}}, {{0x41, 0xb6, 0xc4}}, {{0x22, 0x5e, 0xa8}}, {{0x08, 0x1d, 0x58}} }};
     return s;
-  }
-  static constexpr double e_min = 4.;
-  static constexpr double e_max = 1e4;
-
-  // position in [0,1] of an energy on the scale
-  static double position(double e)
-  {
-    if(!(e > e_min)) return std::isnan(e) ? 1. : 0.;
-    if(!(e < e_max)) return 1.;
-    return std::log(e / e_min) / std::log(e_max / e_min);
   }
 
   static std::string hex(const std::array<int, 3>& c)
@@ -142,19 +216,80 @@ struct Svg_colour_map
     return s;
   }
 
-  static std::string colour(double t)
+  // the color at t in [0, 1]
+  static std::string color(double t)
   {
     if(!(t >= 0)) t = 0;
     if(t > 1) t = 1;
-    const double x = t * (number_of_stops - 1);
+    const int n = int(stops().size());
+    const double x = t * (n - 1);
     int i = int(std::floor(x));
-    if(i >= number_of_stops - 1) i = number_of_stops - 2;
+    if(i >= n - 1) i = n - 2;
     const double a = x - i;
     std::array<int, 3> c;
     for(int k = 0; k < 3; ++k)
-      c[k] = int(std::lround((1 - a) * stops()[i][k] + a * stops()[i + 1][k]));
+      c[k] = int(std::lround((1 - a) * stops()[std::size_t(i)][std::size_t(k)] + a * stops()[std::size_t(i) + 1][std::size_t(k)]));
     return hex(c);
   }
+};
+
+// Logarithmic energy scale from `lo` (at most 4, the isometry) to `hi`.
+struct Svg_energy_scale
+{
+  double lo = 4, hi = 40;
+  double position(double e) const
+  {
+    if(std::isnan(e) || e >= hi) return 1.;
+    if(!(e > lo)) return 0.;
+    return std::log(e / lo) / std::log(hi / lo);
+  }
+};
+
+// Sutherland-Hodgman clipping of a polygon to the box [x0, x1] x [y0, y1].
+inline void svg_clip(std::vector<std::array<double, 2> >& poly, double x0, double y0, double x1, double y1)
+{
+  std::vector<std::array<double, 2> > out;
+  for(int side = 0; side < 4 && !poly.empty(); ++side)
+  {
+    auto inside = [&](const std::array<double, 2>& p) {
+      switch(side) { case 0: return p[0] >= x0; case 1: return p[0] <= x1; case 2: return p[1] >= y0; default: return p[1] <= y1; }
+    };
+    auto cut = [&](const std::array<double, 2>& p, const std::array<double, 2>& q) {
+      const int axis = side < 2 ? 0 : 1;
+      const double v = side == 0 ? x0 : side == 1 ? x1 : side == 2 ? y0 : y1;
+      const double t = (v - p[std::size_t(axis)]) / (q[std::size_t(axis)] - p[std::size_t(axis)]);
+      std::array<double, 2> r = {{ p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]) }};
+      r[std::size_t(axis)] = v;
+      return r;
+    };
+    out.clear();
+    for(std::size_t i = 0; i < poly.size(); ++i)
+    {
+      const std::array<double, 2>& p = poly[i];
+      const std::array<double, 2>& q = poly[(i + 1) % poly.size()];
+      const bool ip = inside(p), iq = inside(q);
+      if(ip) out.push_back(p);
+      if(ip != iq) out.push_back(cut(p, q));
+    }
+    poly.swap(out);
+  }
+}
+
+// A view: uv coordinates to pixels, v axis up.
+struct Svg_view
+{
+  double xmin = 0, ymax = 0, scale = 1, ox = 0, oy = 0;
+  double X(double x) const { return ox + (x - xmin) * scale; }
+  double Y(double y) const { return oy + (ymax - y) * scale; }
+};
+
+// The classification of the faces and their energies, as check_embedding() computes them.
+struct Svg_faces
+{
+  std::vector<std::array<std::size_t, 3> > tri;  // vertex indices, in the order of faces(tm)
+  std::vector<int> kind;                         // 1 correctly oriented, -1 flipped, 0 degenerate, 2 non-finite corner
+  std::vector<double> energy;                    // symmetric Dirichlet against the 3D triangle
+  std::size_t flipped = 0, degenerate = 0, non_finite_vertices = 0;
 };
 
 } // namespace internal
@@ -162,18 +297,28 @@ struct Svg_colour_map
 
 /// \ingroup PkgProgressiveEmbeddingIO
 ///
-/// writes an SVG picture of the uv layout of `tm`, fit into a 1000 pixel box with the v axis up.
+/// writes an SVG picture of the uv layout of `tm`, fit into a `options.size` pixel box with the
+/// v axis up, with the legend (and the inset) on its right.
 ///
-/// Each face is filled with a colour giving its symmetric Dirichlet energy
-/// \f$ \|J\|^2 (1 + \det(J)^{-2}) \f$ with respect to an equilateral reference triangle whose area is
-/// the mean absolute uv face area, on a logarithmic scale from 4 (the minimum, light) to \f$10^4\f$
-/// and above (dark), computed in `double`. Faces whose exact orientation is opposite to that of the
-/// majority of the faces (flipped) are filled red; faces with zero area (degenerate) are outlined
-/// in magenta with a thick stroke; both also get a circle at their centroid so that they are visible
-/// on large meshes. Edges are thin, border edges thick. A legend gives the colour scale and the
-/// numbers of faces, flipped faces, degenerate faces, and faces with a non-finite coordinate (not drawn);
-/// the counts are in `<text>` elements with the ids `pe-count-faces`, `pe-count-flipped`,
-/// `pe-count-degenerate` and `pe-count-non-finite`.
+/// Faces are classified as `check_embedding()` does: exact orientations relative to the border's
+/// (or, when the mesh is not a disk, relative to the majority of the faces). Flipped faces are
+/// filled with `options.flipped_color`; degenerate (zero-area) faces are outlined with
+/// `options.degenerate_color`; both are also marked by a circle in the main view, so that they
+/// are visible on large meshes. Faces with a non-finite corner are not drawn. See `SVG_options`
+/// for the distortion colors and the inset.
+///
+/// Every number printed equals what `check_embedding()` reports, formatted by `format_number()`
+/// with `options.significant_digits` digits: the counts of faces, flipped and degenerate faces and
+/// non-finite vertices; with `color_by_distortion`, the legend's `median`, `mean` and `max` are
+/// `Embedding_report::distortion.symmetric_dirichlet_quantiles[0]`, `Embedding_report::mean_energy_3d`
+/// and `Embedding_report::max_energy_3d`, and `min` is the smallest of the per-face energies whose
+/// mean and max these are (`inf` when a face is flipped). The numbers are in `<text>` elements with
+/// the ids `pe-count-faces`, `pe-count-flipped`, `pe-count-degenerate`, `pe-count-non-finite`,
+/// `pe-energy-min`, `pe-energy-median`, `pe-energy-mean` and `pe-energy-max`; the inset is the group
+/// `pe-inset`, its region in the main view the rectangle `pe-inset-region`.
+///
+/// Faces of one color are one SVG path and pixel coordinates have `options.coordinate_decimals`
+/// decimals, so that the file stays small.
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 /// \tparam VertexUVMap a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
@@ -183,10 +328,16 @@ struct Svg_colour_map
 /// \param out the output stream
 /// \param tm the mesh
 /// \param uvm the uv coordinates of the vertices of `tm`
-/// \param title an optional title, drawn above the picture (escaped for XML)
+/// \param options what to draw
 /// \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
 ///
 /// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the 3D points, for the distortion}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///                    as key type and `%Point_3` as value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{geom_traits}
 ///     \cgalParamDescription{the traits providing the exact orientation predicate}
 ///     \cgalParamType{a model of `ProgressiveEmbeddingTraits_2` whose `Point_2` is the value type of `uvm`}
@@ -194,11 +345,14 @@ struct Svg_colour_map
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// \return `OK`; `ERROR_EMPTY_MESH` if `tm` has no face, `ERROR_NON_TRIANGULAR_MESH` if a face
-///         is not a triangle (nothing is written in both cases); `ERROR_CANNOT_WRITE_FILE` if the stream fails
+/// \return `OK`; nothing is written if the result is not `OK` or `ERROR_CANNOT_WRITE_FILE`:
+///         `ERROR_WRONG_PARAMETER` if an option is out of range, `ERROR_EMPTY_MESH` if `tm` has no face,
+///         `ERROR_NON_TRIANGULAR_MESH` if a face is not a triangle; with `color_by_distortion`, the
+///         status of `check_embedding()` if the mesh is not a disk (e.g. `ERROR_NOT_A_DISK`), and
+///         `ERROR_DEGENERATE_3D_FACE` if the 3D triangles have no area; `ERROR_CANNOT_WRITE_FILE` if
+///         the stream fails
 template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
-Error_code write_SVG(std::ostream& out, const TriangleMesh& tm, VertexUVMap uvm,
-                     const std::string& title = std::string(),
+Error_code write_SVG(std::ostream& out, const TriangleMesh& tm, VertexUVMap uvm, const SVG_options& options,
                      const NamedParameters& np = CGAL::parameters::default_values())
 {
   typedef boost::graph_traits<TriangleMesh>                              GT;
@@ -210,17 +364,22 @@ Error_code write_SVG(std::ostream& out, const TriangleMesh& tm, VertexUVMap uvm,
   typedef typename Progressive_embedding::internal::Get_pe_traits<K>::type Default_traits;
   typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::geom_traits_t,
                                                        NamedParameters, Default_traits>::type Traits;
-  typedef internal::Svg_colour_map                                       Colours;
+  namespace PI = Progressive_embedding::internal;
 
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
 
-  const Traits traits = choose_parameter<Traits>(get_parameter(np, CGAL::internal_np::geom_traits));
-  const typename Traits::Exact_orientation_2 orientation = traits.exact_orientation_2_object();
+  if(!internal::svg_options_are_valid(options)) return ERROR_WRONG_PARAMETER;
 
   try
   {
-    // vertices
+    const Traits traits = choose_parameter<Traits>(get_parameter(np, CGAL::internal_np::geom_traits));
+    const typename Traits::Exact_orientation_2 orientation = traits.exact_orientation_2_object();
+    const double inf = std::numeric_limits<double>::infinity();
+    const int dec = options.coordinate_decimals;
+    const int digits = options.significant_digits;
+
+    // ---- vertices and faces, in the order of vertices(tm) and faces(tm) (as the indexed disk)
     std::size_t nv = 0;
     auto vid = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
     std::vector<Point_2> uv;
@@ -231,12 +390,10 @@ Error_code write_SVG(std::ostream& out, const TriangleMesh& tm, VertexUVMap uvm,
       put(vid, vd, nv++);
       uv.push_back(get(uvm, vd));
       const double x = CGAL::to_double(uv.back().x()), y = CGAL::to_double(uv.back().y());
-      p.push_back({x, y});
-      finite.push_back(std::isfinite(x) && std::isfinite(y));
+      p.push_back({{x, y}});
+      finite.push_back(PI::is_finite_ft(uv.back().x()) && PI::is_finite_ft(uv.back().y()) && std::isfinite(x) && std::isfinite(y));
     }
-
-    // faces
-    std::vector<std::array<std::size_t, 3> > tri;
+    internal::Svg_faces F;
     for(face_descriptor f : faces(tm))
     {
       std::array<std::size_t, 3> t;
@@ -247,193 +404,358 @@ Error_code write_SVG(std::ostream& out, const TriangleMesh& tm, VertexUVMap uvm,
         t[k++] = get(vid, target(h, tm));
       }
       if(k != 3) return ERROR_NON_TRIANGULAR_MESH;
-      tri.push_back(t);
+      F.tri.push_back(t);
     }
-    const std::size_t nf = tri.size();
+    const std::size_t nf = F.tri.size();
     if(nf == 0) return ERROR_EMPTY_MESH;
+    F.kind.assign(nf, 2);
+    F.energy.assign(nf, inf);
 
-    // exact orientations; 2 marks a face with a non-finite coordinate
-    std::vector<int> sign(nf, 0);
-    std::size_t n_pos = 0, n_neg = 0, n_nonfinite = 0;
-    double area_sum = 0;
-    for(std::size_t i = 0; i < nf; ++i)
+    // ---- classification and energies: the passes of check_embedding()
+    Embedding_report report;
+    PI::Indexed_disk<TriangleMesh> disk;
+    const Error_code disk_status = PI::make_indexed_disk(tm, GT::null_halfedge(), disk);
+    double min_energy = inf;
+    if(disk_status == OK)
     {
-      const std::array<std::size_t, 3>& t = tri[i];
-      if(!finite[t[0]] || !finite[t[1]] || !finite[t[2]]) { sign[i] = 2; ++n_nonfinite; continue; }
-      const CGAL::Orientation o = orientation(uv[t[0]], uv[t[1]], uv[t[2]]);
-      sign[i] = (o == CGAL::LEFT_TURN) ? 1 : (o == CGAL::RIGHT_TURN ? -1 : 0);
-      if(sign[i] > 0) ++n_pos; else if(sign[i] < 0) ++n_neg;
-      const double a = Progressive_embedding::internal::signed_area(p[t[0]][0], p[t[0]][1], p[t[1]][0], p[t[1]][1],
-                                                                    p[t[2]][0], p[t[2]][1]);
-      if(std::isfinite(a)) area_sum += std::abs(a);
-    }
-    const int majority = (n_neg > n_pos) ? -1 : 1;
-    const std::size_t n_flipped = (majority > 0) ? n_neg : n_pos;
-    const std::size_t n_degenerate = nf - n_pos - n_neg - n_nonfinite;
-    const std::size_t n_finite_faces = nf - n_nonfinite;
-
-    // energies, in double
-    const double ref_area = n_finite_faces > 0 ? area_sum / double(n_finite_faces) : 0.;
-    const Progressive_embedding::internal::Reference_triangle<double> ref =
-      Progressive_embedding::internal::equilateral_reference<double>(ref_area, std::sqrt(3.));
-    std::vector<double> energy(nf, std::numeric_limits<double>::infinity());
-    double max_energy = 0;
-    for(std::size_t i = 0; i < nf; ++i)
-    {
-      if(sign[i] != majority) continue;
-      const std::array<std::size_t, 3>& t = tri[i];
-      bool ok = false;
-      double e = 0;
-      if(ref_area > 0 && std::isfinite(ref_area))
-        e = Progressive_embedding::internal::symmetric_dirichlet<double>(ref, p[t[0]][0], p[t[0]][1], p[t[1]][0], p[t[1]][1],
-                                                                         p[t[2]][0], p[t[2]][1], ok);
-      energy[i] = (ok && std::isfinite(e)) ? e : std::numeric_limits<double>::infinity();
-      max_energy = std::max(max_energy, energy[i]);
-    }
-
-    // frame: the drawing fits a 1000 px box, v axis up
-    double xmin = std::numeric_limits<double>::infinity(), ymin = xmin;
-    double xmax = -xmin, ymax = -xmin;
-    for(std::size_t i = 0; i < nf; ++i)
-    {
-      if(sign[i] == 2) continue;
-      for(std::size_t v : tri[i])
+      auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+      report = check_embedding(tm, uvm, Progressive_embedding::parameters::check_overlap(false,
+                                          CGAL::parameters::vertex_point_map(vpm).geom_traits(traits)));
+      if(report.status != OK) return report.status;
+      PI::Uv_samples<Point_2> samples;
+      PI::sample_uv(disk, uvm, samples);
+      PI::Face_orientations o;
+      PI::orientation_pass(disk, samples, orientation, o);
+      for(std::size_t f = 0; f < nf; ++f)
+        F.kind[f] = !o.face_ok[f] ? 2 : o.fo[f] == CGAL::COLLINEAR ? 0 : o.fo[f] == o.border_sign ? 1 : -1;
+      F.flipped = report.flipped;
+      F.degenerate = report.degenerate;
+      F.non_finite_vertices = report.non_finite;
+      if(options.color_by_distortion)
       {
-        xmin = std::min(xmin, p[v][0]); xmax = std::max(xmax, p[v][0]);
-        ymin = std::min(ymin, p[v][1]); ymax = std::max(ymax, p[v][1]);
+        if(!report.has_3d_energy) return ERROR_DEGENERATE_3D_FACE;
+        // the per-face values that check_embedding() aggregates (distortion pass)
+        PI::Face_areas areas;
+        PI::area_pass(disk, samples, o, areas);
+        const double sgn = (o.border_sign == CGAL::RIGHT_TURN) ? -1. : 1.;
+        std::vector<double> rel_area(nf, 0.);
+        for(std::size_t f = 0; f < nf; ++f)
+          rel_area[f] = (o.face_ok[f] && o.fo[f] == o.border_sign) ? areas.scaled[f] : 0.;
+        const std::vector<PI::Face_distortion> fds =
+          PI::face_distortions(disk, vpm, samples.X, samples.Y, sgn, rel_area, areas.border_area_scaled);
+        for(std::size_t f = 0; f < nf; ++f)
+        {
+          F.energy[f] = fds[f].symmetric_dirichlet;
+          min_energy = (std::min)(min_energy, F.energy[f]);
+        }
+      }
+    }
+    else
+    {
+      // not a disk: no report; orientations relative to the majority of the faces
+      if(options.color_by_distortion) return disk_status;
+      std::size_t n_pos = 0, n_neg = 0;
+      std::vector<int> sign(nf, 2);
+      for(std::size_t i = 0; i < nf; ++i)
+      {
+        const std::array<std::size_t, 3>& t = F.tri[i];
+        if(!finite[t[0]] || !finite[t[1]] || !finite[t[2]]) continue;
+        const CGAL::Orientation ori = orientation(uv[t[0]], uv[t[1]], uv[t[2]]);
+        sign[i] = (ori == CGAL::LEFT_TURN) ? 1 : (ori == CGAL::RIGHT_TURN ? -1 : 0);
+        if(sign[i] > 0) ++n_pos; else if(sign[i] < 0) ++n_neg;
+      }
+      const int majority = (n_neg > n_pos) ? -1 : 1;
+      for(std::size_t i = 0; i < nf; ++i)
+      {
+        F.kind[i] = sign[i] == 2 ? 2 : sign[i] == 0 ? 0 : sign[i] == majority ? 1 : -1;
+        if(F.kind[i] == -1) ++F.flipped;
+        if(F.kind[i] == 0) ++F.degenerate;
+      }
+      for(std::size_t v = 0; v < nv; ++v) if(!finite[v]) ++F.non_finite_vertices;
+    }
+
+    // ---- energy scale: from the isometry value 4 (or below) to the largest finite energy
+    internal::Svg_energy_scale scale_e;
+    if(options.color_by_distortion)
+    {
+      double lo = 4, hi = 0;
+      for(std::size_t f = 0; f < nf; ++f)
+        if(F.kind[f] == 1 && std::isfinite(F.energy[f])) { lo = (std::min)(lo, F.energy[f]); hi = (std::max)(hi, F.energy[f]); }
+      if(!(lo > 0)) lo = 4;
+      scale_e.lo = lo;
+      scale_e.hi = (std::max)(hi, 10 * lo);
+    }
+    const int levels = options.color_levels;
+    auto level_of = [&](double e) { return int(std::lround(scale_e.position(e) * (levels - 1))); };
+    auto level_color = [&](int l) { return internal::Svg_color_map::color(double(l) / double(levels - 1)); };
+
+    // ---- main view: the finite faces fit a size x size box
+    double xmin = inf, ymin = inf, xmax = -inf, ymax = -inf;
+    for(std::size_t i = 0; i < nf; ++i)
+    {
+      if(F.kind[i] == 2) continue;
+      for(std::size_t v : F.tri[i])
+      {
+        xmin = (std::min)(xmin, p[v][0]); xmax = (std::max)(xmax, p[v][0]);
+        ymin = (std::min)(ymin, p[v][1]); ymax = (std::max)(ymax, p[v][1]);
       }
     }
     if(!(xmin <= xmax)) { xmin = ymin = 0; xmax = ymax = 1; }
-    const double box = 1000., margin = 20., legend_w = 230., legend_h = 400.;
-    const double extent = std::max(xmax - xmin, ymax - ymin);
+    const double box = options.size, margin = 20.;
+    const double extent = (std::max)(xmax - xmin, ymax - ymin);
     double scale = (extent > 0 && std::isfinite(box / extent)) ? box / extent : 1.;
     if(!std::isfinite(scale * extent)) scale = 1.;
-    const double draw_w = std::max(1., (xmax - xmin) * scale), draw_h = std::max(1., (ymax - ymin) * scale);
-    const double title_h = title.empty() ? 0. : 36.;
-    const double ox = margin, oy = margin + title_h;
-    const double width = draw_w + 2 * margin + legend_w;
-    const double height = std::max(draw_h, legend_h) + 2 * margin + title_h;
-    auto X = [&](double x) { return ox + (x - xmin) * scale; };
-    auto Y = [&](double y) { return oy + (ymax - y) * scale; };
+    const double draw_w = (std::max)(1., (xmax - xmin) * scale), draw_h = (std::max)(1., (ymax - ymin) * scale);
+    const double title_h = options.title.empty() ? 0. : 36.;
+    internal::Svg_view view;
+    view.xmin = xmin; view.ymax = ymax; view.scale = scale; view.ox = margin; view.oy = margin + title_h;
 
-    auto points = [&](std::string& s, const std::array<std::size_t, 3>& t) {
-      s += "points=\"";
-      for(int k = 0; k < 3; ++k)
+    // ---- the inset region: bounding box of the flipped and degenerate faces
+    bool has_inset = false;
+    double rx0 = 0, ry0 = 0, side = 0;
+    if(options.inset)
+    {
+      double bx0 = inf, by0 = inf, bx1 = -inf, by1 = -inf;
+      for(std::size_t i = 0; i < nf; ++i)
       {
-        if(k) s += ' ';
-        internal::svg_append(s, X(p[t[k]][0])); s += ','; internal::svg_append(s, Y(p[t[k]][1]));
+        if(F.kind[i] != 0 && F.kind[i] != -1) continue;
+        for(std::size_t v : F.tri[i])
+        {
+          bx0 = (std::min)(bx0, p[v][0]); bx1 = (std::max)(bx1, p[v][0]);
+          by0 = (std::min)(by0, p[v][1]); by1 = (std::max)(by1, p[v][1]);
+        }
       }
-      s += '"';
-    };
+      if(bx0 <= bx1)
+      {
+        has_inset = true;
+        side = 1.3 * (std::max)(bx1 - bx0, by1 - by0); // a margin of context around the faces
+        if(!(side > 0)) side = extent > 0 ? extent * 1e-6 : 1.;
+        const double cx = 0.5 * (bx0 + bx1), cy = 0.5 * (by0 + by1);
+        rx0 = cx - 0.5 * side; ry0 = cy - 0.5 * side;
+      }
+    }
 
     std::string s;
-    s.reserve(200 + nf * 90);
+    s.reserve(4096 + nf * 40);
+    auto num = [](double x) { return internal::svg_number(x, 1); };
+    auto pt = [&](std::string& d, double x, double y) {
+      internal::svg_append(d, x, dec); d += ' '; internal::svg_append(d, y, dec);
+    };
+    // a polygon in pixels as a closed subpath
+    auto subpath = [&](std::string& d, const std::vector<std::array<double, 2> >& poly) {
+      for(std::size_t k = 0; k < poly.size(); ++k) { d += (k == 0 ? 'M' : 'L'); pt(d, poly[k][0], poly[k][1]); }
+      if(!poly.empty()) d += 'Z';
+    };
+    // Draws the faces through `to_px`, keeping the polygons that `keep` accepts (clipping them).
+    auto draw_faces = [&](std::string& g, auto to_px, auto keep, double stroke_scale) {
+      std::vector<std::string> by_level(static_cast<std::size_t>(levels));
+      std::string flipped, degenerate, border;
+      std::vector<std::array<double, 2> > poly;
+      for(std::size_t i = 0; i < nf; ++i)
+      {
+        if(F.kind[i] == 2) continue;
+        poly.clear();
+        for(std::size_t v : F.tri[i]) poly.push_back(to_px(p[v][0], p[v][1]));
+        if(!keep(poly)) continue;
+        if(F.kind[i] == 1)
+          subpath(by_level[options.color_by_distortion ? std::size_t(level_of(F.energy[i])) : 0], poly);
+        else if(F.kind[i] == -1) subpath(flipped, poly);
+        else subpath(degenerate, poly);
+      }
+      for(halfedge_descriptor h : halfedges(tm))
+      {
+        if(!is_border(h, tm)) continue;
+        const std::size_t a = get(vid, source(h, tm)), b = get(vid, target(h, tm));
+        if(!finite[a] || !finite[b]) continue;
+        poly.clear();
+        poly.push_back(to_px(p[a][0], p[a][1])); poly.push_back(to_px(p[b][0], p[b][1]));
+        if(!keep(poly) || poly.size() < 2) continue;
+        border += 'M'; pt(border, poly[0][0], poly[0][1]);
+        for(std::size_t k = 1; k < poly.size(); ++k) { border += 'L'; pt(border, poly[k][0], poly[k][1]); }
+      }
+      const std::string es = options.edge_width > 0
+        ? " stroke=\"#404040\" stroke-opacity=\"0.7\" stroke-width=\"" + internal::svg_number(options.edge_width * stroke_scale, 2)
+          + "\" stroke-linejoin=\"round\"" : std::string(" stroke=\"none\"");
+      for(int l = 0; l < levels; ++l)
+        if(!by_level[std::size_t(l)].empty())
+          g += "<path fill=\"" + (options.color_by_distortion ? level_color(l) : options.face_color) + "\"" + es
+             + " d=\"" + by_level[std::size_t(l)] + "\"/>\n";
+      if(!flipped.empty())
+        g += "<path class=\"pe-flipped\" fill=\"" + options.flipped_color + "\" stroke=\"" + options.flipped_color
+           + "\" stroke-width=\"" + internal::svg_number((std::max)(0.5, options.edge_width) * stroke_scale, 2)
+           + "\" stroke-linejoin=\"round\" d=\"" + flipped + "\"/>\n";
+      if(!border.empty() && options.border_width > 0)
+        g += "<path class=\"pe-border\" fill=\"none\" stroke=\"#000000\" stroke-width=\""
+           + internal::svg_number(options.border_width * stroke_scale, 2) + "\" stroke-linecap=\"round\" d=\"" + border + "\"/>\n";
+      if(!degenerate.empty())
+        g += "<path class=\"pe-degenerate\" fill=\"none\" stroke=\"" + options.degenerate_color
+           + "\" stroke-width=\"" + internal::svg_number(2.5 * stroke_scale, 2)
+           + "\" stroke-linejoin=\"round\" stroke-linecap=\"round\" d=\"" + degenerate + "\"/>\n";
+    };
+
+    // circles at the centroids of the flipped and degenerate faces, one path for each kind
+    auto markers = [&](auto to_px, auto visible) {
+      std::string mf, md, g;
+      for(std::size_t i = 0; i < nf; ++i)
+      {
+        if(F.kind[i] != -1 && F.kind[i] != 0) continue;
+        const std::array<std::size_t, 3>& t = F.tri[i];
+        const double cx = (p[t[0]][0] + p[t[1]][0] + p[t[2]][0]) / 3., cy = (p[t[0]][1] + p[t[1]][1] + p[t[2]][1]) / 3.;
+        const std::array<double, 2> c = to_px(cx, cy);
+        if(!visible(c[0], c[1])) continue;
+        // flipped: radius 6, on top of the degenerate ones (radius 9), so that both are seen
+        if(F.kind[i] == -1) { mf += 'M'; pt(mf, c[0] - 6, c[1]); mf += "a6 6 0 1 0 12 0a6 6 0 1 0 -12 0"; }
+        else                { md += 'M'; pt(md, c[0] - 9, c[1]); md += "a9 9 0 1 0 18 0a9 9 0 1 0 -18 0"; }
+      }
+      if(!md.empty()) g += "<path class=\"pe-degenerate-markers\" fill=\"none\" stroke=\"" + options.degenerate_color + "\" stroke-width=\"1.5\" d=\"" + md + "\"/>\n";
+      if(!mf.empty()) g += "<path class=\"pe-flipped-markers\" fill=\"none\" stroke=\"" + options.flipped_color + "\" stroke-width=\"2\" d=\"" + mf + "\"/>\n";
+      return g;
+    };
+
+    // ---- header
+    const double col_x = view.ox + draw_w + 24;
+    const double col_w = (std::max)(250., has_inset ? options.inset_size : 0.);
+    std::string legend, inset;
+    double ly = view.oy;
+    {
+      // legend
+      auto text = [&](const std::string& id, double x, double y, const std::string& t, const char* extra = "") {
+        legend += "<text" + (id.empty() ? std::string() : " id=\"" + id + "\"") + " x=\"" + num(x) + "\" y=\"" + num(y)
+                + "\"" + extra + ">" + t + "</text>\n";
+      };
+      legend += "<g id=\"pe-legend\" font-family=\"sans-serif\" font-size=\"13\">\n";
+      double y = ly + 14;
+      if(options.color_by_distortion)
+      {
+        text("", col_x, y, "symmetric Dirichlet energy"); y += 16;
+        text("", col_x, y, "against the 3D triangles (log scale)"); y += 12;
+        const double bar_x = col_x + 60, bar_y = y, bar_w = 22, bar_h = 200;
+        legend += "<defs><linearGradient id=\"pe-energy\" x1=\"0\" y1=\"1\" x2=\"0\" y2=\"0\">";
+        for(int k = 0; k <= 8; ++k)
+          legend += "<stop offset=\"" + internal::svg_number(k / 8., 3) + "\" stop-color=\"" + internal::Svg_color_map::color(k / 8.) + "\"/>";
+        legend += "</linearGradient></defs>\n";
+        legend += "<rect x=\"" + num(bar_x) + "\" y=\"" + num(bar_y) + "\" width=\"" + num(bar_w) + "\" height=\"" + num(bar_h)
+                + "\" fill=\"url(#pe-energy)\" stroke=\"#000000\" stroke-width=\"0.5\"/>\n";
+        auto bar_y_of = [&](double e) { return bar_y + bar_h - scale_e.position(e) * bar_h; };
+        // decade ticks, at most 8
+        const int k0 = int(std::ceil(std::log10(scale_e.lo) - 1e-9)), k1 = int(std::floor(std::log10(scale_e.hi) + 1e-9));
+        const int stride = (std::max)(1, (k1 - k0 + 7) / 8);
+        std::vector<double> ticks = { scale_e.lo };
+        for(int k = k0; k <= k1; k += stride)
+          if(std::pow(10., k) > 1.5 * scale_e.lo) ticks.push_back(std::pow(10., k));
+        double last_label = inf;
+        for(double t : ticks)
+        {
+          const double ty = bar_y_of(t);
+          legend += "<line x1=\"" + num(bar_x + bar_w) + "\" y1=\"" + num(ty) + "\" x2=\"" + num(bar_x + bar_w + 5) + "\" y2=\""
+                  + num(ty) + "\" stroke=\"#000000\" stroke-width=\"1\"/>\n";
+          if(std::abs(ty - last_label) < 14) continue; // no overlapping labels
+          text("", bar_x + bar_w + 8, ty + 4, format_number(t, digits));
+          last_label = ty;
+        }
+        // where the min, median, mean and max are on the bar (infinite values at its top); the
+        // names of marks closer than a line of text share one label
+        const double marks[4] = { min_energy, report.distortion.symmetric_dirichlet_quantiles[0], report.mean_energy_3d, report.max_energy_3d };
+        const char* names[4] = { "min", "median", "mean", "max" };
+        std::vector<std::pair<double, std::string> > labels;
+        for(int k = 0; k < 4; ++k)
+        {
+          const double ty = std::isfinite(marks[k]) ? bar_y_of(marks[k]) : bar_y;
+          legend += "<path d=\"M" + num(bar_x - 1) + " " + num(ty) + "l-7 -4v8z\" fill=\"#000000\"/>\n";
+          if(!labels.empty() && std::abs(labels.back().first - ty) < 11) labels.back().second += std::string(", ") + names[k];
+          else labels.emplace_back(ty, names[k]);
+        }
+        for(const auto& l : labels)
+          text("", bar_x - 10, l.first + 4, l.second, " text-anchor=\"end\" font-size=\"11\"");
+        y = bar_y + bar_h + 22;
+        const std::string ids[4] = { "pe-energy-min", "pe-energy-median", "pe-energy-mean", "pe-energy-max" };
+        for(int k = 0; k < 4; ++k)
+        {
+          text(ids[k], col_x, y, std::string(names[k]) + " " + format_number(marks[k], digits));
+          y += 17;
+        }
+        y += 6;
+      }
+      legend += "<rect x=\"" + num(col_x) + "\" y=\"" + num(y - 11) + "\" width=\"14\" height=\"14\" fill=\"" + options.flipped_color + "\"/>\n";
+      text("", col_x + 22, y, "flipped");
+      y += 20;
+      legend += "<rect x=\"" + num(col_x) + "\" y=\"" + num(y - 11) + "\" width=\"14\" height=\"14\" fill=\"none\" stroke=\""
+              + options.degenerate_color + "\" stroke-width=\"2.5\"/>\n";
+      text("", col_x + 22, y, "degenerate");
+      y += 24;
+      text("pe-count-faces", col_x, y, "faces: " + std::to_string(nf)); y += 17;
+      text("pe-count-flipped", col_x, y, "flipped: " + std::to_string(F.flipped)); y += 17;
+      text("pe-count-degenerate", col_x, y, "degenerate: " + std::to_string(F.degenerate)); y += 17;
+      text("pe-count-non-finite", col_x, y, "non-finite vertices: " + std::to_string(F.non_finite_vertices)); y += 17;
+      legend += "</g>\n";
+      ly = y;
+    }
+
+    double inset_bottom = ly;
+    if(has_inset)
+    {
+      const double S = options.inset_size;
+      const double ix = col_x, iy = ly + 30;
+      const double iscale = S / side;
+      const double zoom = iscale / scale;
+      auto to_inset = [&](double x, double y) {
+        return std::array<double, 2>{{ ix + (x - rx0) * iscale, iy + (ry0 + side - y) * iscale }};
+      };
+      // keep the polygons whose box meets the inset, clipped to it (no huge coordinates in the file)
+      auto keep = [&](std::vector<std::array<double, 2> >& poly) {
+        double a0 = inf, b0 = inf, a1 = -inf, b1 = -inf;
+        for(const auto& q : poly) { a0 = (std::min)(a0, q[0]); a1 = (std::max)(a1, q[0]); b0 = (std::min)(b0, q[1]); b1 = (std::max)(b1, q[1]); }
+        if(a1 < ix - 2 || a0 > ix + S + 2 || b1 < iy - 2 || b0 > iy + S + 2) return false;
+        internal::svg_clip(poly, ix - 2, iy - 2, ix + S + 2, iy + S + 2);
+        return poly.size() >= 2;
+      };
+      inset += "<g id=\"pe-inset\">\n";
+      inset += "<text x=\"" + num(ix) + "\" y=\"" + num(iy - 8) + "\" font-family=\"sans-serif\" font-size=\"13\">zoom &#215;"
+             + format_number(zoom, digits) + " on the flipped and degenerate faces</text>\n";
+      inset += "<clipPath id=\"pe-inset-clip\"><rect x=\"" + num(ix) + "\" y=\"" + num(iy) + "\" width=\"" + num(S) + "\" height=\""
+             + num(S) + "\"/></clipPath>\n";
+      inset += "<rect x=\"" + num(ix) + "\" y=\"" + num(iy) + "\" width=\"" + num(S) + "\" height=\"" + num(S) + "\" fill=\"#ffffff\"/>\n";
+      inset += "<g clip-path=\"url(#pe-inset-clip)\">\n";
+      draw_faces(inset, to_inset, keep, 2.);
+      // faces still too small to be seen at this zoom are marked as in the main view
+      inset += markers(to_inset, [&](double x, double y) { return x >= ix && x <= ix + S && y >= iy && y <= iy + S; });
+      inset += "</g>\n";
+      inset += "<rect x=\"" + num(ix) + "\" y=\"" + num(iy) + "\" width=\"" + num(S) + "\" height=\"" + num(S)
+             + "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"1.5\"/>\n";
+      // the zoomed region in the main view (at least 10 px, to be seen), joined to the inset
+      double mx = view.X(rx0), my = view.Y(ry0 + side), mw = side * scale;
+      if(!(mw >= 10)) { mx += 0.5 * mw - 5; my += 0.5 * mw - 5; mw = 10; }
+      inset += "<rect id=\"pe-inset-region\" x=\"" + num(mx) + "\" y=\"" + num(my) + "\" width=\"" + num(mw) + "\" height=\""
+             + num(mw) + "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"1.5\"/>\n";
+      inset += "<path d=\"M" + num(mx + mw) + " " + num(my) + "L" + num(ix) + " " + num(iy) + "M" + num(mx + mw) + " " + num(my + mw)
+             + "L" + num(ix) + " " + num(iy + S) + "\" stroke=\"#000000\" stroke-opacity=\"0.5\" stroke-width=\"0.8\" stroke-dasharray=\"4 3\"/>\n";
+      inset += "</g>\n";
+      inset_bottom = iy + S;
+    }
+
+    const double width = col_x + col_w + margin;
+    const double height = (std::max)(view.oy + draw_h, inset_bottom) + margin;
+
     s += "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n";
     s += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + internal::svg_number(width, 0)
        + "\" height=\"" + internal::svg_number(height, 0) + "\" viewBox=\"0 0 " + internal::svg_number(width, 0)
        + " " + internal::svg_number(height, 0) + "\">\n";
-    const std::string esc_title = internal::svg_escape(title);
-    if(!title.empty()) s += "<title>" + esc_title + "</title>\n";
-    s += "<defs><linearGradient id=\"pe-energy\" x1=\"0\" y1=\"1\" x2=\"0\" y2=\"0\">";
-    for(int k = 0; k < Colours::number_of_stops; ++k)
-      s += "<stop offset=\"" + internal::svg_number(double(k) / (Colours::number_of_stops - 1)) + "\" stop-color=\""
-         + Colours::hex(Colours::stops()[k]) + "\"/>";
-    s += "</linearGradient></defs>\n";
+    const std::string esc_title = internal::svg_escape(options.title);
+    if(!options.title.empty()) s += "<title>" + esc_title + "</title>\n";
     s += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    if(!title.empty())
-      s += "<text x=\"" + internal::svg_number(margin) + "\" y=\"" + internal::svg_number(margin + 20)
-         + "\" font-family=\"sans-serif\" font-size=\"22\">" + esc_title + "</text>\n";
+    if(!options.title.empty())
+      s += "<text x=\"" + num(margin) + "\" y=\"" + num(margin + 20) + "\" font-family=\"sans-serif\" font-size=\"20\">" + esc_title + "</text>\n";
 
-    // faces of the majority orientation, coloured by energy
-    s += "<g id=\"pe-faces\" stroke=\"#404040\" stroke-width=\"0.3\" stroke-linejoin=\"round\">\n";
-    for(std::size_t i = 0; i < nf; ++i)
-    {
-      if(sign[i] != majority) continue;
-      s += "<polygon "; points(s, tri[i]);
-      s += " fill=\"" + Colours::colour(Colours::position(energy[i])) + "\"/>\n";
-    }
+    // main view
+    s += "<g id=\"pe-faces\">\n";
+    draw_faces(s, [&](double x, double y) { return std::array<double, 2>{{ view.X(x), view.Y(y) }}; },
+               [](std::vector<std::array<double, 2> >&) { return true; }, 1.);
     s += "</g>\n";
-    // flipped faces
-    s += "<g id=\"pe-flipped\" fill=\"#ff0000\" stroke=\"#800000\" stroke-width=\"0.5\" stroke-linejoin=\"round\">\n";
-    for(std::size_t i = 0; i < nf; ++i)
-      if(sign[i] == -majority) { s += "<polygon "; points(s, tri[i]); s += "/>\n"; }
-    s += "</g>\n";
-    // border
-    s += "<path id=\"pe-border\" fill=\"none\" stroke=\"#000000\" stroke-width=\"2\" stroke-linecap=\"round\" d=\"";
-    for(halfedge_descriptor h : halfedges(tm))
-    {
-      if(!is_border(h, tm)) continue;
-      const std::size_t a = get(vid, source(h, tm)), b = get(vid, target(h, tm));
-      if(!finite[a] || !finite[b]) continue;
-      s += 'M'; internal::svg_append(s, X(p[a][0])); s += ' '; internal::svg_append(s, Y(p[a][1]));
-      s += 'L'; internal::svg_append(s, X(p[b][0])); s += ' '; internal::svg_append(s, Y(p[b][1]));
-    }
-    s += "\"/>\n";
-    // degenerate faces
-    s += "<g id=\"pe-degenerate\" fill=\"none\" stroke=\"#ff00ff\" stroke-width=\"3\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
-    for(std::size_t i = 0; i < nf; ++i)
-      if(sign[i] == 0) { s += "<polygon "; points(s, tri[i]); s += "/>\n"; }
-    s += "</g>\n";
-    // markers at the centroids of flipped and degenerate faces
-    s += "<g id=\"pe-markers\" fill=\"none\" stroke-width=\"2\">\n";
-    for(std::size_t i = 0; i < nf; ++i)
-    {
-      if(sign[i] == majority || sign[i] == 2) continue;
-      const std::array<std::size_t, 3>& t = tri[i];
-      const double cx = (X(p[t[0]][0]) + X(p[t[1]][0]) + X(p[t[2]][0])) / 3.;
-      const double cy = (Y(p[t[0]][1]) + Y(p[t[1]][1]) + Y(p[t[2]][1])) / 3.;
-      s += "<circle cx=\""; internal::svg_append(s, cx); s += "\" cy=\""; internal::svg_append(s, cy);
-      s += (sign[i] == 0) ? "\" r=\"7\" stroke=\"#ff00ff\"/>\n" : "\" r=\"7\" stroke=\"#ff0000\"/>\n";
-    }
-    s += "</g>\n";
-
-    // legend
-    const double lx = ox + draw_w + 20, ly = oy;
-    const double bar_x = lx + 14, bar_y = ly + 54, bar_w = 22, bar_h = 180;
-    auto num = [](double x) { return internal::svg_number(x); };
-    s += "<g id=\"pe-legend\" font-family=\"sans-serif\" font-size=\"13\">\n";
-    s += "<rect x=\"" + num(lx) + "\" y=\"" + num(ly) + "\" width=\"" + num(legend_w - 30) + "\" height=\"" + num(legend_h)
-       + "\" fill=\"#ffffff\" stroke=\"#000000\" stroke-width=\"1\"/>\n";
-    s += "<text x=\"" + num(lx + 10) + "\" y=\"" + num(ly + 18) + "\">symmetric Dirichlet</text>\n";
-    s += "<text x=\"" + num(lx + 10) + "\" y=\"" + num(ly + 33) + "\">energy (log scale)</text>\n";
-    s += "<rect x=\"" + num(bar_x) + "\" y=\"" + num(bar_y) + "\" width=\"" + num(bar_w) + "\" height=\"" + num(bar_h)
-       + "\" fill=\"url(#pe-energy)\" stroke=\"#000000\" stroke-width=\"0.5\"/>\n";
-    const double ticks[] = { 4., 10., 100., 1000., 1e4 };
-    const char* labels[] = { "4 (isometry)", "10", "100", "1000", "&#8805; 10000" };
-    for(int k = 0; k < 5; ++k)
-    {
-      const double ty = bar_y + bar_h - Colours::position(ticks[k]) * bar_h;
-      s += "<line x1=\"" + num(bar_x + bar_w) + "\" y1=\"" + num(ty) + "\" x2=\"" + num(bar_x + bar_w + 6) + "\" y2=\""
-         + num(ty) + "\" stroke=\"#000000\" stroke-width=\"1\"/>\n";
-      s += "<text x=\"" + num(bar_x + bar_w + 10) + "\" y=\"" + num(ty + 4) + "\">" + labels[k] + "</text>\n";
-    }
-    double y = bar_y + bar_h + 28;
-    s += "<rect x=\"" + num(bar_x) + "\" y=\"" + num(y - 11) + "\" width=\"14\" height=\"14\" fill=\"#ff0000\" stroke=\"#800000\"/>\n";
-    s += "<text x=\"" + num(bar_x + 22) + "\" y=\"" + num(y) + "\">flipped</text>\n";
-    y += 20;
-    s += "<rect x=\"" + num(bar_x) + "\" y=\"" + num(y - 11) + "\" width=\"14\" height=\"14\" fill=\"none\" stroke=\"#ff00ff\" stroke-width=\"3\"/>\n";
-    s += "<text x=\"" + num(bar_x + 22) + "\" y=\"" + num(y) + "\">degenerate</text>\n";
-    y += 26;
-    auto count_line = [&](const char* id, const std::string& text) {
-      s += "<text id=\"" + std::string(id) + "\" x=\"" + num(lx + 10) + "\" y=\"" + num(y) + "\">" + text + "</text>\n";
-      y += 17;
-    };
-    count_line("pe-count-faces", "faces: " + std::to_string(nf));
-    count_line("pe-count-flipped", "flipped: " + std::to_string(n_flipped));
-    count_line("pe-count-degenerate", "degenerate: " + std::to_string(n_degenerate));
-    count_line("pe-count-non-finite", "non-finite: " + std::to_string(n_nonfinite));
-    {
-      char buf[64];
-      std::string e;
-      if(std::isfinite(max_energy))
-      {
-        const std::to_chars_result r = std::to_chars(buf, buf + sizeof(buf), max_energy, std::chars_format::general, 4);
-        e.assign(buf, r.ptr);
-      }
-      else e = "infinite";
-      count_line("pe-max-energy", "max energy: " + e);
-    }
-    s += "</g>\n</svg>\n";
+    s += markers([&](double x, double y) { return std::array<double, 2>{{ view.X(x), view.Y(y) }}; },
+                 [](double, double) { return true; });
+    s += legend;
+    s += inset;
+    s += "</svg>\n";
 
     out << s;
     out.flush();
@@ -447,21 +769,52 @@ Error_code write_SVG(std::ostream& out, const TriangleMesh& tm, VertexUVMap uvm,
 
 /// \ingroup PkgProgressiveEmbeddingIO
 ///
-/// writes an SVG picture of the uv layout of `tm` to the file `filename`;
-/// see the stream overload for the picture and the parameters.
+/// writes an SVG picture of the uv layout of `tm` to the file `filename`; see the stream overload
+/// for the picture and the parameters.
 ///
-/// \return as the stream overload; `ERROR_CANNOT_WRITE_FILE` if the file cannot be opened or written
+/// A failed write never leaves a partial file: when `filename` is a regular file or does not exist,
+/// the picture is written to a temporary file in the same folder, which replaces `filename` only once
+/// it is completely written and closed; on failure the temporary file is removed and an existing
+/// `filename` is left untouched. Anything else (a device such as `/dev/null` or `/dev/stdout`, a pipe)
+/// is written directly. No exception escapes.
+///
+/// \return as the stream overload; `ERROR_CANNOT_WRITE_FILE` if the file cannot be written (a folder,
+///         no permission, no space left, a file size limit, ...)
+template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Error_code write_SVG(const std::string& filename, const TriangleMesh& tm, VertexUVMap uvm, const SVG_options& options,
+                     const NamedParameters& np = CGAL::parameters::default_values())
+{
+  if(!internal::svg_options_are_valid(options)) return ERROR_WRONG_PARAMETER;
+  return internal::write_file_atomically(filename, [&](std::ostream& out) { return write_SVG(out, tm, uvm, options, np); });
+}
+
+/// \ingroup PkgProgressiveEmbeddingIO
+///
+/// writes an SVG picture of the uv layout of `tm` with default `SVG_options` and the title `title`:
+/// faces in one color, flipped and degenerate faces highlighted, no inset.
+/// See the overload with `SVG_options` for the picture, the parameters and the result.
+template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Error_code write_SVG(std::ostream& out, const TriangleMesh& tm, VertexUVMap uvm,
+                     const std::string& title = std::string(),
+                     const NamedParameters& np = CGAL::parameters::default_values())
+{
+  SVG_options options;
+  options.title = title;
+  return write_SVG(out, tm, uvm, options, np);
+}
+
+/// \ingroup PkgProgressiveEmbeddingIO
+///
+/// writes an SVG picture of the uv layout of `tm` with default `SVG_options` and the title `title`
+/// to the file `filename`, never leaving a partial file (see the overload with `SVG_options`).
 template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Error_code write_SVG(const std::string& filename, const TriangleMesh& tm, VertexUVMap uvm,
                      const std::string& title = std::string(),
                      const NamedParameters& np = CGAL::parameters::default_values())
 {
-  std::ofstream out(filename, std::ios::binary);
-  if(!out) return ERROR_CANNOT_WRITE_FILE;
-  const Error_code ec = write_SVG(out, tm, uvm, title, np);
-  out.close();
-  if(ec == OK && !out) return ERROR_CANNOT_WRITE_FILE;
-  return ec;
+  SVG_options options;
+  options.title = title;
+  return write_SVG(filename, tm, uvm, options, np);
 }
 
 } // namespace IO

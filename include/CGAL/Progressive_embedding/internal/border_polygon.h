@@ -7,7 +7,10 @@
 
 // Exact classification of a border polygon: strictly convex, convex (some
 // collinear vertices), non-convex (including winding more than once), or degenerate.
-// Only the exact orientation predicate and coordinate comparisons are used.
+// Only the exact orientation predicate and coordinate comparisons are used. Also the exact
+// count of self-intersections of a closed polygon (border simplicity).
+
+#include <CGAL/Progressive_embedding/internal/exact_predicates.h>
 
 #include <CGAL/enum.h>
 #include <CGAL/box_intersection_d.h>
@@ -77,56 +80,56 @@ Polygon_class classify_convex_polygon(const std::vector<Point_2>& P, ExactOrient
 
 struct Count_limit_reached {};
 
-// Number of intersecting pairs of border edges of the closed polygon P (exact predicates of
-// the kernel EK; adjacent edges count only if they fold back onto each other). Counting stops
-// at `limit`. Boxes come from double approximations, enlarged when EK is not on doubles.
-template <class EK>
-std::size_t count_border_intersections(const std::vector<typename EK::Point_2>& P, std::size_t limit)
+// Number of intersecting pairs of edges of the closed polygon P, decided with the exact
+// orientation `orient` and coordinate comparisons; adjacent edges count only if they fold back
+// onto each other. Counting stops at `limit`. Candidate pairs come from conservative boxes
+// (internal/exact_predicates.h), valid at any magnitude of the coordinates.
+template <class Point_2, class Orientation_2>
+std::size_t count_polygon_self_intersections(const std::vector<Point_2>& P, const Orientation_2& orient, std::size_t limit)
 {
-  typedef typename EK::Point_2 EPoint;
-  typedef typename EK::FT EFT;
   typedef CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t> Box;
   const std::size_t nb = P.size();
-  if(nb < 3) return 0;
+  if(nb < 3 || limit == 0) return 0;
+  Conservative_boxes<Point_2> cb;
+  cb.build(P);
   std::vector<Box> boxes;
   boxes.reserve(nb);
   for(std::size_t k = 0; k < nb; ++k)
   {
-    const EPoint& a = P[k];
-    const EPoint& b = P[(k + 1) % nb];
-    double x0 = CGAL::to_double(a.x()), y0 = CGAL::to_double(a.y()), x1 = CGAL::to_double(b.x()), y1 = CGAL::to_double(b.y());
-    double xmin = (std::min)(x0, x1), xmax = (std::max)(x0, x1), ymin = (std::min)(y0, y1), ymax = (std::max)(y0, y1);
-    if(!std::is_floating_point<EFT>::value)
-    {
-      const double e = 1e-12 * (std::abs(xmin) + std::abs(xmax) + std::abs(ymin) + std::abs(ymax)) + 1e-300;
-      xmin -= e; ymin -= e; xmax += e; ymax += e;
-    }
-    boxes.push_back(Box(CGAL::Bbox_2(xmin, ymin, xmax, ymax), k));
+    const std::array<std::size_t, 2> ends = {{ k, (k + 1) % nb }};
+    const std::array<double, 4> b = cb.hull(ends);
+    boxes.push_back(Box(CGAL::Bbox_2(b[0], b[2], b[1], b[3]), k));
   }
-  typename EK::Orientation_2 orient;
-  typename EK::Do_intersect_2 do_intersect;
   std::size_t count = 0;
-  auto cb = [&](const Box& b1, const Box& b2) {
+  auto report = [&](const Box& b1, const Box& b2) {
     std::size_t i = b1.info(), j = b2.info();
     if(i > j) std::swap(i, j);
-    const EPoint& p0 = P[i]; const EPoint& p1 = P[(i + 1) % nb];
-    const EPoint& q0 = P[j]; const EPoint& q1 = P[(j + 1) % nb];
+    const Point_2& p0 = P[i]; const Point_2& p1 = P[(i + 1) % nb];
+    const Point_2& q0 = P[j]; const Point_2& q1 = P[(j + 1) % nb];
     bool bad = false;
     if(j == i + 1 || (i == 0 && j == nb - 1))
     {
-      const EPoint& s = (j == i + 1) ? p1 : p0;        // shared vertex
-      const EPoint& u = (j == i + 1) ? p0 : p1;        // other end of edge i
-      const EPoint& w = (j == i + 1) ? q1 : q0;        // other end of edge j
+      const Point_2& s = (j == i + 1) ? p1 : p0;        // shared vertex
+      const Point_2& u = (j == i + 1) ? p0 : p1;        // other end of edge i
+      const Point_2& w = (j == i + 1) ? q1 : q0;        // other end of edge j
       if(orient(u, s, w) == CGAL::COLLINEAR)
-        bad = (CGAL::compare_xy(u, s) == CGAL::compare_xy(w, s)); // both on the same side of s
+        bad = (exact_compare_xy(u, s) == exact_compare_xy(w, s)); // both on the same side of s
     }
     else
-      bad = do_intersect(typename EK::Segment_2(p0, p1), typename EK::Segment_2(q0, q1));
+      bad = closed_segments_intersect(p0, p1, q0, q1, orient);
     if(bad && ++count >= limit) throw Count_limit_reached();
   };
-  try { CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), cb); }
+  try { CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), report); }
   catch(const Count_limit_reached&) { }
   return count;
+}
+
+// The same for the points of a kernel EK whose Orientation_2 is exact (Epick, or a kernel on an
+// exact number type): kept for the callers that certify in such a kernel.
+template <class EK>
+std::size_t count_border_intersections(const std::vector<typename EK::Point_2>& P, std::size_t limit)
+{
+  return count_polygon_self_intersections(P, Exact_orientation_2<typename EK::Point_2>(), limit);
 }
 
 } // namespace internal

@@ -7,7 +7,8 @@
 
 // The kernel in which certificates are decided: Epick for double coordinates
 // (its predicates are exact on doubles), exact rationals for everything else
-// (MPFR and rational values convert exactly).
+// (MPFR and rational values convert exactly). The sign decisions themselves are in
+// internal/exact_predicates.h; this kernel is for callers that hold converted points.
 
 #include <CGAL/Progressive_embedding/internal/number_utils.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -22,6 +23,7 @@ namespace internal {
 template <class FT, bool is_double = std::is_floating_point<FT>::value>
 struct Certification_kernel
 {
+  static_assert(Check_number_type<FT>::value, "");
   typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
   template <class P>
   static typename Kernel::Point_2 convert(const P& p) { return typename Kernel::Point_2(double(p.x()), double(p.y())); }

@@ -18,7 +18,6 @@
 #include <CGAL/Progressive_embedding/check_embedding.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 #include <CGAL/Progressive_embedding/internal/border_polygon.h>
-#include <CGAL/Progressive_embedding/internal/certification_kernel.h>
 #include <CGAL/Progressive_embedding/internal/number_utils.h>
 #include <CGAL/Progressive_embedding/internal/newton_step.h>
 #include <CGAL/Progressive_embedding/internal/symmetric_dirichlet.h>
@@ -146,16 +145,16 @@ inline Face_frame face_frame(const Reference_triangle<double>& ref)
   return fr;
 }
 
-template <class TriangleMesh, class VertexUVMap, class VertexPointMap, class ConcurrencyTag>
+template <class TriangleMesh, class VertexUVMap, class VertexPointMap, class ConcurrencyTag,
+          class Traits_ = typename Uv_map_types<VertexUVMap>::Traits>
 class Distortion_optimizer
 {
 public:
   typedef boost::graph_traits<TriangleMesh>                          GT;
   typedef typename GT::vertex_descriptor                             vertex_descriptor;
   typedef typename Uv_map_types<VertexUVMap>::Point_2                Point_2;
-  typedef typename Uv_map_types<VertexUVMap>::Traits                 Traits;
+  typedef Traits_                                                    Traits;
   typedef typename Uv_map_types<VertexUVMap>::FT                     FT;
-  typedef Certification_kernel<FT>                                   CK;
   typedef Eigen::SparseMatrix<double>                                SpMat;
 
   struct Settings
@@ -169,8 +168,9 @@ public:
     std::function<bool(double)> callback;
   };
 
-  Distortion_optimizer(const TriangleMesh& tm, VertexUVMap uvm, VertexPointMap vpm, const Settings& s)
-    : tm_(tm), uvm_(uvm), vpm_(vpm), s_(s) {}
+  Distortion_optimizer(const TriangleMesh& tm, VertexUVMap uvm, VertexPointMap vpm, const Settings& s,
+                       const Traits& traits = Traits())
+    : tm_(tm), uvm_(uvm), vpm_(vpm), s_(s), traits_(traits), orient_(traits.exact_orientation_2_object()) {}
 
   // ---- set-up ------------------------------------------------------------------------------
   Error_code initialize(const std::vector<vertex_descriptor>& constrained, Optimization_statistics& stats)
@@ -181,7 +181,7 @@ public:
     nv_ = disk_.number_of_vertices(); nf_ = disk_.number_of_faces();
 
     // the input must be valid: the optimization never leaves the valid set
-    stats.report = check_embedding(tm_, uvm_, CGAL::parameters::vertex_point_map(vpm_));
+    stats.report = check_embedding(tm_, uvm_, CGAL::parameters::vertex_point_map(vpm_).geom_traits(traits_));
     if(stats.report.status != OK) return stats.report.status;
     if(stats.report.non_finite > 0) return ERROR_NON_FINITE_COORDINATES;
     if(!stats.report.is_valid()) return ERROR_INVALID_EMBEDDING;
@@ -247,7 +247,7 @@ public:
     const std::vector<Point_2>& P = P_;
     auto current = boost::make_function_property_map<vertex_descriptor, Point_2>(
       [&](vertex_descriptor v) -> Point_2 { return P[get(vid, v)]; });
-    return check_embedding(tm_, current, CGAL::parameters::vertex_point_map(vpm_));
+    return check_embedding(tm_, current, CGAL::parameters::vertex_point_map(vpm_).geom_traits(traits_));
   }
 
   void write() const
@@ -376,7 +376,6 @@ public:
       const std::size_t a = corner(fc, 1), b = corner(fc, 2);
       tmax = (std::min)(tmax, 0.8 * vertex_degeneration_time(X_[i], Y_[i], d[0], d[1], X_[a], Y_[a], X_[b], Y_[b]));
     }
-    typename Traits::Exact_orientation_2 orient = Traits().exact_orientation_2_object();
     double t = tmax;
     for(int k = 0; k < 16; ++k, t *= 0.5) // a vertex that cannot move now may move in a later sweep
     {
@@ -396,7 +395,7 @@ public:
       for(const auto& fc : star_[i])
       {
         const auto& tr = disk_.faces[fc.first];
-        if(orient(P_[tr[0]], P_[tr[1]], P_[tr[2]]) != positive_) { valid = false; break; }
+        if(orient_(P_[tr[0]], P_[tr[1]], P_[tr[2]]) != positive_) { valid = false; break; }
       }
       if(!valid) { P_[i] = old; continue; }
       X_[i] = CGAL::to_double(P_[i].x()); Y_[i] = sgn_ * CGAL::to_double(P_[i].y());
@@ -532,8 +531,10 @@ private:
   {
     const long n2 = 2 * nfree_;
     grad = Eigen::VectorXd::Zero(n2);
-    triplets_.clear();
-    triplets_.reserve(nf_ * 36);
+    const bool first = slots_.empty();
+    if(first) { triplets_.clear(); triplets_.reserve(nf_ * 36); }
+    else std::fill(H_.valuePtr(), H_.valuePtr() + H_.nonZeros(), 0.);
+    std::size_t entry = 0; // entries come in the same order at every iteration
     for(std::size_t f = 0; f < nf_; ++f)
     {
       const auto& t = disk_.faces[f];
@@ -579,12 +580,32 @@ private:
           if(vq < 0) continue;
           double h = 0;
           for(int k = 0; k < 4; ++k) h += lambda[k] * modes[k][p] * modes[k][q];
-          triplets_.emplace_back(rp, 2 * vq + (q % 2), w * h);
+          if(first) triplets_.emplace_back(rp, 2 * vq + (q % 2), w * h);
+          else H_.valuePtr()[slots_[entry]] += w * h;
+          ++entry;
         }
       }
     }
-    H_.resize(n2, n2);
-    H_.setFromTriplets(triplets_.begin(), triplets_.end());
+    if(first)
+    {
+      // the pattern never changes: record where each entry lands in the compressed storage,
+      // so that later iterations add into it instead of sorting triplets again
+      H_.resize(n2, n2);
+      H_.setFromTriplets(triplets_.begin(), triplets_.end());
+      H_.makeCompressed();
+      slots_.resize(triplets_.size());
+      for(std::size_t k = 0; k < triplets_.size(); ++k)
+      {
+        const long c = triplets_[k].col(), r = triplets_[k].row();
+        const int* begin = H_.innerIndexPtr() + H_.outerIndexPtr()[c];
+        const int* end = H_.innerIndexPtr() + H_.outerIndexPtr()[c + 1];
+        slots_[k] = std::size_t(std::lower_bound(begin, end, int(r)) - H_.innerIndexPtr());
+      }
+      for(long i = 0; i < n2; ++i) diagonal_slots_.push_back(std::size_t(
+        std::lower_bound(H_.innerIndexPtr() + H_.outerIndexPtr()[i], H_.innerIndexPtr() + H_.outerIndexPtr()[i + 1], int(i))
+        - H_.innerIndexPtr()));
+      std::vector<Eigen::Triplet<double> >().swap(triplets_);
+    }
     return grad.allFinite();
   }
 
@@ -597,7 +618,7 @@ private:
     std::vector<double> dv(diag.data(), diag.data() + n2);
     std::nth_element(dv.begin(), dv.begin() + n2 / 2, dv.end());
     const double shift = 1e-10 * dv[n2 / 2] + std::numeric_limits<double>::min();
-    for(long i = 0; i < n2; ++i) H_.coeffRef(i, i) += shift;
+    for(long i = 0; i < n2; ++i) H_.valuePtr()[diagonal_slots_[std::size_t(i)]] += shift;
     if(n2 <= direct_solver_limit)
     {
       if(!analyzed_) { ldlt_.analyzePattern(H_); analyzed_ = true; } // the pattern never changes
@@ -620,22 +641,21 @@ private:
 
   bool faces_positive(const std::vector<Point_2>& P) const
   {
-    typename Traits::Exact_orientation_2 orient = Traits().exact_orientation_2_object();
     for(std::size_t f = 0; f < nf_; ++f)
     {
       const auto& tr = disk_.faces[f];
       if(var_[tr[0]] < 0 && var_[tr[1]] < 0 && var_[tr[2]] < 0) continue;
-      if(orient(P[tr[0]], P[tr[1]], P[tr[2]]) != positive_) return false;
+      if(orient_(P[tr[0]], P[tr[1]], P[tr[2]]) != positive_) return false;
     }
     return true;
   }
 
   bool border_simple(const std::vector<Point_2>& P) const
   {
-    std::vector<typename CK::Kernel::Point_2> B;
+    std::vector<Point_2> B;
     B.reserve(disk_.border.size());
-    for(std::size_t b : disk_.border) B.push_back(CK::convert(P[b]));
-    return count_border_intersections<typename CK::Kernel>(B, 1) == 0;
+    for(std::size_t b : disk_.border) B.push_back(P[b]);
+    return count_polygon_self_intersections(B, orient_, 1) == 0;
   }
 
   // energy of star face fc with its corner 0 at (x, y): psi * weight is summed by the caller
@@ -664,6 +684,7 @@ private:
     {
       bool ok;
       const double e = symmetric_dirichlet(r, x, y, ax, ay, bx, by, ok);
+      // a pre-filter only: accepted positions are then certified with the exact predicate
       return (ok && signed_area(x, y, ax, ay, bx, by) > 0 && std::isfinite(e)) ? e : -1;
     }
     // ARAP from the singular values: |J|^2 and det J
@@ -690,6 +711,8 @@ private:
   VertexUVMap uvm_;
   VertexPointMap vpm_;
   Settings s_;
+  Traits traits_;
+  typename Traits::Exact_orientation_2 orient_;
   Indexed_disk<TriangleMesh> disk_;
   std::size_t nv_ = 0, nf_ = 0;
   double sgn_ = 1;
@@ -704,6 +727,7 @@ private:
   std::vector<std::vector<Face_corner> > star_;
   std::vector<std::vector<std::size_t> > colours_;
   std::vector<Eigen::Triplet<double> > triplets_;
+  std::vector<std::size_t> slots_, diagonal_slots_; // positions of the Hessian entries in H_'s storage
   SpMat H_;
   Eigen::SimplicialLDLT<SpMat> ldlt_;
   bool analyzed_ = false;

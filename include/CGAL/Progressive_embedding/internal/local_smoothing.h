@@ -6,8 +6,8 @@
 #define CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_LOCAL_SMOOTHING_H
 
 // One vertex at a time Newton descent on the symmetric Dirichlet energy of its
-// incident faces (2x2 Hessian projected to SPD), with a flip-free backtracking
-// line search: a step is accepted only if every incident face stays positively
+// incident faces (2x2 Hessian projected to SPD, internal/newton_step.h), with a flip-free
+// backtracking line search: a step is accepted only if every incident face stays positively
 // oriented under the exact predicate and the energy decreases.
 
 #include <CGAL/Progressive_embedding/internal/symmetric_dirichlet.h>
@@ -19,11 +19,13 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace CGAL {
 namespace Progressive_embedding {
 namespace internal {
 
+// `Mesh` is a Surface_mesh whose points are the uv positions.
 template <class Mesh, class Traits>
 struct Local_smoother
 {
@@ -38,34 +40,55 @@ struct Local_smoother
   std::size_t steps_accepted = 0;
   double relative_tolerance = 1e-3;
 
-  Local_smoother(Mesh& m, const Traits& traits, const Reference_triangle<FT>& ref) : m(m), traits(traits), ref(ref) {}
+private:
+  // the two other corners (a, b) of each face around the vertex being moved, counterclockwise
+  // (v, a, b); gathered once per step (the points do not move during a step)
+  struct Corners { const Point_2* a; const Point_2* b; };
+  std::vector<Corners> star;
+  typename Traits::Exact_orientation_2 orient;
+  // pass in which a vertex is stepped again (see smooth())
+  typename Mesh::template Property_map<vertex_descriptor, std::size_t> active;
+  std::size_t pass_base = 0;
 
-  const Point_2& pos(vertex_descriptor v) const { return m.point(v); }
+public:
+  Local_smoother(Mesh& m, const Traits& traits, const Reference_triangle<FT>& ref)
+    : m(m), traits(traits), ref(ref), orient(traits.exact_orientation_2_object())
+  {
+    active = m.template add_property_map<vertex_descriptor, std::size_t>("v:pe_smoothing_pass", 0).first;
+  }
+
+  ~Local_smoother() { m.remove_property_map(active); }
+
+  Local_smoother(const Local_smoother&) = delete;
+  Local_smoother& operator=(const Local_smoother&) = delete;
 
   static bool same(const Point_2& a, const Point_2& b) { return a.x() == b.x() && a.y() == b.y(); }
 
-  // corners (v, a, b) of the face of halfedge h, h pointing to v; false if the face
-  // is degenerate because two of its vertices coincide (a vertex being inserted)
-  bool corners(halfedge_descriptor h, const Point_2*& a, const Point_2*& b) const
+  // Fills `star` for v. Faces with two coincident corners (a vertex being inserted sits on
+  // its partner) are left out: they have no energy and no orientation to keep.
+  void gather(vertex_descriptor v)
   {
-    a = &pos(target(next(h, m), m));
-    b = &pos(source(h, m));
-    return !same(*a, *b) && !same(*a, pos(target(h, m))) && !same(*b, pos(target(h, m)));
-  }
-
-  // energy of the faces around v with v at x; +inf if one is not positively oriented
-  double energy_at(vertex_descriptor v, const Point_2& x, bool check_orientation) const
-  {
-    typename Traits::Exact_orientation_2 orient = traits.exact_orientation_2_object();
-    FT sum(0);
+    star.clear();
+    const Point_2& x = m.point(v);
     for(halfedge_descriptor h : halfedges_around_target(v, m))
     {
       if(is_border(h, m)) continue;
-      const Point_2 *a, *b;
-      if(!corners(h, a, b)) continue;
-      if(check_orientation && orient(x, *a, *b) != CGAL::LEFT_TURN) return std::numeric_limits<double>::infinity();
+      const Point_2* a = &m.point(target(next(h, m), m));
+      const Point_2* b = &m.point(source(h, m));
+      if(same(*a, *b) || same(*a, x) || same(*b, x)) continue;
+      star.push_back(Corners{a, b});
+    }
+  }
+
+  // energy of the gathered star with its center at x; +inf if a face is not positively oriented
+  double star_energy(const Point_2& x) const
+  {
+    FT sum(0);
+    for(const Corners& c : star)
+    {
+      if(orient(x, *c.a, *c.b) != CGAL::LEFT_TURN) return std::numeric_limits<double>::infinity();
       bool ok;
-      FT e = symmetric_dirichlet(ref, x.x(), x.y(), a->x(), a->y(), b->x(), b->y(), ok);
+      const FT e = symmetric_dirichlet(ref, x.x(), x.y(), c.a->x(), c.a->y(), c.b->x(), c.b->y(), ok);
       if(!ok) return std::numeric_limits<double>::infinity();
       sum += e;
     }
@@ -73,58 +96,83 @@ struct Local_smoother
     return std::isfinite(d) ? d : std::numeric_limits<double>::infinity();
   }
 
-  // one Newton step at v; returns true if v moved
+  // energy of the faces around v with v at x; +inf if one is not positively oriented
+  double energy_at(vertex_descriptor v, const Point_2& x)
+  {
+    gather(v);
+    return star_energy(x);
+  }
+
+  // One Newton step at v; true if v moved and decreased its energy by more than the relative
+  // tolerance (a smaller decrease counts as converged).
   bool step(vertex_descriptor v)
   {
-    const Point_2 x = pos(v);
+    gather(v);
+    const Point_2 x = m.point(v);
     FT E(0);
     double g[2] = {0, 0}, H[3] = {0, 0, 0};
-    double tmax = 1.0;
     // gradient/Hessian in FT per face, accumulated in double for the direction
     std::array<FT, 2> gf; std::array<FT, 3> Hf; FT Ef;
-    for(halfedge_descriptor h : halfedges_around_target(v, m))
+    for(const Corners& c : star)
     {
-      if(is_border(h, m)) continue;
-      const Point_2 *a, *b;
-      if(!corners(h, a, b)) continue;
-      if(!symmetric_dirichlet_local(ref, x.x(), x.y(), a->x(), a->y(), b->x(), b->y(), Ef, gf, Hf))
+      if(!symmetric_dirichlet_local(ref, x.x(), x.y(), c.a->x(), c.a->y(), c.b->x(), c.b->y(), Ef, gf, Hf))
         return false;
       E += Ef;
       g[0] += CGAL::to_double(gf[0]); g[1] += CGAL::to_double(gf[1]);
       H[0] += CGAL::to_double(Hf[0]); H[1] += CGAL::to_double(Hf[1]); H[2] += CGAL::to_double(Hf[2]);
     }
-    if(!std::isfinite(g[0]) || !std::isfinite(g[1]) || !std::isfinite(H[0]) || !std::isfinite(H[1]) || !std::isfinite(H[2]))
-      return false;
     double d[2];
     if(!projected_newton_direction(g, H, d)) return false;
 
-    // largest step before a face degenerates: its area is affine along d
-    for(halfedge_descriptor h : halfedges_around_target(v, m))
-    {
-      if(is_border(h, m)) continue;
-      const Point_2 *a, *b;
-      if(!corners(h, a, b)) continue;
-      const double ax = CGAL::to_double(a->x()), ay = CGAL::to_double(a->y());
-      const double bx = CGAL::to_double(b->x()), by = CGAL::to_double(b->y());
-      const double xx = CGAL::to_double(x.x()), xy = CGAL::to_double(x.y());
-      tmax = (std::min)(tmax, 0.9 * vertex_degeneration_time(xx, xy, d[0], d[1], ax, ay, bx, by));
-    }
+    // largest step before a face degenerates (its area is affine along d), with a margin
+    const double xx = CGAL::to_double(x.x()), xy = CGAL::to_double(x.y());
+    double tmax = 1.0;
+    for(const Corners& c : star)
+      tmax = (std::min)(tmax, 0.9 * vertex_degeneration_time(xx, xy, d[0], d[1],
+                                                             CGAL::to_double(c.a->x()), CGAL::to_double(c.a->y()),
+                                                             CGAL::to_double(c.b->x()), CGAL::to_double(c.b->y())));
     const double E0 = CGAL::to_double(E);
     double t = tmax;
     for(int k = 0; k < 30; ++k, t *= 0.5)
     {
       const Point_2 xn(x.x() + make_ft<FT>(t * d[0]), x.y() + make_ft<FT>(t * d[1]));
       if(same(xn, x)) return false;
-      const double En = energy_at(v, xn, true);
+      const double En = star_energy(xn);
       if(En < E0)
       {
         m.point(v) = xn;
         ++steps_accepted;
-        // converged when the decrease is negligible: the caller's sweep may stop
         return En < E0 * (1 - relative_tolerance);
       }
     }
     return false;
+  }
+
+  // At most `passes` passes of one step per vertex of `vs` (skipping those for which `is_fixed`
+  // holds). After the first pass, a vertex is stepped only if it or a neighbour decreased its
+  // energy by more than the fraction `tolerance` in the previous pass: the others are converged.
+  template <class VertexRange, class IsFixed>
+  void smooth(const VertexRange& vs, int passes, const IsFixed& is_fixed, double tolerance)
+  {
+    if(passes <= 0) return;
+    relative_tolerance = tolerance;
+    const std::size_t base = pass_base + 1;
+    pass_base += std::size_t(passes) + 1;
+    for(vertex_descriptor v : vs) active[v] = base;
+    for(int p = 0; p < passes; ++p)
+    {
+      const std::size_t now = base + std::size_t(p);
+      bool moved = false;
+      for(vertex_descriptor v : vs)
+      {
+        if(active[v] < now || is_fixed(v) || !step(v)) continue;
+        moved = true;
+        active[v] = now + 1;
+        for(vertex_descriptor w : CGAL::vertices_around_target(v, m))
+          if(active[w] < now + 1) active[w] = now + 1;
+      }
+      if(!moved) break;
+    }
   }
 };
 

@@ -34,14 +34,26 @@ struct Is_exact_ft
   : std::integral_constant<bool,
       std::is_same<typename CGAL::Algebraic_structure_traits<FT>::Is_exact, CGAL::Tag_true>::value> {};
 
-// Reject number types that cannot run the algorithms (see DESIGN.md section 3).
+// Number types the algorithms run on exactly. `long double` is refused: every exact test of the
+// package goes through double (filtered predicates) or rationals, and a long double would be
+// rounded to double there, silently. `CGAL::Mpzf` is a ring (no exact division); integers too.
+template <class FT>
+struct Is_supported_number_type
+  : std::integral_constant<bool, !std::is_same<typename std::remove_cv<FT>::type, long double>::value
+                              && !std::is_same<FT, CGAL::Mpzf>::value && !std::is_integral<FT>::value> {};
+
+// Rejects, at compile time and with a message, the number types that cannot run the algorithms.
 template <class FT>
 struct Check_number_type
 {
+  static_assert(!std::is_same<typename std::remove_cv<FT>::type, long double>::value,
+                "Progressive_embedding: long double is not supported (its values would be rounded to double by the "
+                "exact predicates). Supported number types: float, double, CGAL::Gmpq, CGAL::Gmpfr (any precision), "
+                "CGAL::Lazy_exact_nt, boost::multiprecision rationals");
   static_assert(!std::is_same<FT, CGAL::Mpzf>::value,
                 "CGAL::Mpzf is a ring (no exact division): it cannot be the FT of a Progressive_embedding traits class");
   static_assert(!std::is_integral<FT>::value, "an integral FT cannot be used");
-  static constexpr bool value = true;
+  static constexpr bool value = Is_supported_number_type<FT>::value;
 };
 
 // builds an FT from a double. MPFR values get the current default precision

@@ -2,12 +2,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 // Author(s) : Progressive_embedding contributors
 
-#ifndef CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_PROTOCOLS_H
-#define CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_PROTOCOLS_H
+#ifndef PROGRESSIVE_EMBEDDING_TEST_PROTOCOLS_H
+#define PROGRESSIVE_EMBEDDING_TEST_PROTOCOLS_H
 
-// The data protocols of DESIGN.md section 6, shared by the `pe` tool, the tests
-// and the benchmarks: deep stacked triangulation, grid disks, the Tutte-failure
-// protocol on closed genus-0 meshes, and random initialization of a disk.
+// Test fixtures (not part of the installed package), shared by the tests, the `pe` tool and the
+// benchmarks: the deep stacked triangulation, grid disks, the Tutte-failure protocol on closed
+// genus-0 meshes (remove one face, pin its three vertices), and random initialization of a disk.
 
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -46,7 +46,7 @@ make_stacked_triangulation(std::size_t depth, Mesh& m)
     // The three children are the faces of the original edges h, e1, e2 (in face order);
     // descend into h, e2, e1, h, ... keeping h on the child's original (outer) edge.
     // With the corners pinned as in the Tutte-failure protocol, double Tutte flips
-    // 3 faces at depth 40 and 49 at depth 80 (DESIGN.md section 6).
+    // 3 faces at depth 40 and 49 at depth 80.
     (void)hc;
     const hd e1 = next(opposite(next(h, m), m), m);
     const hd e2 = next(opposite(next(e1, m), m), m);

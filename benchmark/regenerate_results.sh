@@ -1,0 +1,58 @@
+#!/bin/sh
+# Regenerates the tables and pictures of benchmark/results (see benchmark/results/README.md).
+#
+#   benchmark/regenerate_results.sh [--build DIR] [--out DIR] [--study] [--benchmark]
+#
+# (default)    from the committed comparison-study run (study_runs.csv.gz, study_gallery.csv): the
+#              study's tables, plot and gallery; the driver only draws the gallery runs again (under
+#              a minute), nothing is measured again. Unchanged inputs give byte-identical files.
+# --study      runs the whole comparison study again instead (about 30 minutes on 2 cores).
+# --benchmark  also runs pe_benchmark again on the failing corpus runs (study_tutte_failures.tsv)
+#              and the generated grids: progressive_embedding.{csv,md} and, with --optimize,
+#              progressive_embedding_optimized.{csv,md} (tens of minutes).
+# --build DIR  the CMake build directory (default: build); the drivers are built there.
+# --out DIR    the results folder (default: benchmark/results), e.g. a copy to compare with.
+#
+# Needs cmake, python3, and rsvg-convert (Debian librsvg2-bin) or chromium for the PNG pictures;
+# pngquant (Debian pngquant) keeps them small.
+set -eu
+
+repo=$(cd "$(dirname "$0")/.." && pwd)
+build="$repo/build"
+results="$repo/benchmark/results"
+study=0
+benchmark=0
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --build) [ $# -ge 2 ] || { echo "--build needs a directory" >&2; exit 2; }; build=$2; shift 2 ;;
+    --out) [ $# -ge 2 ] || { echo "--out needs a directory" >&2; exit 2; }; results=$2; shift 2 ;;
+    --study) study=1; shift ;;
+    --benchmark) benchmark=1; shift ;;
+    -h|--help) sed -n '2,17p' "$0"; exit 0 ;;
+    *) echo "unknown option $1 (see --help)" >&2; exit 2 ;;
+  esac
+done
+build=$(cd "$build" && pwd)
+results=$(cd "$results" && pwd)
+
+if ! command -v rsvg-convert >/dev/null 2>&1 && ! command -v chromium >/dev/null 2>&1; then
+  echo "no SVG renderer: apt-get install librsvg2-bin (the pictures would stay SVG)" >&2
+  exit 1
+fi
+
+cmake --build "$build" --target comparison_study
+if [ "$study" = 1 ]; then
+  python3 "$repo/benchmark/Progressive_embedding/run_study.py" --no-build --build "$build" --out "$results"
+else
+  python3 "$repo/benchmark/Progressive_embedding/run_study.py" --report-only --redraw-gallery --no-build \
+    --build "$build" --out "$results"
+fi
+
+if [ "$benchmark" = 1 ]; then
+  cmake --build "$build" --target pe_benchmark
+  "$build/bin/pe_benchmark" "$build/cgal_data/data" "$results/study_tutte_failures.tsv" \
+    "$results/progressive_embedding" --repeat 3
+  "$build/bin/pe_benchmark" "$build/cgal_data/data" "$results/study_tutte_failures.tsv" \
+    "$results/progressive_embedding_optimized" --optimize
+fi
+echo "$results regenerated"

@@ -1,0 +1,296 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+#ifndef CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_EXACT_PREDICATES_H
+#define CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_EXACT_PREDICATES_H
+
+// The one place where the package decides geometric signs exactly, for every supported
+// number type of uv coordinates:
+//  - orientation of three points (double: Epick's filtered predicate; other types: an interval
+//    filter built with CGAL::to_interval, used only when every bound is finite, then exact
+//    arithmetic: the number type itself when it is exact, rationals otherwise);
+//  - closed segment intersection and triangle interior intersection, from orientations and
+//    coordinate comparisons only (both exact in every supported number type);
+//  - exact (rational) twice signed areas of triangles and polygons;
+//  - conservative double boxes of points whose coordinates may lie outside double range:
+//    the coordinates are first scaled exactly by one power of two chosen from their exponents,
+//    then enclosed by CGAL::to_interval (a box never misses a point, whatever its magnitude).
+
+#include <CGAL/Progressive_embedding/internal/number_utils.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Interval_nt.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Gmpq.h>
+#include <CGAL/enum.h>
+#include <CGAL/number_utils.h>
+
+#include <gmp.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Progressive_embedding {
+namespace internal {
+
+template <class Point_2>
+struct Point_ft { typedef typename CGAL::Kernel_traits<Point_2>::Kernel::FT type; };
+
+// ---- orientation ---------------------------------------------------------------------------
+
+// Interval filter: the sign of the determinant when the intervals decide it, COLLINEAR
+// with `decided == false` otherwise. Bounds that are not finite (a rational beyond double
+// range converts to an infinite bound) never decide.
+template <class FT>
+CGAL::Orientation filtered_orientation(const FT& px, const FT& py, const FT& qx, const FT& qy,
+                                       const FT& rx, const FT& ry, bool& decided)
+{
+  typedef CGAL::Interval_nt<false> I;
+  typename I::Protector protector;
+  decided = false;
+  const I ix[3] = { I(CGAL::to_interval(px)), I(CGAL::to_interval(qx)), I(CGAL::to_interval(rx)) };
+  const I iy[3] = { I(CGAL::to_interval(py)), I(CGAL::to_interval(qy)), I(CGAL::to_interval(ry)) };
+  for(int k = 0; k < 3; ++k)
+    if(!std::isfinite(ix[k].inf()) || !std::isfinite(ix[k].sup()) || !std::isfinite(iy[k].inf()) || !std::isfinite(iy[k].sup()))
+      return CGAL::COLLINEAR;
+  // finite inputs: overflow in the products gives infinite but still enclosing bounds
+  const I det = (ix[1] - ix[0]) * (iy[2] - iy[0]) - (iy[1] - iy[0]) * (ix[2] - ix[0]);
+  if(det.inf() > 0) { decided = true; return CGAL::LEFT_TURN; }
+  if(det.sup() < 0) { decided = true; return CGAL::RIGHT_TURN; }
+  return CGAL::COLLINEAR;
+}
+
+// exact orientation of coordinates in any supported number type
+template <class FT>
+CGAL::Orientation exact_orientation_ft(const FT& px, const FT& py, const FT& qx, const FT& qy, const FT& rx, const FT& ry)
+{
+  static_assert(Check_number_type<FT>::value, "");
+  if constexpr(std::is_floating_point<FT>::value)
+  {
+    typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+    // float and double convert exactly to double (long double is rejected by Check_number_type)
+    return Epick::Orientation_2()(Epick::Point_2(double(px), double(py)), Epick::Point_2(double(qx), double(qy)),
+                                  Epick::Point_2(double(rx), double(ry)));
+  }
+  else
+  {
+    bool decided = false;
+    const CGAL::Orientation o = filtered_orientation(px, py, qx, qy, rx, ry, decided);
+    if(decided) return o;
+    if constexpr(Is_exact_ft<FT>::value)
+      return CGAL::Orientation(CGAL::sign((qx - px) * (ry - py) - (qy - py) * (rx - px)));
+    else
+    {
+      // MPFR and other rounded types: their values are rationals, decide there
+      const CGAL::Gmpq x0 = to_rational(px), y0 = to_rational(py);
+      const CGAL::Gmpq det = (to_rational(qx) - x0) * (to_rational(ry) - y0) - (to_rational(qy) - y0) * (to_rational(rx) - x0);
+      return CGAL::Orientation(CGAL::sign(det));
+    }
+  }
+}
+
+template <class Point_2>
+CGAL::Orientation exact_orientation(const Point_2& p, const Point_2& q, const Point_2& r)
+{
+  return exact_orientation_ft(p.x(), p.y(), q.x(), q.y(), r.x(), r.y());
+}
+
+// the orientation functor of the default traits
+template <class Point_2>
+struct Exact_orientation_2
+{
+  typedef CGAL::Orientation result_type;
+  CGAL::Orientation operator()(const Point_2& p, const Point_2& q, const Point_2& r) const
+  { return exact_orientation(p, q, r); }
+};
+
+// ---- segments and triangles -------------------------------------------------------------------
+
+// lexicographic comparison of (x, y): exact in every supported number type
+template <class Point_2>
+CGAL::Comparison_result exact_compare_xy(const Point_2& p, const Point_2& q)
+{
+  if(p.x() < q.x()) return CGAL::SMALLER;
+  if(q.x() < p.x()) return CGAL::LARGER;
+  if(p.y() < q.y()) return CGAL::SMALLER;
+  if(q.y() < p.y()) return CGAL::LARGER;
+  return CGAL::EQUAL;
+}
+
+// `c`, collinear with `a` and `b`, lies on the closed segment [a, b] (coordinate comparisons are exact)
+template <class Point_2>
+bool collinear_point_on_segment(const Point_2& a, const Point_2& b, const Point_2& c)
+{
+  const bool in_x = (a.x() < b.x()) ? !(c.x() < a.x()) && !(b.x() < c.x()) : !(c.x() < b.x()) && !(a.x() < c.x());
+  const bool in_y = (a.y() < b.y()) ? !(c.y() < a.y()) && !(b.y() < c.y()) : !(c.y() < b.y()) && !(a.y() < c.y());
+  return in_x && in_y;
+}
+
+// the closed segments [p0, p1] and [q0, q1] intersect
+template <class Point_2, class Orientation_2>
+bool closed_segments_intersect(const Point_2& p0, const Point_2& p1, const Point_2& q0, const Point_2& q1,
+                               const Orientation_2& orient)
+{
+  const CGAL::Orientation o1 = orient(p0, p1, q0), o2 = orient(p0, p1, q1);
+  if(o1 != CGAL::COLLINEAR && o1 == o2) return false;
+  const CGAL::Orientation o3 = orient(q0, q1, p0), o4 = orient(q0, q1, p1);
+  if(o3 != CGAL::COLLINEAR && o3 == o4) return false;
+  if(o1 != CGAL::COLLINEAR && o2 != CGAL::COLLINEAR && o3 != CGAL::COLLINEAR && o4 != CGAL::COLLINEAR)
+    return true; // proper crossing
+  return (o1 == CGAL::COLLINEAR && collinear_point_on_segment(p0, p1, q0))
+      || (o2 == CGAL::COLLINEAR && collinear_point_on_segment(p0, p1, q1))
+      || (o3 == CGAL::COLLINEAR && collinear_point_on_segment(q0, q1, p0))
+      || (o4 == CGAL::COLLINEAR && collinear_point_on_segment(q0, q1, p1));
+}
+
+// Interiors of two non-degenerate triangles, both with orientation `s`, intersect iff no
+// edge line of either one weakly separates them (separating axis theorem).
+template <class Point_2, class Orientation_2>
+bool triangle_interiors_intersect(const Point_2* t1, const Point_2* t2, CGAL::Orientation s, const Orientation_2& orient)
+{
+  auto separated_by_edges_of = [&](const Point_2* a, const Point_2* b) {
+    for(int i = 0; i < 3; ++i)
+    {
+      bool all_outside = true;
+      for(int j = 0; j < 3 && all_outside; ++j)
+        if(orient(a[i], a[(i + 1) % 3], b[j]) == s) all_outside = false; // strictly on the interior side
+      if(all_outside) return true;
+    }
+    return false;
+  };
+  return !separated_by_edges_of(t1, t2) && !separated_by_edges_of(t2, t1);
+}
+
+// ---- exact areas --------------------------------------------------------------------------------
+
+inline CGAL::Gmpq twice_signed_area(const CGAL::Gmpq& x0, const CGAL::Gmpq& y0, const CGAL::Gmpq& x1, const CGAL::Gmpq& y1,
+                                    const CGAL::Gmpq& x2, const CGAL::Gmpq& y2)
+{
+  return (x1 - x0) * (y2 - y0) - (y1 - y0) * (x2 - x0);
+}
+
+// twice the signed area of the closed polygon (x[k], y[k]) (shoelace formula, exact)
+inline CGAL::Gmpq twice_polygon_area(const std::vector<CGAL::Gmpq>& x, const std::vector<CGAL::Gmpq>& y)
+{
+  CGAL::Gmpq s(0);
+  const std::size_t n = x.size();
+  for(std::size_t k = 0; k < n; ++k)
+    s += x[k] * y[(k + 1) % n] - y[k] * x[(k + 1) % n];
+  return s;
+}
+
+// ---- powers of two -------------------------------------------------------------------------------
+
+// an exponent e with 2^(e-1) <= |q| < 2^(e+1) (q != 0)
+inline long binary_exponent(const CGAL::Gmpq& q)
+{
+  return long(mpz_sizeinbase(mpq_numref(q.mpq()), 2)) - long(mpz_sizeinbase(mpq_denref(q.mpq()), 2));
+}
+
+// q * 2^e, exactly
+inline CGAL::Gmpq times_power_of_two(const CGAL::Gmpq& q, long e)
+{
+  CGAL::Gmpq r;
+  if(e >= 0) mpq_mul_2exp(r.mpq(), q.mpq(), static_cast<mp_bitcnt_t>(e));
+  else mpq_div_2exp(r.mpq(), q.mpq(), static_cast<mp_bitcnt_t>(-e));
+  return r;
+}
+
+// The shift s such that 2^s * max|q| is about 1 (0 when every value is zero).
+inline long unit_shift(const std::vector<CGAL::Gmpq>& values)
+{
+  bool any = false;
+  long emax = 0;
+  for(const CGAL::Gmpq& q : values)
+  {
+    if(CGAL::is_zero(q)) continue;
+    const long e = binary_exponent(q);
+    if(!any || e > emax) emax = e;
+    any = true;
+  }
+  return any ? -emax : 0;
+}
+
+// the same for doubles (finite values only)
+inline long unit_shift(const std::vector<double>& values)
+{
+  double m = 0;
+  for(double d : values) if(std::isfinite(d)) m = (std::max)(m, std::abs(d));
+  return (m > 0) ? -long(std::ilogb(m)) : 0;
+}
+
+// ---- conservative boxes -------------------------------------------------------------------------
+
+// An interval enclosing x * 2^shift (x given exactly as a rational)
+inline std::pair<double, double> scaled_interval(const CGAL::Gmpq& x, long shift)
+{
+  return CGAL::to_interval(shift == 0 ? x : times_power_of_two(x, shift));
+}
+
+// Conservative boxes of points: for each point with `use[i]` (all when `use` is empty), an
+// enclosing interval of each coordinate times 2^shift, for one shift chosen from all the points
+// (a uniform positive scaling keeps every box intersection). Doubles are used as they are
+// (shift 0; they are exact); other number types go through exact rationals.
+template <class Point_2>
+struct Conservative_boxes
+{
+  typedef typename Point_ft<Point_2>::type FT;
+  std::vector<std::array<double, 4> > box; // per point: xmin, xmax, ymin, ymax
+  long shift = 0;
+
+  void build(const std::vector<Point_2>& P, const std::vector<char>& use = std::vector<char>())
+  {
+    const std::size_t n = P.size();
+    box.assign(n, std::array<double, 4>{{0, 0, 0, 0}});
+    auto used = [&](std::size_t i) { return use.empty() || use[i]; };
+    if constexpr(std::is_floating_point<FT>::value)
+    {
+      shift = 0;
+      for(std::size_t i = 0; i < n; ++i)
+        if(used(i))
+          box[i] = {{ double(P[i].x()), double(P[i].x()), double(P[i].y()), double(P[i].y()) }};
+    }
+    else
+    {
+      std::vector<CGAL::Gmpq> q;
+      q.reserve(2 * n);
+      for(std::size_t i = 0; i < n; ++i)
+        if(used(i)) { q.push_back(to_rational(P[i].x())); q.push_back(to_rational(P[i].y())); }
+      shift = unit_shift(q);
+      std::size_t k = 0;
+      for(std::size_t i = 0; i < n; ++i)
+      {
+        if(!used(i)) continue;
+        const std::pair<double, double> ix = scaled_interval(q[k++], shift), iy = scaled_interval(q[k++], shift);
+        box[i] = {{ ix.first, ix.second, iy.first, iy.second }};
+      }
+    }
+  }
+
+  // the box of several points
+  template <class Indices>
+  std::array<double, 4> hull(const Indices& ids) const
+  {
+    std::array<double, 4> b = box[ids[0]];
+    for(std::size_t k = 1; k < ids.size(); ++k)
+    {
+      const std::array<double, 4>& c = box[ids[k]];
+      b[0] = (std::min)(b[0], c[0]); b[1] = (std::max)(b[1], c[1]);
+      b[2] = (std::min)(b[2], c[2]); b[3] = (std::max)(b[3], c[3]);
+    }
+    return b;
+  }
+};
+
+} // namespace internal
+} // namespace Progressive_embedding
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_EXACT_PREDICATES_H

@@ -1,0 +1,169 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+#ifndef CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_SCALING_H
+#define CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_SCALING_H
+
+// Power-of-two normalization of a planar map. The algorithms square areas and lengths
+// (energies, gradients, Hessians): in double, uv coordinates beyond about 1e77 or below
+// 1e-77 overflow or underflow there, and exact types lose the double conversions used for
+// search directions. Multiplying by 2^k is exact in binary floating point, Gmpq and Gmpfr
+// (unless it overflows or underflows), so a map is scaled by the power of two that brings
+// its border's bounding box to about 1 (when it is beyond 2^+-32), worked on, and scaled back;
+// `Power_of_two_scaling` checks that the border round-trips bit-exactly and otherwise scales by 1.
+
+#include <CGAL/Progressive_embedding/internal/number_utils.h>
+
+#include <CGAL/number_utils.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Progressive_embedding {
+namespace internal {
+
+// 2^k in FT, exact: ldexp for built-in floating point (0 or inf when out of range),
+// binary powering otherwise (powers of two are exact in Gmpq and Gmpfr).
+template <class FT>
+FT power_of_two(long k)
+{
+  if constexpr(std::is_floating_point<FT>::value)
+    return std::ldexp(FT(1), int((std::max)(long(std::numeric_limits<int>::min() / 2),
+                                            (std::min)(k, long(std::numeric_limits<int>::max() / 2)))));
+  else
+  {
+    FT result = make_ft<FT>(1), base = make_ft<FT>(2);
+    unsigned long e = (k < 0) ? static_cast<unsigned long>(-(k + 1)) + 1 : static_cast<unsigned long>(k);
+    for(int bit = 0; e != 0 && bit < 64; ++bit, e >>= 1) // bounded: one pass per bit of |k|
+    {
+      if(e & 1ul) result = result * base;
+      if(e > 1) base = base * base;
+    }
+    return (k < 0) ? make_ft<FT>(1) / result : result;
+  }
+}
+
+// The exponent e of std::frexp: 2^(e-1) <= |x| < 2^e (|x| > 0 and finite; one more when a
+// non-double x rounds up to a power of two in double), without converting an out-of-range
+// value to double.
+template <class FT>
+long frexp_exponent(const FT& x)
+{
+  if constexpr(std::is_floating_point<FT>::value)
+  {
+    int e = 0;
+    std::frexp(x, &e);
+    return e;
+  }
+  else
+  {
+    const double d = std::abs(CGAL::to_double(x));
+    if(std::isfinite(d) && d >= 0x1p-1000 && d <= 0x1p+1000)
+    {
+      int e = 0;
+      std::frexp(d, &e);
+      return e;
+    }
+    // outside double range: exponential then binary search with exact comparisons
+    const bool small = CGAL::abs(x) < make_ft<FT>(1);
+    const FT a = small ? make_ft<FT>(1) / CGAL::abs(x) : FT(CGAL::abs(x));
+    long hi = 1;
+    FT p = make_ft<FT>(2); // 2^hi
+    for(int guard = 0; !(a < p) && guard < 62; ++guard) { hi *= 2; p = p * p; }
+    long lo = hi / 2; // 2^lo <= a < 2^hi
+    for(int guard = 0; hi - lo > 1 && guard < 64; ++guard)
+    {
+      const long mid = lo + (hi - lo) / 2;
+      if(a < power_of_two<FT>(mid)) hi = mid; else lo = mid;
+    }
+    return small ? 1 - hi : hi;
+  }
+}
+
+template <class FT>
+bool same_value(const FT& a, const FT& b)
+{
+  if constexpr(std::is_floating_point<FT>::value)
+    return std::memcmp(&a, &b, sizeof(FT)) == 0; // also tells -0 from +0
+  else
+    return a == b;
+}
+
+// x * 2^k with the power prepared once. `exponent() == 0` is the identity.
+template <class FT>
+class Power_of_two_scaling
+{
+  long k_ = 0;
+  FT up_, down_;
+
+public:
+  Power_of_two_scaling() : up_(make_ft<FT>(1)), down_(make_ft<FT>(1)) {}
+
+  explicit Power_of_two_scaling(long k) : k_(k), up_(power_of_two<FT>(k)), down_(power_of_two<FT>(-k)) {}
+
+  long exponent() const { return k_; }
+
+  FT forward(const FT& x) const
+  {
+    if(k_ == 0) return x;
+    if constexpr(std::is_floating_point<FT>::value) return std::ldexp(x, int(k_));
+    else return x * up_;
+  }
+
+  FT backward(const FT& x) const
+  {
+    if(k_ == 0) return x;
+    if constexpr(std::is_floating_point<FT>::value) return std::ldexp(x, int(-k_));
+    else return x * down_;
+  }
+
+  // true if x * 2^k is finite and comes back to x bit-exactly
+  bool round_trips(const FT& x) const
+  {
+    const FT y = forward(x);
+    return is_finite_ft(y) && same_value(backward(y), x);
+  }
+
+  // The power of two that brings the bounding box of `border` (points with x(), y()) to an
+  // extent in [1/2, 1) when it is outside [2^-32, 2^32], if every border coordinate round-trips exactly; the identity otherwise
+  // (empty, degenerate or non-finite border).
+  template <class PointRange>
+  static Power_of_two_scaling normalizing(const PointRange& border)
+  {
+    bool first = true;
+    FT xmin, xmax, ymin, ymax;
+    for(const auto& p : border)
+    {
+      if(!is_finite_ft(p.x()) || !is_finite_ft(p.y())) return Power_of_two_scaling();
+      if(first) { xmin = xmax = p.x(); ymin = ymax = p.y(); first = false; continue; }
+      if(p.x() < xmin) xmin = p.x();
+      if(xmax < p.x()) xmax = p.x();
+      if(p.y() < ymin) ymin = p.y();
+      if(ymax < p.y()) ymax = p.y();
+    }
+    if(first) return Power_of_two_scaling();
+    // the extents, halved first so that they cannot overflow in floating point
+    const FT half = make_ft<FT>(0.5);
+    const FT ex = xmax * half - xmin * half, ey = ymax * half - ymin * half;
+    const FT e = (ex < ey) ? ey : ex;
+    if(!(e > make_ft<FT>(0)) || !is_finite_ft(e)) return Power_of_two_scaling();
+    const long k = -(frexp_exponent(e) + 1); // the halving above: extent = 2 e
+    // ordinary scales need nothing (and then give the same results as without this normalization)
+    if(k >= -32 && k <= 32) return Power_of_two_scaling();
+    const Power_of_two_scaling s(k);
+    for(const auto& p : border)
+      if(!s.round_trips(p.x()) || !s.round_trips(p.y())) return Power_of_two_scaling();
+    return s;
+  }
+};
+
+} // namespace internal
+} // namespace Progressive_embedding
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_SCALING_H

@@ -1,0 +1,314 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+// `pe`: reading meshes and constraints (with the checks every command needs: a regular file, a
+// triangle mesh, manifold, finite, of the right topology) and writing maps and pictures.
+
+#include "pe.h"
+
+#include <CGAL/Progressive_embedding/IO/OBJ_with_uv.h>
+#include <CGAL/Progressive_embedding/IO/SVG.h>
+#include <CGAL/Progressive_embedding/IO/read_polygon_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace pe_tool {
+
+std::size_t count_faces(const Mesh& m)
+{
+  return static_cast<std::size_t>(std::distance(faces(m).begin(), faces(m).end()));
+}
+
+std::string input_file_problem(const std::string& path)
+{
+  struct stat st;
+  if(::stat(path.c_str(), &st) != 0) return std::string("cannot open the file: ") + std::strerror(errno);
+  if(S_ISDIR(st.st_mode)) return "cannot open the file: it is a directory, not a regular file";
+  // devices and pipes may never end (/dev/zero): only regular files are read
+  if(!S_ISREG(st.st_mode)) return "cannot open the file: not a regular file";
+  std::ifstream probe(path, std::ios::binary);
+  if(!probe) return std::string("cannot open the file: ") + std::strerror(errno);
+  return std::string();
+}
+
+int check_output_path(Run& run, const std::string& path, const std::string& role, bool directory)
+{
+  const std::string what = "cannot write " + (role.empty() ? std::string() : role + " ") + "'" + path + "'";
+  struct stat st;
+  const bool exists = ::stat(path.c_str(), &st) == 0;
+  if(directory)
+  {
+    if(!exists) return run.fail(PE::ERROR_CANNOT_WRITE_FILE, what, std::string("no such directory: ") + std::strerror(errno));
+    if(!S_ISDIR(st.st_mode)) return run.fail(PE::ERROR_CANNOT_WRITE_FILE, what, "not a directory");
+    if(::access(path.c_str(), W_OK) != 0) return run.fail(PE::ERROR_CANNOT_WRITE_FILE, what, std::strerror(errno));
+    return EXIT_VALID;
+  }
+  if(exists && S_ISDIR(st.st_mode)) return run.fail(PE::ERROR_CANNOT_WRITE_FILE, what, "it is a directory");
+  const std::size_t slash = path.find_last_of('/');
+  const std::string folder = slash == std::string::npos ? std::string(".") : (slash == 0 ? std::string("/") : path.substr(0, slash));
+  struct stat fs;
+  if(::stat(folder.c_str(), &fs) != 0 || !S_ISDIR(fs.st_mode))
+    return run.fail(PE::ERROR_CANNOT_WRITE_FILE, what, "the folder '" + folder + "' does not exist");
+  if(exists ? ::access(path.c_str(), W_OK) != 0 : ::access(folder.c_str(), W_OK) != 0)
+    return run.fail(PE::ERROR_CANNOT_WRITE_FILE, what, std::strerror(errno));
+  return EXIT_VALID;
+}
+
+namespace {
+
+std::string lower_extension(const std::string& f)
+{
+  const std::size_t dot = f.find_last_of('.');
+  if(dot == std::string::npos || f.find_first_of("/\\", dot) != std::string::npos) return std::string();
+  std::string e = f.substr(dot + 1);
+  for(char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+// Reads one line of at most `limit` characters (a file without line breaks must not be read
+// into memory at once); false at the end of the file or on a longer line (`too_long` set).
+bool bounded_getline(std::istream& in, std::string& line, std::size_t limit, bool& too_long)
+{
+  line.clear();
+  too_long = false;
+  std::istream::int_type c;
+  bool any = false;
+  while((c = in.get()) != std::istream::traits_type::eof())
+  {
+    any = true;
+    if(c == '\n') return true;
+    if(line.size() >= limit) { too_long = true; return false; }
+    line += static_cast<char>(c);
+  }
+  return any;
+}
+
+bool obj_has_texture_coordinates(const std::string& f)
+{
+  std::ifstream in(f, std::ios::binary);
+  std::string line;
+  bool too_long = false;
+  // a line too long for a vt entry ends the scan: the reader reports it
+  while(bounded_getline(in, line, 1 << 16, too_long))
+  {
+    const std::size_t i = line.find_first_not_of(" \t");
+    if(i != std::string::npos && line.compare(i, 2, "vt") == 0 && i + 2 < line.size()
+       && (line[i + 2] == ' ' || line[i + 2] == '\t'))
+      return true;
+  }
+  return false;
+}
+
+// The topology of a mesh: what a disk (1, 1, 1) and a closed genus-0 mesh (1, 0, 2) are told by.
+struct Topology_counts
+{
+  std::size_t components = 0;
+  std::size_t border_cycles = 0;
+  std::size_t isolated_vertices = 0;
+  long long euler = 0;
+};
+
+Topology_counts topology(const Mesh& m)
+{
+  Topology_counts t;
+  // components: union-find over the vertices, joined along the edges
+  std::vector<std::size_t> parent(m.num_vertices());
+  for(std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
+  auto find = [&](std::size_t i) {
+    while(parent[i] != i) { parent[i] = parent[parent[i]]; i = parent[i]; }
+    return i;
+  };
+  std::size_t nv = 0, ne = 0;
+  for(auto e : edges(m))
+  {
+    ++ne;
+    const std::size_t a = find(std::size_t(source(halfedge(e, m), m))), b = find(std::size_t(target(halfedge(e, m), m)));
+    if(a != b) parent[a] = b;
+  }
+  for(vertex_descriptor v : vertices(m))
+  {
+    if(m.is_isolated(v)) { ++t.isolated_vertices; continue; }
+    ++nv;
+    if(find(std::size_t(v)) == std::size_t(v)) ++t.components;
+  }
+  // border cycles: each border halfedge is on exactly one; the walk is bounded by their number
+  std::vector<char> seen(m.num_halfedges(), 0);
+  std::size_t border_halfedges = 0;
+  for(auto h : halfedges(m)) if(is_border(h, m)) ++border_halfedges;
+  for(auto h : halfedges(m))
+  {
+    if(!is_border(h, m) || seen[std::size_t(h)]) continue;
+    ++t.border_cycles;
+    auto g = h;
+    for(std::size_t steps = 0; steps <= border_halfedges && !seen[std::size_t(g)]; ++steps)
+    {
+      seen[std::size_t(g)] = 1;
+      g = next(g, m);
+    }
+  }
+  t.euler = static_cast<long long>(nv) - static_cast<long long>(ne) + static_cast<long long>(count_faces(m));
+  return t;
+}
+
+std::string plural(std::size_t n, const char* what)
+{
+  return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+}
+
+// the faults of a mesh that no command accepts; EXIT_VALID if none
+int check_mesh(Run& run, const std::string& what, const Mesh& m, Shape shape)
+{
+  if(count_faces(m) == 0) return run.fail(PE::ERROR_EMPTY_MESH, what);
+  std::size_t index = 0;
+  for(face_descriptor f : faces(m))
+  {
+    const std::size_t d = degree(f, m);
+    if(d != 3)
+      return run.fail(PE::ERROR_NON_TRIANGULAR_MESH, what, "face " + std::to_string(index) + " has " + std::to_string(d) +
+                                                           " vertices: a triangle mesh is needed");
+    ++index;
+  }
+  index = 0;
+  for(vertex_descriptor v : vertices(m))
+  {
+    const Point_3& p = m.point(v);
+    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      return run.fail(PE::ERROR_NON_FINITE_COORDINATES, what, "vertex " + std::to_string(index) + " has a NaN or infinite coordinate");
+    ++index;
+  }
+  // a non-manifold vertex: its faces form several fans, so the halfedges around it are fewer
+  // than the halfedges that end at it
+  std::vector<std::size_t> incoming(m.num_vertices(), 0);
+  for(auto h : halfedges(m)) ++incoming[std::size_t(target(h, m))];
+  for(vertex_descriptor v : vertices(m))
+  {
+    if(m.is_isolated(v)) continue;
+    std::size_t around = 0;
+    const auto h0 = halfedge(v, m);
+    auto h = h0;
+    do { ++around; h = opposite(next(h, m), m); } while(h != h0 && around <= incoming[std::size_t(v)]);
+    if(around != incoming[std::size_t(v)])
+      return run.fail(PE::ERROR_NON_MANIFOLD, what, "vertex " + std::to_string(std::size_t(v)) + " is not manifold (its faces form several fans)");
+  }
+  const Topology_counts t = topology(m);
+  std::ostringstream found;
+  found << plural(t.components, "component") << ", " << plural(t.border_cycles, "border cycle") << ", Euler characteristic "
+        << t.euler;
+  if(t.isolated_vertices) found << ", " << plural(t.isolated_vertices, "vertex") << " in no face";
+  if(shape == Shape::DISK && (t.components != 1 || t.border_cycles != 1 || t.euler != 1 || t.isolated_vertices))
+    return run.fail(PE::ERROR_NOT_A_DISK, what, "not a topological disk: " + found.str() +
+                    " (a disk has 1 component, 1 border cycle, Euler characteristic 1)");
+  if(shape == Shape::CLOSED_SPHERE && (t.components != 1 || t.border_cycles != 0 || t.euler != 2 || t.isolated_vertices))
+    return run.fail(PE::ERROR_NOT_A_DISK, what, "not a closed genus-0 mesh: " + found.str() +
+                    " (the protocol needs 1 component, no border, Euler characteristic 2)");
+  return EXIT_VALID;
+}
+
+} // namespace
+
+int read_input(Run& run, const std::string& filename, Input& in, Uv_mode mode, Shape shape, const std::string& role)
+{
+  in.filename = filename;
+  run.result.add(role.empty() ? std::string("input") : role, filename);
+  const std::string what = "cannot use '" + filename + "'";
+  auto fail = [&](PE::Error_code ec, std::size_t line, const std::string& msg) {
+    return run.fail(ec, what, (line > 0 ? "line " + std::to_string(line) + ": " : std::string()) + msg);
+  };
+  const std::string problem = input_file_problem(filename);
+  if(!problem.empty()) return fail(PE::ERROR_CANNOT_READ_FILE, 0, problem);
+  const std::string ext = lower_extension(filename);
+  if(mode != Uv_mode::IGNORED && ext == "obj" && obj_has_texture_coordinates(filename))
+  {
+    in.uv = in.mesh.add_property_map<vertex_descriptor, Point_2>("v:pe_uv", Point_2(0, 0)).first;
+    const PE::IO::Read_result r = PE::IO::read_OBJ_with_uv(filename, in.mesh, in.uv, &in.vt_to_v, &in.positions);
+    if(!r) return fail(r.status, r.line, r.message.empty() ? PE::get_error_message(r.status) : r.message);
+    in.has_uv = true;
+    return check_mesh(run, what, in.mesh, shape);
+  }
+  if(mode == Uv_mode::REQUIRED)
+    return fail(PE::ERROR_MALFORMED_FILE, 0, "no texture coordinates: an OBJ file with vt entries and f v/vt faces is needed");
+  if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
+    return fail(PE::ERROR_MALFORMED_FILE, 0, "unknown format '." + ext + "' (OFF, OBJ, PLY or STL expected)");
+  // bounded memory, line numbers, the same error codes as the OBJ reader with uv
+  const PE::IO::Read_result r = PE::IO::read_polygon_mesh(filename, in.mesh);
+  if(!r) return fail(r.status, r.line, r.message.empty() ? PE::get_error_message(r.status) : r.message);
+  in.uv = in.mesh.add_property_map<vertex_descriptor, Point_2>("v:pe_uv", Point_2(0, 0)).first;
+  return check_mesh(run, what, in.mesh, shape);
+}
+
+int read_constraints(Run& run, const std::string& filename, Input& in, std::vector<vertex_descriptor>& fixed)
+{
+  const std::string what = "cannot use --fix '" + filename + "'";
+  const std::string problem = input_file_problem(filename);
+  if(!problem.empty()) return run.fail(PE::ERROR_CANNOT_READ_FILE, what, problem);
+  std::ifstream f(filename, std::ios::binary);
+  std::string line;
+  bool too_long = false;
+  const std::size_t n = in.mesh.number_of_vertices();
+  for(std::size_t lineno = 1; ; ++lineno)
+  {
+    if(!bounded_getline(f, line, 4096, too_long))
+    {
+      if(too_long) return run.fail(PE::ERROR_MALFORMED_FILE, what, "line " + std::to_string(lineno) + ": line too long");
+      break;
+    }
+    if(!line.empty() && line.back() == '\r') line.pop_back();
+    std::vector<std::string> tokens;
+    std::istringstream ls(line);
+    for(std::string t; ls >> t && tokens.size() < 4; ) tokens.push_back(t);
+    if(tokens.empty() || tokens[0][0] == '#') continue;
+    unsigned long long index = 0;
+    std::string why;
+    double u = 0, v = 0;
+    auto real = [](const std::string& s, double& d) {
+      char* end = nullptr;
+      errno = 0;
+      d = std::strtod(s.c_str(), &end);
+      return end != s.c_str() && *end == '\0' && std::isfinite(d);
+    };
+    if(tokens.size() != 3 || !parse_count(tokens[0], 0, n == 0 ? 0 : n - 1, index, why) || n == 0
+       || !real(tokens[1], u) || !real(tokens[2], v))
+      return run.fail(PE::ERROR_MALFORMED_FILE, what, "line " + std::to_string(lineno) +
+                      ": expected 'vertex_index u v' with 0 <= vertex_index < " + std::to_string(n) + " and finite u, v");
+    const vertex_descriptor vd(static_cast<Mesh::size_type>(index));
+    in.uv[vd] = Point_2(u, v);
+    fixed.push_back(vd);
+  }
+  return EXIT_VALID;
+}
+
+int write_picture(Run& run, const Input& in, const std::string& svg, const Picture& picture)
+{
+  PE::IO::SVG_options options;
+  options.title = picture.title;
+  options.inset = picture.inset;
+  // the distortion colors need 3D triangles of non-zero area: without them, plain faces
+  options.color_by_distortion = picture.color_by_distortion && picture.has_3d_energy;
+  const PE::Error_code ec = PE::IO::write_SVG(svg, in.mesh, in.uv, options);
+  if(ec != PE::OK) return run.fail(ec, "cannot write '" + svg + "'");
+  return EXIT_VALID;
+}
+
+int write_outputs(Run& run, const Input& in, const std::string& obj, const std::string& svg, const Picture& picture)
+{
+  const PE::Error_code ec = in.has_uv ? PE::IO::write_OBJ_with_uv(obj, in.mesh, in.uv, &in.vt_to_v, &in.positions)
+                                      : PE::IO::write_OBJ_with_uv(obj, in.mesh, in.uv);
+  if(ec != PE::OK) return run.fail(ec, "cannot write '" + obj + "'");
+  if(!svg.empty()) return write_picture(run, in, svg, picture);
+  return EXIT_VALID;
+}
+
+} // namespace pe_tool

@@ -1,0 +1,143 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+// `pe`, the command-line tool of the package: the meshes and the algorithm steps that the command
+// families share (see cli.h for the command line and the list of files).
+
+#ifndef PE_TOOL_PE_H
+#define PE_TOOL_PE_H
+
+#include "cli.h"
+
+#include <CGAL/Progressive_embedding/parameters.h>
+#include <CGAL/Progressive_embedding/check_embedding.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+namespace CGAL {
+namespace Progressive_embedding {
+struct Progressive_embedding_statistics;
+struct Optimization_statistics;
+}
+}
+
+namespace pe_tool {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel   K;
+typedef K::Point_2                                            Point_2;
+typedef K::Point_3                                            Point_3;
+typedef CGAL::Surface_mesh<Point_3>                           Mesh;
+typedef Mesh::Vertex_index                                    vertex_descriptor;
+typedef Mesh::Face_index                                      face_descriptor;
+typedef Mesh::Property_map<vertex_descriptor, Point_2>        UV_map;
+
+// ---- input and output ---------------------------------------------------------------------
+
+struct Input
+{
+  std::string filename;
+  Mesh mesh;
+  UV_map uv;
+  bool has_uv = false;                  // read from `vt` entries
+  std::vector<std::size_t> vt_to_v;     // with has_uv: to write the seams back
+  std::vector<Point_3> positions;
+};
+
+enum class Uv_mode { REQUIRED, OPTIONAL, IGNORED };
+enum class Shape { DISK, CLOSED_SPHERE };
+
+// Reads `filename` (OFF, OBJ, PLY, STL; the uv map from an OBJ with vt entries) and checks that
+// it is a triangle mesh of the shape needed. Returns EXIT_VALID, or reports the failure through
+// `run` and returns its exit status.
+int read_input(Run& run, const std::string& filename, Input& in, Uv_mode mode, Shape shape = Shape::DISK,
+               const std::string& role = std::string());
+
+// Reads `vertex_index u v` lines (--fix) into `in.uv` and `fixed`; same return as read_input().
+int read_constraints(Run& run, const std::string& filename, Input& in, std::vector<vertex_descriptor>& fixed);
+
+// What a picture shows.
+struct Picture
+{
+  std::string title;
+  bool color_by_distortion = true;  // faces coloured by their distortion, with a legend
+  bool inset = false;               // an inset zoomed on the flipped faces
+  bool has_3d_energy = true;        // the certificate has 3D energies (else no distortion colors)
+};
+
+// writes the map (OBJ with uv) and, if `svg` is not empty, its picture; returns EXIT_VALID, or
+// reports the failure through `run` (naming the file) and returns EXIT_OUTPUT
+int write_outputs(Run& run, const Input& in, const std::string& obj, const std::string& svg = std::string(),
+                  const Picture& picture = Picture());
+int write_picture(Run& run, const Input& in, const std::string& svg, const Picture& picture);
+
+// faces(m).size(): num_faces(Surface_mesh) also counts removed faces
+std::size_t count_faces(const Mesh& m);
+
+// ---- certificate (commands_check.cpp) -----------------------------------------------------
+
+PE::Embedding_report certify(const Input& in);
+// the certificate's fields into the result; `prefix` distinguishes several maps ("tutte_")
+void add_report(Result& r, const PE::Embedding_report& rep, const std::string& prefix = std::string());
+// one line: `valid: faces 10, flipped 0, ...`; non-finite measures printed as inf or nan
+std::string describe(const PE::Embedding_report& rep);
+// the exit status of the map of `in` just certified: EXIT_VALID, EXIT_INVALID, or the input-error
+// status when the map is valid but its distortion is not finite (a zero-area 3D face:
+// ERROR_DEGENERATE_3D_FACE; coordinates whose products overflow double:
+// ERROR_NON_FINITE_COORDINATES); `code` and `why` then say so
+int map_status(const Input& in, const PE::Embedding_report& rep, PE::Error_code& code, std::string& why);
+// ends `run` with map_status(): the message on stderr, the status in the result
+int finish_with_map_status(Run& run, const Input& in, const PE::Embedding_report& rep);
+// the common end of the commands that write a map: the file, then the exit status of map_status()
+int write_and_finish(Run& run, const Input& in, const std::string& obj, const PE::Embedding_report& rep,
+                     const std::string& svg = std::string(), const Picture& picture = Picture());
+
+// ---- Tutte steps (commands_tutte.cpp) -----------------------------------------------------
+
+enum class Number_type { DOUBLE, EXACT, MPFR };
+
+struct Tutte_settings
+{
+  PE::Border_shape border = PE::Border_shape::CIRCLE;
+  PE::Weights weights = PE::Weights::UNIFORM;
+  Number_type number_type = Number_type::DOUBLE;
+  unsigned long bits = 0;                     // with MPFR
+};
+
+// parses --border, --weights and --number-type; the default border is FIXED for an OBJ with uv
+// (then `in` must be read first), CIRCLE otherwise. Returns EXIT_VALID or reports through `run`.
+int tutte_settings(Run& run, const Input& in, Tutte_settings& s);
+// Tutte in the number type of `s`, rounded to double into in.uv; `exact_report` certifies the
+// map before rounding (not double only)
+PE::Error_code run_tutte(Input& in, const Tutte_settings& s, const Budget& budget, PE::Embedding_report& exact_report);
+// the Tutte-failure protocol on the closed mesh of `in`
+PE::Error_code thingi_protocol(Input& in, unsigned seed, const Budget& budget);
+
+// ---- repair and optimization steps (commands_repair.cpp) ----------------------------------
+
+struct Optimize_settings
+{
+  bool free_border = false;
+  std::vector<vertex_descriptor> fixed;
+  std::size_t iterations = 200;
+  double tolerance = 1e-4;
+};
+
+// the optimization settings of --free-border, --iterations and --tolerance (checked by the parser)
+Optimize_settings optimize_settings(const Arguments& a, std::size_t default_iterations);
+// progressive embedding of in.uv (border kept); `will_optimize` selects the repair parameters
+PE::Error_code run_repair(Input& in, bool will_optimize, const Budget& budget, PE::Progressive_embedding_statistics& st);
+// distortion optimization of the valid map in.uv
+PE::Error_code run_optimize(Input& in, const Optimize_settings& s, const Budget& budget, PE::Optimization_statistics& os);
+// the certificate a repair ends with, the mean energies of an optimization
+const PE::Embedding_report& repair_report(const PE::Progressive_embedding_statistics& st);
+const PE::Embedding_report& optimization_report(const PE::Optimization_statistics& os);
+void add_statistics(Result& r, const PE::Progressive_embedding_statistics& st);
+std::string statistics_summary(const PE::Progressive_embedding_statistics& st);
+void add_optimization(Result& r, const PE::Optimization_statistics& os);
+std::string optimization_summary(const PE::Optimization_statistics& os);
+
+} // namespace pe_tool
+
+#endif // PE_TOOL_PE_H

@@ -121,6 +121,24 @@ PE::Error_code optimize_after_repair(Run& run, Input& in, const Budget& budget, 
   return eo;
 }
 
+// The common end of untangle and embed: the optimization (unless --no-optimize), then the output.
+int optimize_and_finish(Run& run, Input& in, const Arguments& a, const Budget& budget, bool optimize,
+                        PE::Embedding_report report)
+{
+  PE::Optimization_statistics os;
+  run.result.add("optimized", false);
+  if(optimize)
+  {
+    const PE::Error_code ec = optimize_after_repair(run, in, budget, os, report);
+    if(ec != PE::OK) { run.summary << "; "; return run.fail(ec, "optimization failed on '" + in.filename + "'"); }
+    if(os.iterations) run.summary << ", optimization: " << optimization_summary(os);
+  }
+  run.result.add("status", "OK");
+  run.result.add("seconds", run.timer.seconds());
+  run.summary << ", " << seconds_string(run.timer.seconds()) << "; ";
+  return write_and_finish(run, in, a.positional[1], report);
+}
+
 } // namespace
 
 int cmd_untangle(const Arguments& a)
@@ -139,18 +157,7 @@ int cmd_untangle(const Arguments& a)
   run.summary << "faces " << count_faces(in.mesh) << ", " << statistics_summary(st);
   if(ec != PE::OK) { run.summary << "; "; return run.fail(ec, "progressive embedding failed on '" + in.filename + "'"); }
   PE::Embedding_report report = repair_report(st);
-  PE::Optimization_statistics os;
-  run.result.add("optimized", false);
-  if(optimize)
-  {
-    ec = optimize_after_repair(run, in, budget, os, report);
-    if(ec != PE::OK) { run.summary << "; "; return run.fail(ec, "optimization failed on '" + in.filename + "'"); }
-    if(os.iterations) run.summary << ", optimization: " << optimization_summary(os);
-  }
-  run.result.add("status", "OK");
-  run.result.add("seconds", run.timer.seconds());
-  run.summary << ", " << seconds_string(run.timer.seconds()) << "; ";
-  return write_and_finish(run, in, a.positional[1], report);
+  return optimize_and_finish(run, in, a, budget, optimize, report);
 }
 
 int cmd_embed(const Arguments& a)
@@ -187,18 +194,7 @@ int cmd_embed(const Arguments& a)
     if(ec != PE::OK) { run.summary << "; "; return run.fail(ec, "progressive embedding failed on '" + in.filename + "'"); }
     report = repair_report(st);
   }
-  PE::Optimization_statistics os;
-  run.result.add("optimized", false);
-  if(optimize)
-  {
-    ec = optimize_after_repair(run, in, budget, os, report);
-    if(ec != PE::OK) { run.summary << "; "; return run.fail(ec, "optimization failed on '" + in.filename + "'"); }
-    if(os.iterations) run.summary << ", optimization: " << optimization_summary(os);
-  }
-  run.result.add("status", "OK");
-  run.result.add("seconds", run.timer.seconds());
-  run.summary << ", " << seconds_string(run.timer.seconds()) << "; ";
-  return write_and_finish(run, in, a.positional[1], report);
+  return optimize_and_finish(run, in, a, budget, optimize, report);
 }
 
 int cmd_optimize(const Arguments& a)

@@ -13,6 +13,7 @@
 #include <CGAL/Progressive_embedding/parameters.h>
 #include <CGAL/Progressive_embedding/Progressive_embedding_traits_2.h>
 #include <CGAL/Progressive_embedding/check_embedding.h>
+#include <CGAL/Progressive_embedding/Progressive_embedding_statistics.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 #include <CGAL/Progressive_embedding/internal/border_polygon.h>
 #include <CGAL/Progressive_embedding/internal/number_utils.h>
@@ -35,40 +36,6 @@
 
 namespace CGAL {
 namespace Progressive_embedding {
-
-/// \ingroup PkgProgressiveEmbeddingReports
-///
-/// What `progressive_embedding()` did, filled when a pointer to it is passed with the
-/// `statistics` named parameter.
-struct Progressive_embedding_statistics
-{
-  /// faces invalid in the input map (orientation or energy)
-  std::size_t invalid_faces_before = 0;
-  /// edge collapses of the simplification stage (= vertex insertions of the second stage)
-  std::size_t collapses = 0;
-  /// tag-expansion rounds of the simplification stage
-  std::size_t expansion_rounds = 0;
-  /// interior vertices placed at the barycenter of their (border) neighbours
-  std::size_t barycenter_placements = 0;
-  /// vertices re-inserted
-  std::size_t insertions = 0;
-  /// restarts with a lower energy threshold after a failed insertion (floating point only)
-  std::size_t restarts = 0;
-  /// insertions that found no candidate at first and needed extra smoothing (0 in exact arithmetic, Lemma A.11)
-  std::size_t insertions_with_extra_smoothing = 0;
-  /// accepted smoothing steps
-  std::size_t smoothing_steps = 0;
-  /// seconds spent in the simplification stage
-  double seconds_collapse = 0;
-  /// seconds spent in the insertion stage
-  double seconds_insertion = 0;
-  /// seconds spent certifying the output with `check_embedding()`
-  double seconds_certification = 0;
-  /// total seconds, certification included
-  double seconds_total = 0;
-  /// the certificate of the output map
-  Embedding_report report;
-};
 
 /// \ingroup PkgProgressiveEmbeddingMainFunctions
 ///
@@ -268,17 +235,7 @@ Error_code progressive_embedding(const TriangleMesh& tm, VertexUVMap uvm,
     // the embedder (its working mesh and collapse history) is gone before the certificate is computed
     internal::Progressive_embedder<Traits> pe(traits, opt);
     ec = pe.run(P, disk.faces, disk.on_border, twice_area / FT(2));
-    const internal::Embedder_counters& c = pe.counters;
-    stats.invalid_faces_before = c.invalid_faces_before;
-    stats.collapses = c.collapses;
-    stats.expansion_rounds = c.expansion_rounds;
-    stats.barycenter_placements = c.barycenter_placements;
-    stats.insertions = c.insertions;
-    stats.restarts = c.restarts;
-    stats.insertions_with_extra_smoothing = c.insertions_with_extra_smoothing;
-    stats.smoothing_steps = c.smoothing_steps;
-    stats.seconds_collapse = c.seconds_collapse;
-    stats.seconds_insertion = c.seconds_insertion;
+    stats = pe.counters; // the stages count into the public statistics; timings and report follow
   }
   if(ec != OK) { stats.seconds_total = timer.time(); return ec; }
   std::vector<std::array<std::size_t, 3> >().swap(disk.faces); // not needed any more

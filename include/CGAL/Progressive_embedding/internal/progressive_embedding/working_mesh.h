@@ -11,6 +11,7 @@
 // of a face, and scratch marks for neighbourhood queries.
 
 #include <CGAL/Progressive_embedding/Error_code.h>
+#include <CGAL/Progressive_embedding/Progressive_embedding_statistics.h>
 #include <CGAL/Progressive_embedding/internal/symmetric_dirichlet.h>
 #include <CGAL/Progressive_embedding/internal/number_utils.h>
 
@@ -27,20 +28,8 @@ namespace CGAL {
 namespace Progressive_embedding {
 namespace internal {
 
-// What the stages did (copied into the public statistics by progressive_embedding()).
-struct Embedder_counters
-{
-  std::size_t invalid_faces_before = 0;
-  std::size_t collapses = 0;
-  std::size_t expansion_rounds = 0;
-  std::size_t barycenter_placements = 0;
-  std::size_t insertions = 0;
-  std::size_t restarts = 0;
-  std::size_t insertions_with_extra_smoothing = 0;
-  std::size_t smoothing_steps = 0;
-  double seconds_collapse = 0;
-  double seconds_insertion = 0;
-};
+// What the stages did: they count straight into the public statistics.
+typedef Progressive_embedding_statistics Embedder_counters;
 
 template <class Traits>
 class Working_mesh

@@ -4,7 +4,9 @@
 // after, time, iterations, status, and the stability check (ten times the iterations, tolerance 0,
 // from the optimized map: how much more the mean drops).
 //
-//   quality_benchmark DATA_DIR CORPUS_TSV OUT_PREFIX [--only MESH SEED] [--no-stability]
+//   quality_benchmark DATA_DIR CORPUS_TSV OUT_PREFIX [--only MESH SEED] [--no-stability] [--smoothing N]
+//
+// --smoothing N repairs with smoothing_iterations(N) instead of the default (to compare pipelines).
 //
 // Writes OUT_PREFIX.csv and OUT_PREFIX.md. Energies are the certificate's (`mean_energy_3d`, 4 for
 // an isometry; libigl's SLIM reports half of it).
@@ -48,6 +50,8 @@ static std::string fmt(double x)
   return os.str();
 }
 
+static int smoothing = -1; // --smoothing N
+
 static bool run_one(const std::string& data, Run& r, bool stability)
 {
   SM m;
@@ -61,7 +65,10 @@ static bool run_one(const std::string& data, Run& r, bool stability)
   CGAL::Real_timer t;
   t.start();
   PE::Progressive_embedding_statistics ps;
-  if(PE::progressive_embedding(m, uv, PE::parameters::statistics(&ps)) != PE::OK) return false;
+  const PE::Error_code rec = smoothing >= 0
+    ? PE::progressive_embedding(m, uv, PE::parameters::smoothing_iterations(smoothing, PE::parameters::statistics(&ps)))
+    : PE::progressive_embedding(m, uv, PE::parameters::statistics(&ps));
+  if(rec != PE::OK) return false;
   r.repair_seconds = t.time();
   r.repaired_mean = ps.report.mean_energy_3d;
   r.repaired_max = ps.report.max_energy_3d;
@@ -93,7 +100,7 @@ int main(int argc, char** argv)
 {
   if(argc < 4)
   {
-    std::cerr << "usage: quality_benchmark DATA_DIR CORPUS_TSV OUT_PREFIX [--only MESH SEED] [--no-stability]\n";
+    std::cerr << "usage: quality_benchmark DATA_DIR CORPUS_TSV OUT_PREFIX [--only MESH SEED] [--no-stability] [--smoothing N]\n";
     return 2;
   }
   const std::string data = argv[1], corpus = argv[2], out = argv[3];
@@ -103,6 +110,7 @@ int main(int argc, char** argv)
     const std::string a = argv[i];
     if(a == "--only" && i + 2 < argc) { only_mesh = argv[++i]; only_seed = std::atol(argv[++i]); }
     else if(a == "--no-stability") stability = false;
+    else if(a == "--smoothing" && i + 1 < argc) smoothing = std::max(0, std::atoi(argv[++i]));
     else { std::cerr << "quality_benchmark: unknown option " << a << "\n"; return 2; }
   }
   std::ifstream in(corpus);

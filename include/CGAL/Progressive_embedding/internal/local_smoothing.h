@@ -86,10 +86,8 @@ public:
     FT sum(0);
     for(const Corners& c : star)
     {
-      if(orient(x, *c.a, *c.b) != CGAL::LEFT_TURN) return std::numeric_limits<double>::infinity();
-      bool ok;
-      const FT e = symmetric_dirichlet(ref, x.x(), x.y(), c.a->x(), c.a->y(), c.b->x(), c.b->y(), ok);
-      if(!ok) return std::numeric_limits<double>::infinity();
+      FT e;
+      if(!positive_face_energy(ref, orient, x, *c.a, *c.b, e)) return std::numeric_limits<double>::infinity();
       sum += e;
     }
     const double d = CGAL::to_double(sum);

@@ -27,13 +27,17 @@ inline bool projected_newton_direction(const double g[2], const double H[3], dou
   if(!std::isfinite(g[0]) || !std::isfinite(g[1]) || !std::isfinite(H[0]) || !std::isfinite(H[1]) || !std::isfinite(H[2]))
     return false;
   const double tr2 = 0.5 * (H[0] + H[2]);
-  const double disc = std::hypot(0.5 * (H[0] - H[2]), H[1]);
+  // sqrt of the sum of squares is exact enough here; hypot (several times slower) only when the squares overflow
+  const double hd = 0.5 * (H[0] - H[2]);
+  double disc = std::sqrt(hd * hd + H[1] * H[1]);
+  if(!std::isfinite(disc)) disc = std::hypot(hd, H[1]);
   double l1 = tr2 + disc, l2 = tr2 - disc;
   double e1x, e1y; // eigenvector of l1
   if(H[1] != 0) { e1x = l1 - H[2]; e1y = H[1]; }
   else if(H[0] >= H[2]) { e1x = 1; e1y = 0; }
   else { e1x = 0; e1y = 1; }
-  const double nrm = std::hypot(e1x, e1y);
+  double nrm = std::sqrt(e1x * e1x + e1y * e1y);
+  if(!std::isfinite(nrm) || !(nrm > 0)) nrm = std::hypot(e1x, e1y);
   if(!(nrm > 0) || !std::isfinite(nrm)) return false;
   e1x /= nrm; e1y /= nrm;
   const double e2x = -e1y, e2y = e1x;

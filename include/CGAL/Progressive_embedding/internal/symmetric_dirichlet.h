@@ -13,7 +13,12 @@
 // reference edges leaving corner i (= 2 A_r cot(angle_i)), A_r the reference area,
 // A_t the signed uv area. The minimum, 4, is reached by isometries.
 
+#include <CGAL/enum.h>
+
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <type_traits>
 
 namespace CGAL {
 namespace Progressive_embedding {
@@ -97,6 +102,61 @@ FT symmetric_dirichlet(const Reference_triangle<FT>& r,
   return dirichlet_term(r, x0, y0, x1, y1, x2, y2) * (FT(1) + r.area2 / (a * a));
 }
 
+// For double coordinates: the sign of the determinant (a - x) x (b - x) when the static filter of
+// CGAL's Epick Orientation_2 decides it (`decided`), with the determinant itself. The callers
+// need the determinant for the energy anyway: the common case costs one determinant and no call.
+inline CGAL::Orientation filtered_double_orientation(double xx, double xy, double ax, double ay, double bx, double by,
+                                                     double& det, bool& decided)
+{
+  const double pqx = ax - xx, pqy = ay - xy, prx = bx - xx, pry = by - xy;
+  det = pqx * pry - pqy * prx;
+  double lo = (std::max)(std::abs(pqx), std::abs(prx)), hi = (std::max)(std::abs(pqy), std::abs(pry));
+  if(lo > hi) std::swap(lo, hi);
+  decided = false;
+  if(lo < 1e-146 || !(hi < 1e153)) return CGAL::COLLINEAR; // outside the filter's range
+  const double eps = 8.8872057372592798e-16 * lo * hi;
+  if(det > eps) { decided = true; return CGAL::LEFT_TURN; }
+  if(det < -eps) { decided = true; return CGAL::RIGHT_TURN; }
+  return CGAL::COLLINEAR;
+}
+
+// (x, a, b) is positively oriented under the exact predicate `orient` (filtered inline for double)
+template <class Point_2, class Orientation_2>
+bool positively_oriented(const Orientation_2& orient, const Point_2& x, const Point_2& a, const Point_2& b)
+{
+  if constexpr(std::is_same<typename std::decay<decltype(x.x())>::type, double>::value)
+  {
+    double det; bool decided;
+    const CGAL::Orientation o = filtered_double_orientation(x.x(), x.y(), a.x(), a.y(), b.x(), b.y(), det, decided);
+    if(decided) return o == CGAL::LEFT_TURN;
+  }
+  return orient(x, a, b) == CGAL::LEFT_TURN;
+}
+
+// The energy `e` of the face (x, a, b) if it is positively oriented under the exact predicate
+// `orient`; false otherwise. Same value as symmetric_dirichlet().
+template <class FT, class Point_2, class Orientation_2>
+bool positive_face_energy(const Reference_triangle<FT>& r, const Orientation_2& orient,
+                          const Point_2& x, const Point_2& a, const Point_2& b, FT& e)
+{
+  if constexpr(std::is_same<FT, double>::value)
+  {
+    double det; bool decided;
+    const CGAL::Orientation o = filtered_double_orientation(x.x(), x.y(), a.x(), a.y(), b.x(), b.y(), det, decided);
+    if(decided)
+    {
+      if(o != CGAL::LEFT_TURN) return false;
+      const double A = det / 2; // bit-identical to signed_area()
+      e = dirichlet_term(r, x.x(), x.y(), a.x(), a.y(), b.x(), b.y()) * (1 + r.area2 / (A * A));
+      return true;
+    }
+  }
+  if(orient(x, a, b) != CGAL::LEFT_TURN) return false;
+  bool ok;
+  e = symmetric_dirichlet(r, x.x(), x.y(), a.x(), a.y(), b.x(), b.y(), ok);
+  return ok;
+}
+
 // Energy of one face as a function of its corner 0 at (x,y), with its gradient
 // and Hessian in (x,y). Corners 1 and 2 are fixed. Returns false if the area is zero.
 template <class FT>
@@ -108,7 +168,11 @@ bool symmetric_dirichlet_local(const Reference_triangle<FT>& r,
   const FT A = signed_area(x, y, x1, y1, x2, y2);
   if(A == FT(0)) return false;
   const FT s = FT(1) / (FT(4) * r.area2);
-  const FT a = dirichlet_term(r, x, y, x1, y1, x2, y2);
+  // |J|^2 = s * sum_i d_i |e_i|^2, with s computed once (divisions dominate this function)
+  const FT l0 = (x2 - x1) * (x2 - x1) + (y2 - y1) * (y2 - y1);
+  const FT l1 = (x - x2) * (x - x2) + (y - y2) * (y - y2);
+  const FT l2 = (x1 - x) * (x1 - x) + (y1 - y) * (y1 - y);
+  const FT a = s * (r.dot[0] * l0 + r.dot[1] * l1 + r.dot[2] * l2);
   // grad |J|^2 = s * (2 d1 (p - p2) + 2 d2 (p - p1)); its Hessian is 2 s (d1 + d2) I
   const FT ga_x = s * (FT(2) * r.dot[1] * (x - x2) + FT(2) * r.dot[2] * (x - x1));
   const FT ga_y = s * (FT(2) * r.dot[1] * (y - y2) + FT(2) * r.dot[2] * (y - y1));

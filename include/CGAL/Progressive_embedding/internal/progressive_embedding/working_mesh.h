@@ -166,11 +166,9 @@ struct Validity_criteria
 
   bool face_invalid(const Point_2& a, const Point_2& b, const Point_2& c) const
   {
-    if(orient(a, b, c) != CGAL::LEFT_TURN) return true;
+    FT e;
+    if(!positive_face_energy(ref, orient, a, b, c, e)) return true;
     if(use_min_area && signed_area(a.x(), a.y(), b.x(), b.y(), c.x(), c.y()) < min_face_area) return true;
-    bool ok;
-    const FT e = symmetric_dirichlet(ref, a.x(), a.y(), b.x(), b.y(), c.x(), c.y(), ok);
-    if(!ok) return true;
     return !(CGAL::to_double(e) <= energy_threshold);
   }
 
@@ -183,16 +181,15 @@ struct Validity_criteria
     const Point_2& x = m.point(v);
     // orientations first: most rejected candidates fail there, and energies cost more
     for(typename Mesh::Halfedge_index h : halfedges_around_target(v, m))
-      if(!m.is_border(h) && orient(x, m.point(m.target(m.next(h))), m.point(m.source(h))) != CGAL::LEFT_TURN)
+      if(!m.is_border(h) && !positively_oriented(orient, x, m.point(m.target(m.next(h))), m.point(m.source(h))))
         return false;
     for(typename Mesh::Halfedge_index h : halfedges_around_target(v, m))
     {
       if(m.is_border(h)) continue;
       const Point_2& a = m.point(m.target(m.next(h)));
       const Point_2& b = m.point(m.source(h));
-      bool ok;
-      const FT e = symmetric_dirichlet(ref, x.x(), x.y(), a.x(), a.y(), b.x(), b.y(), ok);
-      if(!ok) return false;
+      FT e;
+      if(!positive_face_energy(ref, orient, x, a, b, e)) return false;
       const double ed = CGAL::to_double(e);
       if(!Traits::has_exact_constructions && !(ed <= energy_threshold)) return false;
       max_energy = (std::max)(max_energy, std::isfinite(ed) ? ed : std::numeric_limits<double>::max());

@@ -45,6 +45,9 @@ int exit_status(PE::Error_code ec)
     case PE::ERROR_CONSTRAINT_OUTSIDE_DOMAIN:
     case PE::ERROR_NO_FREE_VERTEX:
     case PE::ERROR_DEGENERATE_3D_FACE:
+    case PE::ERROR_DUPLICATE_CONSTRAINT:
+    case PE::ERROR_CONSTRAINT_ON_BORDER:
+    case PE::ERROR_NOT_GENUS_ZERO:
       return EXIT_INPUT;
     case PE::ERROR_CANNOT_WRITE_FILE:
       return EXIT_OUTPUT;
@@ -55,6 +58,8 @@ int exit_status(PE::Error_code ec)
     case PE::ERROR_INSERTION_FAILED:
     case PE::ERROR_BUDGET_EXHAUSTED:
     case PE::ERROR_WRONG_PARAMETER:
+    case PE::ERROR_DEGENERATE_CHORD:
+    case PE::ERROR_PATH_TRACING_FAILED:
       return EXIT_INVALID;
   }
   return EXIT_INVALID;

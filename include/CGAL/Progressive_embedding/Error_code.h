@@ -39,7 +39,12 @@ enum Error_code
   ERROR_CANNOT_WRITE_FILE,         ///< A file could not be written
   ERROR_CONSTRAINT_OUTSIDE_DOMAIN, ///< A positional constraint lies outside the target domain
   ERROR_NO_FREE_VERTEX,            ///< Every vertex is fixed (border or constraint): there is nothing to optimize
-  ERROR_DEGENERATE_3D_FACE         ///< A 3D face has zero area (or non-finite points): its distortion is undefined
+  ERROR_DEGENERATE_3D_FACE,        ///< A 3D face has zero area (or non-finite points): its distortion is undefined
+  ERROR_DUPLICATE_CONSTRAINT,      ///< Two positional constraints name the same vertex, or two vertices the same target
+  ERROR_CONSTRAINT_ON_BORDER,      ///< A positional constraint names a border vertex (the border is given separately)
+  ERROR_NOT_GENUS_ZERO,            ///< The input mesh is not a connected genus-0 surface with at least one border cycle
+  ERROR_DEGENERATE_CHORD,          ///< An interior edge joins two border vertices on one straight side of a patch: no valid map keeps it
+  ERROR_PATH_TRACING_FAILED        ///< The patch borders could not be traced on the mesh within the refinement budget
 };
 
 /// \ingroup PkgProgressiveEmbeddingEnums
@@ -70,6 +75,11 @@ inline const char* get_error_message(Error_code code)
     case ERROR_CONSTRAINT_OUTSIDE_DOMAIN: return "A positional constraint lies outside the target domain";
     case ERROR_NO_FREE_VERTEX: return "Every vertex is fixed: there is no free vertex to optimize";
     case ERROR_DEGENERATE_3D_FACE: return "A 3D face has zero area or a non-finite point: its distortion is undefined";
+    case ERROR_DUPLICATE_CONSTRAINT: return "Two constraints name the same vertex, or two vertices the same target";
+    case ERROR_CONSTRAINT_ON_BORDER: return "A positional constraint names a border vertex";
+    case ERROR_NOT_GENUS_ZERO: return "Input mesh is not a connected genus-0 surface with a border";
+    case ERROR_DEGENERATE_CHORD: return "An interior edge joins two border vertices on one straight side of a patch";
+    case ERROR_PATH_TRACING_FAILED: return "The patch borders could not be traced on the mesh within the refinement budget";
   }
   return "Unknown error";
 }
@@ -101,6 +111,11 @@ inline const char* get_error_name(Error_code code)
     case ERROR_CONSTRAINT_OUTSIDE_DOMAIN: return "ERROR_CONSTRAINT_OUTSIDE_DOMAIN";
     case ERROR_NO_FREE_VERTEX: return "ERROR_NO_FREE_VERTEX";
     case ERROR_DEGENERATE_3D_FACE: return "ERROR_DEGENERATE_3D_FACE";
+    case ERROR_DUPLICATE_CONSTRAINT: return "ERROR_DUPLICATE_CONSTRAINT";
+    case ERROR_CONSTRAINT_ON_BORDER: return "ERROR_CONSTRAINT_ON_BORDER";
+    case ERROR_NOT_GENUS_ZERO: return "ERROR_NOT_GENUS_ZERO";
+    case ERROR_DEGENERATE_CHORD: return "ERROR_DEGENERATE_CHORD";
+    case ERROR_PATH_TRACING_FAILED: return "ERROR_PATH_TRACING_FAILED";
   }
   return "UNKNOWN";
 }

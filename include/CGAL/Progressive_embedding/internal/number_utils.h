@@ -96,17 +96,19 @@ inline CGAL::Gmpq to_rational(const FT&)
   return CGAL::Gmpq();
 }
 
-template <class ET>
-inline CGAL::Gmpq to_rational(const CGAL::Lazy_exact_nt<ET>& x)
-{
-  return to_rational(x.exact());
-}
-
 template <class Backend, boost::multiprecision::expression_template_option Et>
 inline CGAL::Gmpq to_rational(const boost::multiprecision::number<Backend, Et>& x)
 {
   // mpq_rational and cpp_rational: numerator and denominator through strings (exact).
   return CGAL::Gmpq(x.str()); // "n/d" or "n": exact
+}
+
+// after the overloads of the exact types it forwards to (two-phase lookup sees only those declared
+// before; Epeck's exact type is a boost::multiprecision rational)
+template <class ET>
+inline CGAL::Gmpq to_rational(const CGAL::Lazy_exact_nt<ET>& x)
+{
+  return to_rational(x.exact());
 }
 
 } // namespace internal

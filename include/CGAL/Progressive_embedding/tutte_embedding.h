@@ -18,6 +18,7 @@
 #include <CGAL/Progressive_embedding/internal/tutte_system.h>
 #include <CGAL/Progressive_embedding/internal/tutte_solve.h>
 #include <CGAL/Progressive_embedding/internal/tutte_p_adic.h>
+#include <CGAL/Progressive_embedding/internal/constrained/patch_chords.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
@@ -89,14 +90,48 @@ Error_code solve_tutte_system(const Tutte_system<FT>& S, bool symmetric, const N
     return solve_by_elimination(S, budget, xu, xv);
 }
 
+// The interior positions of the Tutte map of `disk` (weights, solver, callback and time as the
+// named parameters of tutte_embedding() say), given the border positions in `pos` (by vertex
+// index); `pos` is written on the interior vertices only, and only on success.
+template <class TriangleMesh, class VPM, class Point_2, class NamedParameters>
+Error_code tutte_interior(const Indexed_disk<TriangleMesh>& disk, VPM vpm, const NamedParameters& np,
+                          Progress_budget& budget, std::vector<Point_2>& pos)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename CGAL::Kernel_traits<Point_2>::Kernel::FT FT;
+  if(disk.number_of_interior_vertices() == 0) return OK;
+  const Weights wts = choose_parameter(get_parameter(np, internal_np::weights), Weights::UNIFORM);
+  std::vector<std::vector<std::pair<std::size_t, double> > > adj;
+  Error_code status = tutte_weights(disk, vpm, wts, adj);
+  if(status != OK) return status;
+  Tutte_system<FT> S;
+  assemble_tutte_system(disk, adj, pos, S);
+  std::vector<FT> xu, xv;
+  status = solve_tutte_system(S, wts == Weights::UNIFORM, np, budget, xu, xv);
+  if(status != OK) return status;
+  const std::size_t nv = disk.number_of_vertices();
+  std::vector<Point_2> sol(nv);
+  for(std::size_t i = 0; i < nv; ++i)
+  {
+    if(S.row[i] < 0) continue;
+    sol[i] = Point_2(xu[S.row[i]], xv[S.row[i]]);
+    if(!is_finite_ft(sol[i].x()) || !is_finite_ft(sol[i].y()))
+      return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  }
+  for(std::size_t i = 0; i < nv; ++i)
+    if(S.row[i] >= 0) pos[i] = sol[i];
+  return OK;
+}
+
 } // namespace internal
 
 /// \ingroup PkgProgressiveEmbeddingMainFunctions
 ///
 /// computes Tutte's barycentric embedding (or Floater's mean value embedding) of a triangulated
 /// topological disk into the plane, in the number type of the uv map. The border is taken from
-/// the uv map as given (it must be convex, which is checked exactly) or placed on a circle, a square
-/// or a triangle by 3D arc length (runs of zero-length border edges share the length of the next
+/// the uv map as given (it must be convex, which is checked exactly, see below) or placed on a
+/// circle, a square or a triangle by 3D arc length (runs of zero-length border edges share the length of the next
 /// edge evenly, and a border of zero total length is spaced evenly, so that distinct border vertices
 /// never get the same position). The same code runs with `double`, exact rationals and MPFR.
 ///
@@ -118,8 +153,19 @@ Error_code solve_tutte_system(const Tutte_system<FT>& S, bool symmetric, const N
 /// 0.14 s and 1.2 s for 2304 unknowns (about n^2.5). Use `callback` to show progress and
 /// `maximum_running_time` to bound the time.
 ///
+/// A fixed border may be weakly convex: strictly convex corners with any number of border vertices
+/// on the straight sides between them (a polygon traversed once, counterclockwise or clockwise, no
+/// spike, no repeated point; decided exactly). Then an interior edge joining two border vertices
+/// of one side (a "flat chord"; a face with its three vertices on one side has one) would
+/// be flattened onto that side in every map: the function refuses it with `ERROR_DEGENERATE_CHORD`
+/// (splitting such an edge at an interior point removes it). On a strictly convex border there is
+/// never a flat chord. The borders placed by
+/// `Border_shape::SQUARE` and `Border_shape::TRIANGLE` are not checked for flat chords: a border
+/// vertex of degree 2 off a corner (an ear) gets a degenerate face there.
+///
 /// In exact arithmetic the result is a valid embedding when the border is strictly convex
-/// (Tutte's theorem); in floating point it may be invalid: certify it with `check_embedding()`.
+/// (Tutte's theorem), or weakly convex without flat chord (Floater, 2003: no dividing edge);
+/// in floating point it may be invalid: certify it with `check_embedding()`.
 /// The function does not certify its output; `progressive_embedding()` repairs it.
 /// On every error, the uv map is left unchanged.
 ///
@@ -190,8 +236,8 @@ Error_code solve_tutte_system(const Tutte_system<FT>& S, bool symmetric, const N
 ///
 /// \return `OK`, `ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH`, `ERROR_NON_MANIFOLD`, `ERROR_NOT_A_DISK`,
 ///         `ERROR_BORDER_TOO_SHORT`, `ERROR_NON_FINITE_COORDINATES`, `ERROR_NON_CONVEX_BORDER`,
-///         `ERROR_DEGENERATE_BORDER`, `ERROR_WRONG_PARAMETER`, `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM` or
-///         `ERROR_BUDGET_EXHAUSTED` (the uv map is then unchanged)
+///         `ERROR_DEGENERATE_BORDER`, `ERROR_DEGENERATE_CHORD` (fixed border only), `ERROR_WRONG_PARAMETER`,
+///         `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM` or `ERROR_BUDGET_EXHAUSTED` (the uv map is then unchanged)
 template <typename TriangleMesh, typename VertexUVMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Error_code tutte_embedding(const TriangleMesh& tm,
                            typename boost::graph_traits<TriangleMesh>::halfedge_descriptor bhd,
@@ -204,13 +250,11 @@ Error_code tutte_embedding(const TriangleMesh& tm,
   typedef typename CGAL::internal_np::Lookup_named_param_def<
             CGAL::internal_np::geom_traits_t, CGAL_NP_CLASS, Default_traits>::type  Traits;
   typedef typename Traits::Point_2                                                Point_2;
-  typedef typename Traits::FT                                                     FT;
   static_assert(std::is_same<Point_2, typename internal::Uv_map_types<VertexUVMap>::Point_2>::value,
                 "the geom_traits' Point_2 must be the value type of the uv map");
 
   const Traits traits = choose_parameter<Traits>(get_parameter(np, CGAL::internal_np::geom_traits));
   const Border_shape shape = choose_parameter(get_parameter(np, internal_np::border_shape), Border_shape::FIXED);
-  const Weights wts = choose_parameter(get_parameter(np, internal_np::weights), Weights::UNIFORM);
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
   const std::function<bool(double)> callback =
     choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
@@ -230,25 +274,17 @@ Error_code tutte_embedding(const TriangleMesh& tm,
   std::vector<Point_2> pos(nv);
   for(std::size_t k = 0; k < nb; ++k) pos[disk.border[k]] = bpos[k];
 
-  if(disk.number_of_interior_vertices() > 0)
+  if(shape == Border_shape::FIXED)
   {
-    std::vector<std::vector<std::pair<std::size_t, double> > > adj;
-    status = internal::tutte_weights(disk, vpm, wts, adj);
-    if(status != OK) return status;
-    internal::Tutte_system<FT> S;
-    internal::assemble_tutte_system(disk, adj, pos, S);
-    internal::Progress_budget budget(callback, max_seconds);
-    std::vector<FT> xu, xv;
-    status = internal::solve_tutte_system(S, wts == Weights::UNIFORM, np, budget, xu, xv);
-    if(status != OK) return status;
-    for(std::size_t i = 0; i < nv; ++i)
-    {
-      if(S.row[i] < 0) continue;
-      pos[i] = Point_2(xu[S.row[i]], xv[S.row[i]]);
-      if(!internal::is_finite_ft(pos[i].x()) || !internal::is_finite_ft(pos[i].y()))
-        return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-    }
+    // a weakly convex border: an interior edge along one of its sides would be flattened
+    std::vector<std::pair<std::size_t, std::size_t> > chords;
+    internal::flat_chords(disk, bpos, traits.exact_orientation_2_object(), chords);
+    if(!chords.empty()) return ERROR_DEGENERATE_CHORD;
   }
+
+  internal::Progress_budget budget(callback, max_seconds);
+  status = internal::tutte_interior(disk, vpm, np, budget, pos);
+  if(status != OK) return status;
 
   // written only now: on every error the uv map is left as it was
   for(std::size_t i = 0; i < nv; ++i)

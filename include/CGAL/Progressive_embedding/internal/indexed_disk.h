@@ -8,7 +8,8 @@
 // The compact structure every algorithm starts from: vertices numbered 0..n-1,
 // faces as index triples, and the border cycle with the interior on its left.
 // Building it also validates the input: empty, not triangulated, not manifold,
-// not a disk -> specific Error_code.
+// not a disk -> specific Error_code. It is built from a whole mesh (make_indexed_disk) or from a
+// range of faces of a mesh forming a disk, a patch (make_indexed_patch).
 
 #include <CGAL/Progressive_embedding/Error_code.h>
 
@@ -18,8 +19,9 @@
 #include <CGAL/Dynamic_property_map.h>
 
 #include <array>
-#include <vector>
 #include <cstddef>
+#include <unordered_map>
+#include <vector>
 
 namespace CGAL {
 namespace Progressive_embedding {
@@ -154,6 +156,119 @@ Error_code make_indexed_disk(const TriangleMesh& tm,
   disk.border.assign(cyc.rbegin(), cyc.rend());
   for(std::size_t b : disk.border) disk.on_border[b] = 1;
   (void)none;
+  return OK;
+}
+
+// Fills `disk` from the faces `patch_faces` of `tm` (a face range; `tm` itself may be any
+// valid FaceGraph: only the patch and the halfedges around its vertices are visited, so the
+// cost is proportional to the patch, not to `tm`). The vertices are those of the patch faces,
+// numbered in the order they are met; the border is the patch's border cycle with the patch
+// on its left, which may run along border edges of `tm` as well as along its interior edges.
+// ERROR_EMPTY_MESH (no face), ERROR_WRONG_PARAMETER (a null face, or a face given twice),
+// ERROR_NON_TRIANGULAR_MESH, or ERROR_NOT_A_DISK when the patch is not a topological disk:
+// not connected (through its interior edges), a vertex where the patch is pinched (met twice by
+// the border), no border or several border cycles, or Euler characteristic not 1.
+template <class TriangleMesh, class FaceRange>
+Error_code make_indexed_patch(const TriangleMesh& tm, const FaceRange& patch_faces, Indexed_disk<TriangleMesh>& disk)
+{
+  typedef boost::graph_traits<TriangleMesh>                  GT;
+  typedef typename GT::vertex_descriptor                     vertex_descriptor;
+  typedef typename GT::halfedge_descriptor                   halfedge_descriptor;
+  typedef typename GT::face_descriptor                       face_descriptor;
+
+  disk = Indexed_disk<TriangleMesh>();
+  // patch membership and vertex indices in hash maps: proportional to the patch
+  std::unordered_map<face_descriptor, std::size_t> fid;
+  std::unordered_map<vertex_descriptor, std::size_t> vid;
+  std::vector<face_descriptor> F;
+  for(face_descriptor f : patch_faces)
+  {
+    if(f == GT::null_face()) return ERROR_WRONG_PARAMETER;
+    if(!fid.emplace(f, F.size()).second) return ERROR_WRONG_PARAMETER;
+    F.push_back(f);
+  }
+  if(F.empty()) return ERROR_EMPTY_MESH;
+  auto in_patch = [&](halfedge_descriptor h) { return !is_border(h, tm) && fid.count(face(h, tm)) != 0; };
+  // a halfedge of a patch face is on the patch border when the face across is not in the patch
+  auto on_patch_border = [&](halfedge_descriptor h) { return !in_patch(opposite(h, tm)); };
+
+  std::size_t n_border_halfedges = 0;
+  halfedge_descriptor first_border = GT::null_halfedge();
+  for(face_descriptor f : F)
+  {
+    const halfedge_descriptor h0 = halfedge(f, tm);
+    if(next(next(next(h0, tm), tm), tm) != h0) return ERROR_NON_TRIANGULAR_MESH;
+    std::array<std::size_t, 3> t;
+    halfedge_descriptor h = h0;
+    for(int c = 0; c < 3; ++c, h = next(h, tm))
+    {
+      const vertex_descriptor v = source(h, tm);
+      const auto ins = vid.emplace(v, disk.vertices.size());
+      if(ins.second) disk.vertices.push_back(v);
+      t[c] = ins.first->second;
+      if(on_patch_border(h))
+      {
+        ++n_border_halfedges;
+        if(first_border == GT::null_halfedge()) first_border = h;
+      }
+    }
+    disk.faces.push_back(t);
+  }
+  const std::size_t nv = disk.vertices.size(), nf = F.size();
+  disk.on_border.assign(nv, 0);
+  if(n_border_halfedges == 0) return ERROR_NOT_A_DISK; // closed
+
+  // connectivity: depth-first search over the patch faces through the patch's interior edges
+  {
+    std::vector<char> seen(nf, 0);
+    std::vector<std::size_t> stack(1, 0);
+    seen[0] = 1;
+    std::size_t reached = 1;
+    while(!stack.empty())
+    {
+      const face_descriptor f = F[stack.back()];
+      stack.pop_back();
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
+      {
+        const halfedge_descriptor o = opposite(h, tm);
+        if(!in_patch(o)) continue;
+        const std::size_t g = fid.find(face(o, tm))->second;
+        if(!seen[g]) { seen[g] = 1; ++reached; stack.push_back(g); }
+      }
+    }
+    if(reached != nf) return ERROR_NOT_A_DISK;
+  }
+
+  // The border cycle through the first border halfedge: the next border halfedge leaves the
+  // target, found by turning around it through patch faces (at most one step per patch face).
+  // Each vertex may be met once: a second visit is a pinched vertex.
+  std::vector<char> met(nv, 0);
+  halfedge_descriptor h = first_border;
+  for(std::size_t k = 0; ; ++k)
+  {
+    if(k >= n_border_halfedges) return ERROR_NOT_A_DISK; // bounded: more steps than border halfedges
+    const std::size_t s = vid.find(source(h, tm))->second;
+    if(met[s]) return ERROR_NOT_A_DISK;
+    met[s] = 1;
+    disk.border.push_back(s);
+    halfedge_descriptor g = next(h, tm);
+    std::size_t turns = 0;
+    while(!on_patch_border(g))
+    {
+      g = next(opposite(g, tm), tm);
+      if(++turns > nf) return ERROR_NOT_A_DISK;
+    }
+    h = g;
+    if(h == first_border) break;
+  }
+  // a second border cycle (or a pinch the walk did not meet) leaves border halfedges unvisited
+  if(disk.border.size() != n_border_halfedges) return ERROR_NOT_A_DISK;
+  for(std::size_t b : disk.border) disk.on_border[b] = 1;
+  // Euler characteristic of a disk is 1; each interior edge has two patch halfedges
+  const std::size_t twice_edges = 3 * nf + n_border_halfedges;
+  if(twice_edges % 2 != 0) return ERROR_NOT_A_DISK;
+  if(static_cast<long>(nv) - static_cast<long>(twice_edges / 2) + static_cast<long>(nf) != 1)
+    return ERROR_NOT_A_DISK;
   return OK;
 }
 

@@ -1,0 +1,326 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+#ifndef CGAL_PROGRESSIVE_EMBEDDING_EMBED_PATCH_H
+#define CGAL_PROGRESSIVE_EMBEDDING_EMBED_PATCH_H
+
+/// \file embed_patch.h
+///
+/// `embed_patch()`: a certified map of one patch of a mesh -- a range of its faces forming a
+/// topological disk -- into the convex polygon that the patch's border vertices already have in
+/// the uv map. This is the building block of constrained maps: the mesh is cut into patches by
+/// traced paths, the path vertices are placed along the sides of convex polygons (so several
+/// border vertices of a patch are collinear), and every patch is embedded in its polygon.
+///
+/// What the caller gives and gets:
+///  - the patch: faces of `tm` (a disk: connected through its interior edges, not pinched at a
+///    vertex, one border cycle, Euler characteristic 1). Its border may run along border edges
+///    of `tm` and along interior edges of `tm` alike;
+///  - the uv of the patch border vertices, read (never written) from the uv map: a convex
+///    polygon traversed once, counterclockwise or clockwise, with strictly convex corners and any
+///    number of vertices on the straight sides between them (no spike, no repeated point).
+///    Everything is decided with the exact orientation predicate;
+///  - the uv of the patch's interior vertices, written (and nothing else) on success: a map in
+///    which every patch face is strictly positively oriented relative to the border, certified
+///    exactly. On any error the uv map is left exactly as it was. Vertices that are not on the
+///    patch are neither read nor written.
+///  - a patch with a "flat chord" -- an interior edge joining two border vertices of one side,
+///    which every map would flatten onto that side -- is refused with `ERROR_DEGENERATE_CHORD`;
+///    `internal::find_flat_chords()` (internal/constrained/patch_chords.h) lists those edges so
+///    that the caller can split them first. Without flat chord a valid map always exists.
+///
+/// How: the Tutte map (uniform weights, or the `weights` named parameter) with the border fixed,
+/// solved in the uv number type; when it is not valid (floating point), the progressive embedding
+/// of `progressive_embedding()` repairs it; the result is certified on the patch.
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Progressive_embedding/Error_code.h>
+#include <CGAL/Progressive_embedding/parameters.h>
+#include <CGAL/Progressive_embedding/Progressive_embedding_traits_2.h>
+#include <CGAL/Progressive_embedding/Progressive_embedding_statistics.h>
+#include <CGAL/Progressive_embedding/check_embedding.h>
+#include <CGAL/Progressive_embedding/tutte_embedding.h>
+#include <CGAL/Progressive_embedding/progressive_embedding.h>
+#include <CGAL/Progressive_embedding/internal/indexed_disk.h>
+#include <CGAL/Progressive_embedding/internal/check_passes.h>
+#include <CGAL/Progressive_embedding/internal/constrained/patch_chords.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Real_timer.h>
+
+#include <functional>
+#include <iostream>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Progressive_embedding {
+
+namespace internal {
+
+// Exact certificate of the positions `pos` of a patch (by vertex index of `disk`) whose border
+// polygon is convex and oriented as `orientation` says: every face strictly of that orientation.
+// Why this suffices: the border is a simple closed polygon (convex, traversed once) and fixed, and
+// a piecewise linear map of a disk whose triangles are all positively oriented is a local
+// homeomorphism inside; by the degree argument every point inside the polygon is then covered
+// exactly once and no point outside is covered, so the map is one-to-one (no overlap).
+template <class TriangleMesh, class Point_2, class ExactOrientation>
+std::size_t count_wrong_faces(const Indexed_disk<TriangleMesh>& disk, const std::vector<Point_2>& pos,
+                              int orientation, ExactOrientation orient)
+{
+  const CGAL::Orientation expected = orientation > 0 ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN;
+  std::size_t wrong = 0;
+  for(const auto& t : disk.faces)
+    if(orient(pos[t[0]], pos[t[1]], pos[t[2]]) != expected) ++wrong;
+  return wrong;
+}
+
+} // namespace internal
+
+/// \ingroup PkgProgressiveEmbeddingMainFunctions
+///
+/// computes a certified planar map of a patch of a triangle mesh -- a range of its faces forming a
+/// topological disk -- into the convex polygon given by the uv coordinates of the patch's border
+/// vertices, writing the uv coordinates of the patch's interior vertices only.
+///
+/// The patch border may contain border edges of `tm` as well as interior edges of `tm`; its
+/// vertices keep their uv bit-exactly. Their polygon must be convex and traversed once,
+/// counterclockwise or clockwise (a clockwise polygon gives a clockwise map, the mirror image of a
+/// valid one), with strictly convex corners and any number of collinear vertices along the sides,
+/// no spike and no repeated point; all of it is decided with the exact orientation predicate. A
+/// valid map with this border exists if and only if no interior edge of the patch joins two border
+/// vertices on one straight side (a "flat chord": the part of the patch it cuts off would have
+/// zero area; a face whose three vertices are on one side has such an edge). Such a patch is
+/// refused with `ERROR_DEGENERATE_CHORD`; `internal::find_flat_chords()` lists the edges, which the
+/// caller splits beforehand.
+///
+/// The interior vertices get the Tutte map of the patch with the border fixed (uniform weights,
+/// or Floater's mean value weights, solved in the uv number type as by `tutte_embedding()`); when it
+/// is not valid (in floating point), the progressive embedding of `progressive_embedding()` repairs
+/// it (if the floating-point solve fails, the repair starts from every interior vertex at the
+/// border's centroid). The result is certified on the patch, exactly: every patch face is strictly
+/// oriented like the border polygon and the border is unchanged; with a simple, fixed border,
+/// positive faces imply that the map is one-to-one (each point of the polygon is covered once).
+///
+/// Vertices of `tm` that are not on the patch are neither read nor written; border vertices of the
+/// patch are only read. On any error the uv map is left exactly as it was.
+///
+/// \tparam TriangleMesh a model of `FaceGraph` (the patch faces must be triangles)
+/// \tparam FaceRange a range of `boost::graph_traits<TriangleMesh>::%face_descriptor`
+/// \tparam VertexUVMap a model of `ReadWritePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///         as key type and a CGAL `Point_2` as value type; its kernel's `FT` is the number type of the computation
+/// \tparam NamedParameters a sequence of named parameters
+///
+/// \param tm the mesh, not modified
+/// \param patch_faces the faces of the patch, each once
+/// \param uvm the uv map: read on the patch border vertices, written on the patch interior vertices
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{weights}
+///     \cgalParamDescription{the weights of the Tutte map}
+///     \cgalParamType{`Weights`}
+///     \cgalParamDefault{`Weights::UNIFORM`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the 3D points (mean value weights, distortion in the statistics), read on the patch only}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `Point_3` values}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{sparse_linear_solver}
+///     \cgalParamDescription{the solver of the Tutte system, as in `tutte_embedding()`}
+///     \cgalParamType{a class model of `SparseLinearAlgebraWithFactorTraits_d`}
+///     \cgalParamDefault{as in `tutte_embedding()`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{the traits class whose exact orientation predicate decides every sign}
+///     \cgalParamType{a model of `ProgressiveEmbeddingTraits_2` whose `Point_2` is the uv map's value type}
+///     \cgalParamDefault{`Progressive_embedding_traits_2<K>`, `K` the kernel of the uv map's point type}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_running_time}
+///     \cgalParamDescription{seconds (wall clock, from the call) for the whole computation: the Tutte solve
+///                           gets all of it, the repair what is left; `ERROR_BUDGET_EXHAUSTED` when exceeded}
+///     \cgalParamType{`double` (a negative value or NaN gives `ERROR_WRONG_PARAMETER`)}
+///     \cgalParamDefault{no limit}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{invalid_energy_threshold, smoothing_iterations, retry_smoothing_iterations, insertion_retries,
+///                    line_search_factor, line_search_steps, minimum_area_ratio, collapse_budget}
+///     \cgalParamDescription{the settings of the repair, as in `progressive_embedding()`}
+///     \cgalParamType{as in `progressive_embedding()`}
+///     \cgalParamDefault{as in `progressive_embedding()`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{verbose}
+///     \cgalParamDescription{progress messages on `std::cerr`}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{statistics}
+///     \cgalParamDescription{receives what the repair did (all counts zero when the Tutte map was valid), the
+///                           times, and in `report` the certificate of the patch's map (counts of the patch's faces
+///                           and vertices; the overlap is decided by the degree argument)}
+///     \cgalParamType{`Progressive_embedding_statistics*`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \return `OK` only if the patch's map is certified; otherwise, with the uv map unchanged:
+///         `ERROR_EMPTY_MESH` (no face), `ERROR_WRONG_PARAMETER` (a null or repeated face, or a named parameter
+///         out of range), `ERROR_NON_TRIANGULAR_MESH`, `ERROR_NOT_A_DISK`, `ERROR_BORDER_TOO_SHORT`,
+///         `ERROR_NON_FINITE_COORDINATES` (on the border), `ERROR_NON_CONVEX_BORDER` (including a spike or a
+///         polygon winding more than once), `ERROR_DEGENERATE_BORDER` (repeated consecutive points, zero area),
+///         `ERROR_DEGENERATE_CHORD`, `ERROR_BUDGET_EXHAUSTED`, `ERROR_COLLAPSE_FAILED`, `ERROR_INSERTION_FAILED`
+///         or `ERROR_INVALID_EMBEDDING` (the repaired map failed the certificate)
+template <typename TriangleMesh, typename FaceRange, typename VertexUVMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Error_code embed_patch(const TriangleMesh& tm, const FaceRange& patch_faces, VertexUVMap uvm,
+                       const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename internal::Uv_map_types<VertexUVMap>::Traits                    Default_traits;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<
+            CGAL::internal_np::geom_traits_t, CGAL_NP_CLASS, Default_traits>::type  Traits;
+  typedef typename Traits::Point_2                                                Point_2;
+  typedef typename Traits::FT                                                     FT;
+  static_assert(std::is_same<Point_2, typename internal::Uv_map_types<VertexUVMap>::Point_2>::value,
+                "the geom_traits' Point_2 must be the value type of the uv map");
+
+  CGAL::Real_timer timer;
+  timer.start();
+  Progressive_embedding_statistics local_stats;
+  Progressive_embedding_statistics* stats_out =
+    choose_parameter(get_parameter(np, internal_np::statistics), static_cast<Progressive_embedding_statistics*>(nullptr));
+  Progressive_embedding_statistics& stats = stats_out ? *stats_out : local_stats;
+  stats = Progressive_embedding_statistics();
+
+  const Traits traits = choose_parameter<Traits>(get_parameter(np, CGAL::internal_np::geom_traits));
+  const typename Traits::Exact_orientation_2 orient = traits.exact_orientation_2_object();
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+  const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  const double max_seconds = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
+                                              std::numeric_limits<double>::infinity());
+  if(!(max_seconds >= 0)) return ERROR_WRONG_PARAMETER;
+  typename internal::Progressive_embedder<Traits>::Options opt;
+  Error_code ec = internal::progressive_embedder_options<Traits>(np, opt);
+  if(ec != OK) return ec;
+  opt.callback = std::function<bool(double)>(); // one callback could not report two phases monotonically
+
+  // the patch, its border polygon (exact classification) and its flat chords
+  internal::Indexed_disk<TriangleMesh> disk;
+  ec = internal::make_indexed_patch(tm, patch_faces, disk);
+  if(ec != OK) return ec;
+  const std::size_t nv = disk.number_of_vertices(), nb = disk.border.size();
+  if(nb < 3) return ERROR_BORDER_TOO_SHORT;
+  std::vector<Point_2> bpos;
+  int orientation = 0;
+  ec = internal::read_convex_border(disk, uvm, traits, bpos, orientation);
+  if(ec != OK) return ec;
+  {
+    std::vector<std::pair<std::size_t, std::size_t> > chords;
+    internal::flat_chords(disk, bpos, orient, chords);
+    if(!chords.empty())
+    {
+      if(verbose) std::cerr << "[embed_patch] " << chords.size() << " flat chord(s): no valid map" << std::endl;
+      return ERROR_DEGENERATE_CHORD;
+    }
+  }
+  std::vector<Point_2> pos(nv);
+  for(std::size_t k = 0; k < nb; ++k) pos[disk.border[k]] = bpos[k];
+  if(verbose)
+    std::cerr << "[embed_patch] patch: " << disk.number_of_faces() << " faces, " << nv << " vertices, "
+              << nb << " on its border (" << (orientation > 0 ? "counterclockwise" : "clockwise") << ")" << std::endl;
+
+  // Tutte's map with the border fixed: exact solves are valid (Tutte, Floater), floating-point
+  // ones may not be
+  if(disk.number_of_interior_vertices() > 0)
+  {
+    internal::Progress_budget budget(std::function<bool(double)>(), max_seconds);
+    ec = internal::tutte_interior(disk, vpm, np, budget, pos);
+    if(ec == ERROR_CANNOT_SOLVE_LINEAR_SYSTEM)
+    {
+      // the repair accepts any finite start: every interior vertex at the border's centroid
+      FT sx(0), sy(0);
+      for(const Point_2& p : bpos) { sx += p.x(); sy += p.y(); }
+      const Point_2 c(sx / FT(double(nb)), sy / FT(double(nb)));
+      for(std::size_t i = 0; i < nv; ++i) if(!disk.on_border[i]) pos[i] = c;
+      if(!internal::is_finite_ft(c.x()) || !internal::is_finite_ft(c.y())) return ec;
+      if(verbose) std::cerr << "[embed_patch] the Tutte solve failed: repairing from the centroid" << std::endl;
+    }
+    else if(ec != OK) return ec;
+    const std::size_t wrong = internal::count_wrong_faces(disk, pos, orientation, orient);
+    if(verbose) std::cerr << "[embed_patch] Tutte map: " << wrong << " face(s) not strictly positive" << std::endl;
+    if(wrong > 0)
+    {
+      opt.time_budget = max_seconds - timer.time();
+      if(!(opt.time_budget > 0)) return ERROR_BUDGET_EXHAUSTED;
+      ec = internal::repair_disk_map(disk, bpos, orientation, traits, opt, pos, stats);
+      if(ec != OK) { stats.seconds_total = timer.time(); return ec; }
+    }
+  }
+
+  // certificate on the patch (see internal::count_wrong_faces for why it implies no overlap):
+  // written first, certified from the uv map itself, rolled back if refused
+  const double t_certificate = timer.time();
+  std::vector<Point_2> old(nv);
+  for(std::size_t i = 0; i < nv; ++i)
+  {
+    if(disk.on_border[i]) continue;
+    old[i] = get(uvm, disk.vertices[i]);
+    put(uvm, disk.vertices[i], pos[i]);
+  }
+  Embedding_report& r = stats.report;
+  r = Embedding_report();
+  r.faces = disk.number_of_faces(); r.vertices = nv; r.border_vertices = nb;
+  internal::Uv_samples<Point_2> samples;
+  internal::sample_uv(disk, uvm, samples);
+  r.non_finite = samples.non_finite;
+  internal::Face_orientations o;
+  internal::orientation_pass(disk, samples, orient, o);
+  r.flipped = o.flipped; r.degenerate = o.degenerate; r.clockwise = (o.border_sign == CGAL::RIGHT_TURN);
+  if(o.border_finite) r.border_intersections = internal::border_pass(disk, samples, orient, r.overlap_limit);
+  r.border_simple = o.border_finite && r.border_intersections == 0;
+  bool border_kept = true;
+  for(std::size_t k = 0; k < nb; ++k)
+  {
+    const Point_2 p = get(uvm, disk.vertices[disk.border[k]]);
+    if(!(p.x() == bpos[k].x() && p.y() == bpos[k].y())) border_kept = false;
+  }
+  const bool certified = border_kept && r.non_finite == 0 && r.flipped == 0 && r.degenerate == 0 && r.border_simple
+                         && r.clockwise == (orientation < 0)
+                         && internal::count_wrong_faces(disk, pos, orientation, orient) == 0;
+  r.overlap_checked = r.overlap_by_degree_argument = certified;
+  if(stats_out)
+  {
+    internal::Face_areas areas;
+    internal::area_pass(disk, samples, o, areas);
+    r.min_signed_area = areas.min_area; r.max_signed_area = areas.max_area; r.border_area = areas.border_area;
+    const internal::Equilateral_energies eq = internal::equilateral_energy_pass(disk, samples, o, areas, r.energy_threshold);
+    r.max_energy_equilateral = eq.max_energy; r.mean_energy_equilateral = eq.mean_energy; r.high_energy_faces = eq.high_energy_faces;
+    r.distortion = internal::distortion_pass(disk, vpm, samples, o, areas, r.has_3d_energy);
+    if(r.has_3d_energy)
+    {
+      r.max_energy_3d = r.distortion.max_symmetric_dirichlet;
+      r.mean_energy_3d = r.distortion.mean_symmetric_dirichlet;
+    }
+  }
+  stats.seconds_total = timer.time();
+  stats.seconds_certification = stats.seconds_total - t_certificate;
+  if(verbose) std::cerr << "[embed_patch] " << (certified ? "certified" : "NOT certified") << ": " << r.summary() << std::endl;
+  if(!certified)
+  {
+    for(std::size_t i = 0; i < nv; ++i)
+      if(!disk.on_border[i]) put(uvm, disk.vertices[i], old[i]);
+    return ERROR_INVALID_EMBEDDING;
+  }
+  return OK;
+}
+
+} // namespace Progressive_embedding
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_PROGRESSIVE_EMBEDDING_EMBED_PATCH_H

@@ -27,6 +27,28 @@
 namespace CGAL {
 namespace Progressive_embedding {
 
+#ifndef DOXYGEN_RUNNING
+namespace internal_np {
+enum multiply_connected_t { multiply_connected };
+} // namespace internal_np
+#endif
+
+namespace parameters {
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// whether `check_embedding()` accepts a connected genus-0 mesh with several border cycles (`bool`, default `false`:
+/// such a mesh is refused with `ERROR_NOT_A_DISK`, as a mesh that is not a disk)
+template <typename T>
+CGAL::Named_function_parameters<T, internal_np::multiply_connected_t> multiply_connected(const T& t)
+{ return CGAL::Named_function_parameters<T, internal_np::multiply_connected_t>(t); }
+#ifndef DOXYGEN_RUNNING
+template <typename T, typename NP_T, typename NP_Tag, typename NP_Base>
+CGAL::Named_function_parameters<T, internal_np::multiply_connected_t, CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base> >
+multiply_connected(const T& t, const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& np)
+{ return CGAL::Named_function_parameters<T, internal_np::multiply_connected_t,
+                                         CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base> >(t, np); }
+#endif
+} // namespace parameters
+
 /// \ingroup PkgProgressiveEmbeddingReports
 ///
 /// The exact validity certificate of a planar map of a disk, returned by `check_embedding()`.
@@ -40,8 +62,11 @@ struct Embedding_report
   std::size_t faces = 0;
   /// number of vertices
   std::size_t vertices = 0;
-  /// number of border vertices
+  /// number of border vertices (on every border cycle)
   std::size_t border_vertices = 0;
+  /// number of border cycles of the mesh: 1 for a disk, 1 + the number of holes for a multiply connected
+  /// domain (also filled when the mesh is refused for having several, `ERROR_NOT_A_DISK`; 0 when not counted)
+  std::size_t border_cycles = 0;
   /// faces whose orientation is opposite to the border's (exact predicate)
   std::size_t flipped = 0;
   /// faces whose three uv corners are collinear (exact predicate)
@@ -52,8 +77,19 @@ struct Embedding_report
   bool clockwise = false;
   /// `true` if the border polygon has no self-intersection (exact)
   bool border_simple = true;
-  /// number of intersecting pairs of non-adjacent border edges (counting stops at `overlap_limit`)
+  /// number of intersecting pairs of non-adjacent edges of one border cycle, summed over the cycles (counting
+  /// stops at `overlap_limit`)
   std::size_t border_intersections = 0;
+  /// multiply connected domains: pairs of edges of two different border cycles that touch (closed segments, exact;
+  /// counting, together with `border_intersections`, stops at `overlap_limit`); 0 for a disk
+  std::size_t loop_crossings = 0;
+  /// multiply connected domains: holes whose border cycle is not oriented opposite to the outer cycle (exact area
+  /// zero or of the outer cycle's sign); 0 for a disk
+  std::size_t misoriented_holes = 0;
+  /// multiply connected domains: holes whose border cycle has a vertex outside the outer cycle (exact winding
+  /// number 0, vertices on the outer cycle not counted); when no two cycles touch one vertex per hole decides, else
+  /// every vertex is tested (up to 10^7 point-edge tests per hole); 0 for a disk
+  std::size_t holes_outside = 0;
   /// `true` if global overlap was decided
   bool overlap_checked = false;
   /// `true` if no overlap was concluded without the box test, because all faces are positively
@@ -67,7 +103,8 @@ struct Embedding_report
   double min_signed_area = 0;
   /// largest signed uv area, relative to the border orientation (double)
   double max_signed_area = 0;
-  /// area enclosed by the border polygon (absolute value, double)
+  /// area enclosed by the border polygon (absolute value, double); for a multiply connected domain the signed sum
+  /// over the cycles (the outer area minus the holes' when valid), in absolute value
   double border_area = 0;
   /// max symmetric Dirichlet energy against the 3D triangles scaled to the uv area (infinite if a face is flipped or degenerate)
   double max_energy_3d = 0;
@@ -87,11 +124,13 @@ struct Embedding_report
   Distortion_report distortion;
 
   /// returns `true` if the map is a valid embedding: no flipped, degenerate or non-finite
-  /// element, a simple border and no overlap.
+  /// element, a simple border and no overlap; with several border cycles also no contact between two
+  /// cycles, every hole oriented opposite to the outer cycle and inside it.
   bool is_valid() const
   {
     return status == OK && faces > 0 && flipped == 0 && degenerate == 0 && non_finite == 0
-        && border_simple && overlapping_pairs == 0;
+        && border_simple && overlapping_pairs == 0 && loop_crossings == 0 && misoriented_holes == 0
+        && holes_outside == 0;
   }
 
   /// returns a one-line human-readable summary
@@ -103,6 +142,13 @@ struct Embedding_report
        << ", degenerate " << degenerate;
     if(non_finite) os << ", non-finite vertices " << non_finite;
     os << ", border " << (border_simple ? "simple" : "self-intersecting");
+    if(border_cycles > 1)
+    {
+      os << ", border cycles " << border_cycles;
+      if(loop_crossings) os << ", touching cycle pairs " << loop_crossings;
+      if(misoriented_holes) os << ", misoriented holes " << misoriented_holes;
+      if(holes_outside) os << ", holes outside " << holes_outside;
+    }
     if(overlap_checked) os << ", overlapping pairs " << overlapping_pairs
                            << (overlapping_pairs >= overlap_limit ? "+" : "");
     if(clockwise) os << " (clockwise layout)";
@@ -125,6 +171,22 @@ struct Embedding_report
 /// when the map lies beyond double range), the energies computed on the scaled coordinates (they
 /// are scale invariant). The function never throws: a mesh that is not a disk is reported in
 /// `Embedding_report::status`.
+///
+/// <b>Multiply connected domains</b> (with `multiply_connected(true)`): the mesh may be any connected genus-0
+/// triangle mesh with k >= 1 border cycles (else `ERROR_NOT_GENUS_ZERO`, also for a closed mesh). The <em>outer</em>
+/// cycle is the one whose uv polygon has the largest absolute area (exact; the first in the mesh's halfedge order
+/// among equal ones), every other cycle is a hole. Faces are expected with the orientation of the outer cycle, and
+/// holes with the opposite one: a layout whose outer cycle is clockwise is reported with
+/// `Embedding_report::clockwise` and is valid if it is the mirror image of a valid one (faces and outer cycle
+/// clockwise, holes counterclockwise). The map is certified valid iff every face has the orientation of the outer
+/// cycle (exact), every cycle is simple (`border_intersections`), no two cycles touch (`loop_crossings`), every hole is
+/// oriented opposite to the outer cycle (`misoriented_holes`) and lies inside it (`holes_outside`), and no two faces
+/// overlap. When the first five hold, the image covers each point of the outer polygon outside the holes exactly
+/// once and no point of a hole: the turning numbers of the cycles (1 for the outer one, -1 for each hole) sum to
+/// 2 - k, so no interior vertex is branched, and the degree of the map at a point, the sum of the cycles' winding
+/// numbers, is then 1 in the domain and 0 in the holes. The overlap test is then skipped
+/// (`overlap_by_degree_argument`), as for a disk; otherwise it runs and counts the overlapping pairs exactly.
+/// `border_cycles` gives k; `border_area` is the area of the domain (outer polygon minus the holes).
 ///
 /// \tparam TriangleMesh a model of `FaceGraph`
 /// \tparam VertexUVMap a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
@@ -156,6 +218,12 @@ struct Embedding_report
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{1e20}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{multiply_connected}
+///     \cgalParamDescription{whether a connected genus-0 mesh with several border cycles is certified (see above)
+///                           instead of being refused with `ERROR_NOT_A_DISK`}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{geom_traits}
 ///     \cgalParamDescription{the traits class whose exact orientation predicate decides every sign}
 ///     \cgalParamType{a model of `ProgressiveEmbeddingTraits_2` whose `Point_2` is the uv map's value type}
@@ -181,30 +249,90 @@ Embedding_report check_embedding(const TriangleMesh& tm, VertexUVMap uvm,
   r.energy_threshold = choose_parameter(get_parameter(np, internal_np::invalid_energy_threshold), 1e20);
   const bool do_overlap = choose_parameter(get_parameter(np, internal_np::check_overlap), true);
 
-  internal::Indexed_disk<TriangleMesh> disk;
-  r.status = internal::make_indexed_disk(tm, boost::graph_traits<TriangleMesh>::null_halfedge(), disk);
-  if(r.status != OK) return r;
-  r.faces = disk.number_of_faces(); r.vertices = disk.number_of_vertices(); r.border_vertices = disk.border.size();
+  const bool holes = choose_parameter(get_parameter(np, internal_np::multiply_connected), false);
 
-  // orientation pass
+  internal::Indexed_domain<TriangleMesh> domain;
+  internal::Indexed_disk<TriangleMesh>& disk = domain.disk;
+  if(!holes)
+  {
+    r.status = internal::make_indexed_disk(tm, boost::graph_traits<TriangleMesh>::null_halfedge(), disk);
+    if(r.status == ERROR_NOT_A_DISK)
+    {
+      // say how many border cycles there are (e.g. several: `multiply_connected` would check it)
+      internal::make_indexed_domain(tm, domain);
+      r.border_cycles = domain.number_of_loops();
+    }
+    if(r.status != OK) return r;
+    r.border_cycles = 1;
+  }
+  else
+  {
+    r.status = internal::make_indexed_domain(tm, domain);
+    r.border_cycles = domain.number_of_loops();
+    if(r.status != OK) return r;
+  }
+  r.faces = disk.number_of_faces(); r.vertices = disk.number_of_vertices();
+
   internal::Uv_samples<Point_2> samples;
   internal::sample_uv(disk, uvm, samples);
   r.non_finite = samples.non_finite;
+  std::vector<CGAL::Gmpq> loop_twice_area;
+  std::vector<char> loop_finite;
+  bool loops_finite = true;
+  if(holes)
+  {
+    // the outer cycle: largest absolute uv area; it becomes disk.border for the passes below
+    internal::loop_areas(domain, samples, loop_twice_area, loop_finite);
+    domain.set_outer(internal::largest_loop(loop_twice_area, loop_finite));
+    for(char f : loop_finite) if(!f) loops_finite = false;
+    r.border_vertices = 0;
+    for(const auto& L : domain.loops) r.border_vertices += L.size();
+  }
+  else
+    r.border_vertices = disk.border.size();
+
+  // orientation pass (relative to the outer cycle)
   internal::Face_orientations o;
   internal::orientation_pass(disk, samples, orient, o);
+  if(holes)
+  {
+    o.border_finite = loops_finite;
+    if(loops_finite)
+    {
+      // the domain's area: the signed sum over the cycles
+      CGAL::Gmpq sum(0);
+      for(const CGAL::Gmpq& a : loop_twice_area) sum += a;
+      o.border_twice_area = sum;
+    }
+  }
   r.flipped = o.flipped; r.degenerate = o.degenerate; r.clockwise = (o.border_sign == CGAL::RIGHT_TURN);
   internal::Face_areas areas;
   internal::area_pass(disk, samples, o, areas);
   r.min_signed_area = areas.min_area; r.max_signed_area = areas.max_area; r.border_area = areas.border_area;
 
-  // border pass
-  if(o.border_finite) r.border_intersections = internal::border_pass(disk, samples, orient, r.overlap_limit);
+  // border pass (every cycle, and their contacts, orientations and nesting)
+  if(o.border_finite)
+  {
+    if(!holes) r.border_intersections = internal::border_pass(disk, samples, orient, r.overlap_limit);
+    else
+    {
+      const internal::Loops_result lr = internal::loops_pass(domain, samples, orient, loop_twice_area, o.border_sign,
+                                                             r.overlap_limit);
+      r.border_intersections = lr.self_intersections;
+      r.loop_crossings = lr.crossings;
+      r.misoriented_holes = lr.misoriented_holes;
+      r.holes_outside = lr.holes_outside;
+    }
+  }
   r.border_simple = o.border_finite && r.border_intersections == 0;
 
   // Overlap pass. When every face is correctly oriented and the border is simple (both decided
   // exactly), the map has degree one over the region the border encloses (each point is covered
   // as many times as the border winds around it): no overlap is possible, the pass is skipped.
-  if(do_overlap && r.flipped == 0 && r.degenerate == 0 && r.non_finite == 0 && r.border_simple)
+  // With holes the same holds once the cycles are pairwise disjoint, the holes oriented opposite
+  // to the outer cycle and inside it: the degree is 1 outside the holes and 0 inside them.
+  if(do_overlap && r.flipped == 0 && r.degenerate == 0 && r.non_finite == 0 && r.border_simple
+     && r.loop_crossings == 0 && r.misoriented_holes == 0 && r.holes_outside == 0)
     r.overlap_checked = r.overlap_by_degree_argument = true;
   else if(do_overlap)
   {

@@ -43,6 +43,15 @@ namespace Progressive_embedding {
 /// moves within its own star, so a single tiny face does not hold back the whole map. With a free border, the
 /// border vertices of a sweep move first and are put back together unless the border stays simple.
 ///
+/// <b>Multiply connected maps.</b> The mesh may also be a connected genus-0 mesh with several border cycles, mapped
+/// validly in the sense of `check_embedding()` with `multiply_connected(true)` (e.g. by the hole-filling embedding):
+/// the outer cycle (largest uv area) is the border, fixed unless `free_border` is set, and the vertices of the holes
+/// are free. Every accepted step keeps every face positive, every cycle simple and no two cycles touching (decided
+/// exactly: all cycles against each other in the global line search, the two cycle edges of a moved hole vertex
+/// against every cycle edge in the per-vertex sweeps), which makes the map valid again; the output is certified with
+/// the multiply connected certificate. A mesh with several border cycles that is not connected or not of genus 0
+/// gives `ERROR_NOT_GENUS_ZERO`.
+///
 /// <b>Convergence criterion:</b> the function returns `OK` when two consecutive iterations each lower the mean
 /// energy by less than `convergence_tolerance` (relative). On the repaired Tutte maps of real meshes this happens
 /// after 100 to 500 iterations, at a point where ten times more iterations lower the energy by less than 5%.
@@ -130,6 +139,7 @@ namespace Progressive_embedding {
 ///         `ERROR_DEGENERATE_3D_FACE` if the 3D faces have no area at all (faces of zero 3D area among others get an
 ///         equilateral reference of the mean area);
 ///         `ERROR_WRONG_PARAMETER` for a negative tolerance or time budget;
+///         `ERROR_NOT_GENUS_ZERO` for several border cycles on a mesh that is not a connected genus-0 surface;
 ///         the disk errors of `check_embedding()` (`ERROR_NOT_A_DISK`, `ERROR_NON_MANIFOLD`, ...).
 template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename TriangleMesh, typename VertexUVMap, typename CGAL_NP_TEMPLATE_PARAMETERS>

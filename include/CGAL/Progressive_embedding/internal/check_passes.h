@@ -13,6 +13,10 @@
 //  - area_pass: signed areas relative to the border orientation (double, exact where the
 //    double evaluation is unreliable), in the map's units and scaled;
 //  - border_pass: exact count of self-intersections of the border polygon;
+//  - loop_areas / loops_pass: with several border loops (a multiply connected domain, see
+//    internal/constrained/holes_domain.h), the exact signed area of every loop, the outer loop
+//    (largest absolute area), and the exact counts of self-intersections, of contacts between two
+//    loops, of holes not oriented opposite to the outer loop and of holes not inside it;
 //  - overlap_pass: exact count of overlapping pairs of faces (conservative boxes + exact tests);
 //  - equilateral_energy_pass: symmetric Dirichlet energy against equilateral triangles.
 // Every sign is decided by the exact orientation functor passed in (the traits' one).
@@ -22,6 +26,7 @@
 #include <CGAL/Progressive_embedding/internal/border_polygon.h>
 #include <CGAL/Progressive_embedding/internal/number_utils.h>
 #include <CGAL/Progressive_embedding/internal/symmetric_dirichlet.h>
+#include <CGAL/Progressive_embedding/internal/constrained/holes_domain.h>
 
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/Box_intersection_d/Box_with_info_d.h>
@@ -215,6 +220,80 @@ std::size_t border_pass(const Indexed_disk<TriangleMesh>& disk, const Uv_samples
   B.reserve(disk.border.size());
   for(std::size_t b : disk.border) B.push_back(s.P[b]);
   return count_polygon_self_intersections(B, orient, limit);
+}
+
+// Exact twice signed area of every loop of `d` (zero for a loop with a non-finite vertex, whose
+// `finite` flag is then 0).
+template <class TriangleMesh, class Point_2>
+void loop_areas(const Indexed_domain<TriangleMesh>& d, const Uv_samples<Point_2>& s,
+                std::vector<CGAL::Gmpq>& twice_area, std::vector<char>& finite)
+{
+  const std::size_t k = d.number_of_loops();
+  twice_area.assign(k, CGAL::Gmpq(0));
+  finite.assign(k, 1);
+  for(std::size_t l = 0; l < k; ++l)
+  {
+    const std::vector<std::size_t>& L = d.loops[l];
+    for(std::size_t v : L) if(!s.finite[v]) finite[l] = 0;
+    if(!finite[l]) continue;
+    std::vector<CGAL::Gmpq> bx(L.size()), by(L.size());
+    for(std::size_t i = 0; i < L.size(); ++i) { bx[i] = s.qx(L[i]); by[i] = s.qy(L[i]); }
+    twice_area[l] = twice_polygon_area(bx, by);
+  }
+}
+
+// The outer loop of a map: the finite loop of largest absolute area (exact; the first of equal
+// ones in the order of `d.loops`); loop 0 if no loop is finite.
+inline std::size_t largest_loop(const std::vector<CGAL::Gmpq>& twice_area, const std::vector<char>& finite)
+{
+  std::size_t best = 0;
+  bool found = false;
+  for(std::size_t l = 0; l < twice_area.size(); ++l)
+  {
+    if(!finite[l]) continue;
+    if(!found || CGAL::abs(twice_area[best]) < CGAL::abs(twice_area[l])) best = l;
+    found = true;
+  }
+  return best;
+}
+
+struct Loops_result
+{
+  std::size_t self_intersections = 0; // pairs of edges of one loop (summed over the loops)
+  std::size_t crossings = 0;          // pairs of edges of two loops that touch
+  std::size_t misoriented_holes = 0;  // holes whose exact area is zero or has the outer loop's sign
+  std::size_t holes_outside = 0;      // holes with a vertex outside the outer loop (exact winding number 0)
+};
+
+// The loop tests of a multiply connected map whose loops are all finite; `outer_sign` is the
+// orientation of the outer loop (`d.outer`). Intersection counting stops at `limit`.
+template <class TriangleMesh, class Point_2, class Orientation_2>
+Loops_result loops_pass(const Indexed_domain<TriangleMesh>& d, const Uv_samples<Point_2>& s, const Orientation_2& orient,
+                        const std::vector<CGAL::Gmpq>& twice_area, CGAL::Orientation outer_sign, std::size_t limit)
+{
+  Loops_result r;
+  count_loop_intersections(s.P, d.loops, orient, limit, r.self_intersections, r.crossings);
+  for(std::size_t l = 0; l < d.number_of_loops(); ++l)
+  {
+    if(l == d.outer) continue;
+    const CGAL::Sign sg = CGAL::sign(twice_area[l]);
+    if(sg == CGAL::ZERO || sg == CGAL::Sign(outer_sign)) ++r.misoriented_holes;
+    // One vertex decides for the whole loop when no two loops touch. Otherwise every vertex of the
+    // hole is tested (within a budget of tests: the map is invalid anyway). A vertex on the outer
+    // loop is not counted here (it is a contact, counted in `crossings`); the winding number of a
+    // point on an outer edge is only used when the contact is already counted.
+    const std::vector<std::size_t>& H = d.loops[l];
+    const std::vector<std::size_t>& O = d.loops[d.outer];
+    const std::size_t tested = (r.crossings == 0 || H.size() * O.size() > 10000000) ? 1 : H.size();
+    for(std::size_t i = 0; i < tested; ++i)
+    {
+      const Point_2& p = s.P[H[i]];
+      bool on_outer = false;
+      for(std::size_t b : O) if(exact_compare_xy(s.P[b], p) == CGAL::EQUAL) on_outer = true;
+      if(!on_outer && winding_number(s.P, O, p, orient) == 0) { ++r.holes_outside; break; }
+    }
+  }
+  return r;
 }
 
 struct Overlap_limit_reached {};

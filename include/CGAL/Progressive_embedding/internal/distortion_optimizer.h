@@ -11,6 +11,17 @@
 //                       eigensystem of isotropic energies, one sparse solve
 //   line_search()       flip-free bound, then backtracking; every candidate certified exactly
 //   vertex_sweep()      per-vertex projected Newton steps (border phase checked for simplicity)
+// Multiply connected maps (several border loops, see internal/constrained/holes_domain.h): the
+// outer loop is the border (fixed unless free_border), the hole vertices are free. A step that
+// keeps every face positive could still make a hole loop self-intersect, touch another loop, or
+// turn a hole inside out (its faces then cover a region twice around a vertex of angle 4 pi), so
+// every candidate of the global line search is checked exactly for loop intersections (all
+// loops, O(n log n)) and hole orientations, and each hole vertex moves alone in the sweeps with
+// its two loop edges checked against every loop edge and its loop's orientation checked.
+// Positive faces, simple and pairwise disjoint loops and clockwise holes (in the counterclockwise
+// frame) make the map valid: the turning numbers of the loops sum to 2 - k + (the branching of
+// interior vertices), which forces the branching to 0, and the degree of the map is then 1 in the
+// domain and 0 in the holes; the final certificate checks all of it again.
 //   certify()/write()   exact certificate of the result, written only if valid
 // Directions are computed in double; positions are stored and certified in the uv number type.
 
@@ -20,6 +31,7 @@
 #include <CGAL/Progressive_embedding/internal/border_polygon.h>
 #include <CGAL/Progressive_embedding/internal/number_utils.h>
 #include <CGAL/Progressive_embedding/internal/newton_step.h>
+#include <CGAL/Progressive_embedding/internal/constrained/holes_domain.h>
 #include <CGAL/Progressive_embedding/internal/symmetric_dirichlet.h>
 
 #include <CGAL/Real_timer.h>
@@ -170,21 +182,42 @@ public:
 
   Distortion_optimizer(const TriangleMesh& tm, VertexUVMap uvm, VertexPointMap vpm, const Settings& s,
                        const Traits& traits = Traits())
-    : tm_(tm), uvm_(uvm), vpm_(vpm), s_(s), traits_(traits), orient_(traits.exact_orientation_2_object()) {}
+    : tm_(tm), uvm_(uvm), vpm_(vpm), s_(s), traits_(traits), orient_(traits.exact_orientation_2_object()),
+      disk_(domain_.disk) {}
 
   // ---- set-up ------------------------------------------------------------------------------
   Error_code initialize(const std::vector<vertex_descriptor>& constrained, Optimization_statistics& stats)
   {
     if(!(s_.tolerance >= 0) || !(s_.time_budget >= 0)) return ERROR_WRONG_PARAMETER;
     Error_code ec = make_indexed_disk(tm_, GT::null_halfedge(), disk_);
+    if(ec == ERROR_NOT_A_DISK)
+    {
+      // several border loops: a multiply connected domain (genus 0 and connected, or refused)
+      const Error_code ed = make_indexed_domain(tm_, domain_);
+      if(domain_.number_of_loops() < 2) return ec;
+      if(ed != OK) return ed;
+      holes_ = true;
+      ec = OK;
+    }
     if(ec != OK) return ec;
     nv_ = disk_.number_of_vertices(); nf_ = disk_.number_of_faces();
 
     // the input must be valid: the optimization never leaves the valid set
-    stats.report = check_embedding(tm_, uvm_, CGAL::parameters::vertex_point_map(vpm_).geom_traits(traits_));
+    stats.report = check_embedding(tm_, uvm_, parameters::multiply_connected(holes_,
+                                                CGAL::parameters::vertex_point_map(vpm_).geom_traits(traits_)));
     if(stats.report.status != OK) return stats.report.status;
     if(stats.report.non_finite > 0) return ERROR_NON_FINITE_COORDINATES;
     if(!stats.report.is_valid()) return ERROR_INVALID_EMBEDDING;
+    if(holes_)
+    {
+      // the outer loop as the certificate chose it (largest exact uv area): the border
+      Uv_samples<Point_2> samples;
+      sample_uv(disk_, uvm_, samples);
+      std::vector<CGAL::Gmpq> twice_area;
+      std::vector<char> finite;
+      loop_areas(domain_, samples, twice_area, finite);
+      domain_.set_outer(largest_loop(twice_area, finite));
+    }
     sgn_ = stats.report.clockwise ? -1. : 1.;   // work on the counterclockwise mirror image
     positive_ = stats.report.clockwise ? CGAL::RIGHT_TURN : CGAL::LEFT_TURN;
 
@@ -247,7 +280,8 @@ public:
     const std::vector<Point_2>& P = P_;
     auto current = boost::make_function_property_map<vertex_descriptor, Point_2>(
       [&](vertex_descriptor v) -> Point_2 { return P[get(vid, v)]; });
-    return check_embedding(tm_, current, CGAL::parameters::vertex_point_map(vpm_).geom_traits(traits_));
+    return check_embedding(tm_, current, parameters::multiply_connected(holes_,
+                                           CGAL::parameters::vertex_point_map(vpm_).geom_traits(traits_)));
   }
 
   void write() const
@@ -311,7 +345,8 @@ public:
       for(std::size_t i = 0; i < nv_; ++i)
         if(var_[i] >= 0)
           Pn[i] = Point_2(P_[i].x() + make_ft<FT>(t * dx[i]), P_[i].y() + make_ft<FT>(sgn_ * t * dy[i]));
-      if(!faces_positive(Pn) || (s_.free_border && !border_simple(Pn))) continue;
+      if(!faces_positive(Pn) || (s_.free_border && !border_simple(Pn)) || (holes_ && !(loops_disjoint(Pn) && holes_oriented(Pn))))
+        continue;
       P_.swap(Pn);
       refresh_doubles();
       E = energy(X_, Y_);
@@ -331,9 +366,12 @@ public:
       const std::vector<Point_2> saved(P_);
       std::size_t m = 0;
       for(std::size_t i : border_free_) if(move_vertex(i)) ++m;
-      if(m > 0 && !border_simple(P_)) { P_ = saved; refresh_doubles(); m = 0; }
+      if(m > 0 && (!border_simple(P_) || (holes_ && !(loops_disjoint(P_) && holes_oriented(P_))))) { P_ = saved; refresh_doubles(); m = 0; }
       moved += m;
     }
+    // hole vertices one at a time, each checked against every loop edge (sequential: the check
+    // reads the other loops)
+    for(std::size_t i : hole_free_) if(move_vertex(i)) ++moved;
 #ifdef CGAL_LINKED_WITH_TBB
     if(std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value && std::is_floating_point<FT>::value)
     {
@@ -397,6 +435,9 @@ public:
         const auto& tr = disk_.faces[fc.first];
         if(orient_(P_[tr[0]], P_[tr[1]], P_[tr[2]]) != positive_) { valid = false; break; }
       }
+      if(valid && holes_ && domain_.is_hole_vertex(i))
+        valid = loop_edges_clear(P_, domain_.loops, std::size_t(domain_.loop_of[i]), hole_position_[i], orient_)
+             && hole_sign(P_, std::size_t(domain_.loop_of[i])) == CGAL::NEGATIVE;
       if(!valid) { P_[i] = old; continue; }
       X_[i] = CGAL::to_double(P_[i].x()); Y_[i] = sgn_ * CGAL::to_double(P_[i].y());
       return true;
@@ -429,6 +470,19 @@ private:
     for(std::size_t i = 0; i < nv_; ++i) if(!fixed[i]) var_[i] = nfree_++;
     border_free_.clear();
     for(std::size_t b : disk_.border) if(var_[b] >= 0) border_free_.push_back(b);
+    hole_free_.clear();
+    hole_position_.assign(nv_, 0);
+    if(holes_)
+      for(std::size_t l = 0; l < domain_.number_of_loops(); ++l)
+      {
+        if(l == domain_.outer) continue;
+        for(std::size_t k = 0; k < domain_.loops[l].size(); ++k)
+        {
+          const std::size_t v = domain_.loops[l][k];
+          hole_position_[v] = k;
+          if(var_[v] >= 0) hole_free_.push_back(v);
+        }
+      }
     return nfree_ > 0 ? OK : ERROR_NO_FREE_VERTEX;
   }
 
@@ -484,7 +538,7 @@ private:
     std::vector<int> colour(nv_, -1);
     for(std::size_t i = 0; i < nv_; ++i)
     {
-      if(var_[i] < 0 || disk_.on_border[i]) continue;
+      if(var_[i] < 0 || disk_.on_border[i] || (holes_ && domain_.is_hole_vertex(i))) continue;
       std::vector<char> used;
       for(const auto& fc : star_[i])
         for(std::size_t j : disk_.faces[fc.first])
@@ -658,6 +712,50 @@ private:
     return count_polygon_self_intersections(B, orient_, 1) == 0;
   }
 
+  // no two loops touch and every loop is simple (exact; multiply connected maps)
+  bool loops_disjoint(const std::vector<Point_2>& P) const
+  {
+    std::size_t self = 0, crossing = 0;
+    count_loop_intersections(P, domain_.loops, orient_, 1, self, crossing);
+    return self == 0 && crossing == 0;
+  }
+
+  // every hole clockwise in the counterclockwise working frame (exact)
+  bool holes_oriented(const std::vector<Point_2>& P) const
+  {
+    for(std::size_t l = 0; l < domain_.number_of_loops(); ++l)
+      if(l != domain_.outer && hole_sign(P, l) != CGAL::NEGATIVE) return false;
+    return true;
+  }
+
+  // exact sign of the area of loop l in the working frame (y times sgn_): a double evaluation
+  // when its error bound decides, exact rationals otherwise
+  CGAL::Sign hole_sign(const std::vector<Point_2>& P, std::size_t l) const
+  {
+    const std::vector<std::size_t>& L = domain_.loops[l];
+    const std::size_t n = L.size();
+    if constexpr(std::is_floating_point<FT>::value)
+    {
+      double sum = 0, mag = 0;
+      for(std::size_t k = 0; k < n; ++k)
+      {
+        const Point_2& a = P[L[k]];
+        const Point_2& b = P[L[(k + 1) % n]];
+        const double t1 = double(a.x()) * double(b.y()), t2 = double(a.y()) * double(b.x());
+        sum += t1 - t2;
+        mag += std::abs(t1) + std::abs(t2);
+      }
+      // rounding of n products and 2n sums, and underflow of the products
+      const double bound = 4. * double(n + 2) * (std::numeric_limits<double>::epsilon() * mag + std::numeric_limits<double>::min());
+      if(std::isfinite(sum) && std::isfinite(mag) && std::abs(sum) > bound)
+        return (sum > 0) == (sgn_ > 0) ? CGAL::POSITIVE : CGAL::NEGATIVE;
+    }
+    std::vector<CGAL::Gmpq> x(n), y(n);
+    for(std::size_t k = 0; k < n; ++k) { x[k] = to_rational(P[L[k]].x()); y[k] = to_rational(P[L[k]].y()); }
+    const CGAL::Sign sg = CGAL::sign(twice_polygon_area(x, y));
+    return sgn_ > 0 ? sg : CGAL::Sign(-int(sg));
+  }
+
   // energy of star face fc with its corner 0 at (x, y): psi * weight is summed by the caller
   bool star_face_terms(const Face_corner& fc, double x, double y, double ax, double ay, double bx, double by,
                        double& E, std::array<double, 2>& g, std::array<double, 3>& H) const
@@ -713,7 +811,11 @@ private:
   Settings s_;
   Traits traits_;
   typename Traits::Exact_orientation_2 orient_;
-  Indexed_disk<TriangleMesh> disk_;
+  Indexed_domain<TriangleMesh> domain_;  // the loops of a multiply connected map (domain_.disk: faces, outer loop)
+  Indexed_disk<TriangleMesh>& disk_;
+  bool holes_ = false;                   // several border loops
+  std::vector<std::size_t> hole_free_;   // free vertices of the hole loops
+  std::vector<std::size_t> hole_position_; // per hole vertex: its position in its loop
   std::size_t nv_ = 0, nf_ = 0;
   double sgn_ = 1;
   CGAL::Orientation positive_ = CGAL::LEFT_TURN;

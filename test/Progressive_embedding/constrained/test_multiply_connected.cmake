@@ -1,0 +1,10 @@
+# Multiply connected domains (meshes with holes): certificate, fill/unfill, embedding, optimization.
+pe_constrained_test(holes_certificate_annulus "constrained;holes")
+pe_constrained_test(holes_certificate_invalid "constrained;holes")
+pe_constrained_test(holes_fill_unfill "constrained;holes")
+pe_constrained_test(holes_embed_annulus "constrained;holes")
+pe_constrained_test(holes_embed_sphere "constrained;holes" 300)
+pe_constrained_test(holes_embed_shark "constrained;holes" 300)
+pe_constrained_test(holes_optimize_every_step "constrained;holes" 300)
+pe_constrained_test(holes_gmpq "constrained;holes" 300)
+pe_constrained_test(holes_errors "constrained;holes")

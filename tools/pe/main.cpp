@@ -48,6 +48,7 @@ int exit_status(PE::Error_code ec)
     case PE::ERROR_DUPLICATE_CONSTRAINT:
     case PE::ERROR_CONSTRAINT_ON_BORDER:
     case PE::ERROR_NOT_GENUS_ZERO:
+    case PE::ERROR_NOT_SELF_OVERLAPPING:
       return EXIT_INPUT;
     case PE::ERROR_CANNOT_WRITE_FILE:
       return EXIT_OUTPUT;

@@ -44,7 +44,8 @@ enum Error_code
   ERROR_CONSTRAINT_ON_BORDER,      ///< A positional constraint names a border vertex (the border is given separately)
   ERROR_NOT_GENUS_ZERO,            ///< The input mesh is not a connected genus-0 surface with at least one border cycle
   ERROR_DEGENERATE_CHORD,          ///< An interior edge joins two border vertices on one straight side of a patch: no valid map keeps it
-  ERROR_PATH_TRACING_FAILED        ///< The patch borders could not be traced on the mesh within the refinement budget
+  ERROR_PATH_TRACING_FAILED,       ///< The patch borders could not be traced on the mesh within the refinement budget
+  ERROR_NOT_SELF_OVERLAPPING       ///< The polygon is neither simple nor weakly self-overlapping: it bounds no immersed disk
 };
 
 /// \ingroup PkgProgressiveEmbeddingEnums
@@ -80,6 +81,7 @@ inline const char* get_error_message(Error_code code)
     case ERROR_NOT_GENUS_ZERO: return "Input mesh is not a connected genus-0 surface with a border";
     case ERROR_DEGENERATE_CHORD: return "An interior edge joins two border vertices on one straight side of a patch";
     case ERROR_PATH_TRACING_FAILED: return "The patch borders could not be traced on the mesh within the refinement budget";
+    case ERROR_NOT_SELF_OVERLAPPING: return "The polygon is neither simple nor weakly self-overlapping";
   }
   return "Unknown error";
 }
@@ -116,6 +118,7 @@ inline const char* get_error_name(Error_code code)
     case ERROR_NOT_GENUS_ZERO: return "ERROR_NOT_GENUS_ZERO";
     case ERROR_DEGENERATE_CHORD: return "ERROR_DEGENERATE_CHORD";
     case ERROR_PATH_TRACING_FAILED: return "ERROR_PATH_TRACING_FAILED";
+    case ERROR_NOT_SELF_OVERLAPPING: return "ERROR_NOT_SELF_OVERLAPPING";
   }
   return "UNKNOWN";
 }

@@ -27,28 +27,6 @@
 namespace CGAL {
 namespace Progressive_embedding {
 
-#ifndef DOXYGEN_RUNNING
-namespace internal_np {
-enum multiply_connected_t { multiply_connected };
-} // namespace internal_np
-#endif
-
-namespace parameters {
-/// \ingroup PkgProgressiveEmbeddingNamedParameters
-/// whether `check_embedding()` accepts a connected genus-0 mesh with several border cycles (`bool`, default `false`:
-/// such a mesh is refused with `ERROR_NOT_A_DISK`, as a mesh that is not a disk)
-template <typename T>
-CGAL::Named_function_parameters<T, internal_np::multiply_connected_t> multiply_connected(const T& t)
-{ return CGAL::Named_function_parameters<T, internal_np::multiply_connected_t>(t); }
-#ifndef DOXYGEN_RUNNING
-template <typename T, typename NP_T, typename NP_Tag, typename NP_Base>
-CGAL::Named_function_parameters<T, internal_np::multiply_connected_t, CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base> >
-multiply_connected(const T& t, const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& np)
-{ return CGAL::Named_function_parameters<T, internal_np::multiply_connected_t,
-                                         CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base> >(t, np); }
-#endif
-} // namespace parameters
-
 /// \ingroup PkgProgressiveEmbeddingReports
 ///
 /// The exact validity certificate of a planar map of a disk, returned by `check_embedding()`.

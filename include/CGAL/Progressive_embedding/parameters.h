@@ -58,6 +58,7 @@ CGAL_PE_ADD_NAMED_PARAMETER(constrained_vertices)
 CGAL_PE_ADD_NAMED_PARAMETER(distortion_energy)
 CGAL_PE_ADD_NAMED_PARAMETER(optimization_statistics)
 CGAL_PE_ADD_NAMED_PARAMETER(optimize)
+CGAL_PE_ADD_NAMED_PARAMETER(multiply_connected)
 #undef CGAL_PE_ADD_NAMED_PARAMETER
 } // namespace internal_np
 #endif
@@ -97,8 +98,13 @@ CGAL_PE_NAMED_PARAMETER_FUNCTIONS(constrained_vertices)
 CGAL_PE_NAMED_PARAMETER_FUNCTIONS(distortion_energy)
 CGAL_PE_NAMED_PARAMETER_FUNCTIONS(optimization_statistics)
 CGAL_PE_NAMED_PARAMETER_FUNCTIONS(optimize)
+CGAL_PE_NAMED_PARAMETER_FUNCTIONS(multiply_connected)
 #undef CGAL_PE_NAMED_PARAMETER_FUNCTIONS
 #else
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// whether `check_embedding()` accepts a connected genus-0 mesh with several border cycles (`bool`, default `false`:
+/// such a mesh is refused with `ERROR_NOT_A_DISK`, as a mesh that is not a disk)
+template <typename T> unspecified_type multiply_connected(const T& t);
 /// \ingroup PkgProgressiveEmbeddingNamedParameters
 /// selects the border shape of `tutte_embedding()` (a `Border_shape`; default `Border_shape::FIXED`)
 template <typename T> unspecified_type border_shape(const T& t);

@@ -144,7 +144,10 @@ Error_code make_indexed_disk(const TriangleMesh& tm,
     if(reached != nf)
       return ERROR_NOT_A_DISK;
     // Euler characteristic of a disk is 1
-    const long ne = static_cast<long>(num_halfedges(tm) / 2);
+    // counted by iteration: num_halfedges() of a Surface_mesh also counts removed (garbage) halfedges
+    long nh = 0;
+    for(auto h : halfedges(tm)) { (void)h; ++nh; }
+    const long ne = nh / 2;
     if(static_cast<long>(nv) - ne + static_cast<long>(nf) != 1)
       return ERROR_NOT_A_DISK;
   }

@@ -1,0 +1,551 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+// triangulate_self_overlapping_polygon_2: simple polygons (the constrained Delaunay path and, forced,
+// the dynamic program), weakly self-overlapping ones (spiral strips), runs of collinear vertices and
+// vertices on diagonals (polyomino outlines at every start vertex), clockwise input, errors, budgets,
+// exact number types. Every triangulation is certified here independently of the package, on exact
+// rational points: n - 2 strictly positive triangles, each polygon edge in one triangle (in the
+// polygon's direction), each diagonal in two (once each way), Euler characteristic 1, and around every
+// vertex a fan that turns monotonically from its next edge to its previous edge (local injectivity).
+
+#include <CGAL/Progressive_embedding/triangulate_self_overlapping_polygon_2.h>
+
+#include "registry.h"
+#include "../test_util.h"
+
+#include <algorithm>
+#include <list>
+#include <map>
+#include <set>
+#include <sstream>
+#include <utility>
+
+namespace {
+
+namespace SO = CGAL::Progressive_embedding::internal::self_overlapping;
+typedef std::array<std::size_t, 3> Tri;
+
+template <class P>
+Kq::Point_2 qp(const P& p) { return Kq::Point_2(exact_rational(p.x()), exact_rational(p.y())); }
+
+// position of direction v->d in [0, 2 pi) measured counterclockwise from v->a0: half, then cross product
+bool upper_rel(const Kq::Point_2& v, const Kq::Point_2& a0, const Kq::Point_2& d)
+{
+  const CGAL::Orientation o = CGAL::orientation(v, a0, d);
+  if(o != CGAL::COLLINEAR) return o == CGAL::LEFT_TURN;
+  return (a0 - v) * (d - v) > 0; // same direction as a0: angle 0
+}
+bool angle_less(const Kq::Point_2& v, const Kq::Point_2& a0, const Kq::Point_2& a, const Kq::Point_2& b)
+{
+  const bool ua = upper_rel(v, a0, a), ub = upper_rel(v, a0, b);
+  if(ua != ub) return ua;
+  return CGAL::orientation(v, a, b) == CGAL::LEFT_TURN;
+}
+
+// The independent certificate, silent: an empty string when `T` triangulates an immersed disk bounded by
+// the polygon `Q`, else why not. `ccw`: the polygon's orientation (its edges appear in triangles in this direction).
+std::string immersion_failure(const std::vector<Kq::Point_2>& Q, const std::vector<Tri>& T, bool ccw)
+{
+  const std::size_t n = Q.size();
+  std::ostringstream why;
+  if(T.size() + 2 != n) { why << T.size() << " triangles for " << n << " vertices"; return why.str(); }
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> directed; // directed edge -> triangle
+  for(std::size_t t = 0; t < T.size(); ++t)
+  {
+    for(int c = 0; c < 3; ++c) if(T[t][c] >= n) return "index out of range";
+    if(CGAL::orientation(Q[T[t][0]], Q[T[t][1]], Q[T[t][2]]) != CGAL::LEFT_TURN)
+    { why << "triangle " << t << " (" << T[t][0] << "," << T[t][1] << "," << T[t][2] << ") not strictly positive"; return why.str(); }
+    for(int c = 0; c < 3; ++c)
+      if(!directed.emplace(std::make_pair(T[t][c], T[t][(c + 1) % 3]), t).second) return "a directed edge is used twice";
+  }
+  std::set<std::pair<std::size_t, std::size_t> > undirected;
+  std::set<std::size_t> used;
+  for(const auto& e : directed)
+  {
+    const std::size_t a = e.first.first, b = e.first.second;
+    used.insert(a);
+    undirected.insert(std::make_pair((std::min)(a, b), (std::max)(a, b)));
+    const bool border_forward = ccw ? (b == (a + 1) % n) : (a == (b + 1) % n);
+    const bool border_backward = ccw ? (a == (b + 1) % n) : (b == (a + 1) % n);
+    if(border_backward) { why << "polygon edge " << a << "-" << b << " used against the polygon's direction"; return why.str(); }
+    if(!border_forward && directed.count(std::make_pair(b, a)) != 1) { why << "diagonal " << a << "-" << b << " in one triangle only"; return why.str(); }
+  }
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const std::size_t a = ccw ? k : (k + 1) % n, b = ccw ? (k + 1) % n : k;
+    if(directed.count(std::make_pair(a, b)) != 1) { why << "polygon edge " << k << " not in exactly one triangle"; return why.str(); }
+  }
+  // Euler characteristic of the index triangulation
+  const long V = long(used.size()), E = long(undirected.size()), F = long(T.size());
+  if(V != long(n) || V - E + F != 1) { why << "V - E + F = " << V - E + F << " (V " << V << ")"; return why.str(); }
+
+  // local injectivity at every vertex: walk the fan from the next polygon vertex to the previous one
+  // (each triangle (v, a, b) counterclockwise leads from a to b) and check that the directions increase
+  // strictly in [0, 2 pi) measured from the first edge: the fan covers exactly the vertex's angle.
+  std::vector<std::map<std::size_t, std::size_t> > fan(n); // fan[v][a] = b
+  for(const Tri& t : T)
+    for(int c = 0; c < 3; ++c) fan[t[c]][t[(c + 1) % 3]] = t[(c + 2) % 3];
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    // in counterclockwise terms: first = next vertex, last = previous vertex
+    const std::size_t first = ccw ? (k + 1) % n : (k + n - 1) % n, last = ccw ? (k + n - 1) % n : (k + 1) % n;
+    std::size_t a = first, steps = 0;
+    while(a != last)
+    {
+      if(fan[k].count(a) != 1 || ++steps > n) { why << "the fan of vertex " << k << " is broken"; return why.str(); }
+      const std::size_t b = fan[k][a];
+      // (a == first has angle 0: b must not leave along the first edge)
+      if(!angle_less(Q[k], Q[first], Q[a], Q[b])) { why << "the fan of vertex " << k << " does not turn monotonically"; return why.str(); }
+      a = b;
+    }
+  }
+  return std::string();
+}
+
+template <class P>
+int certify(const std::vector<P>& pts, const std::vector<Tri>& T, bool ccw, const std::string& what)
+{
+  std::vector<Kq::Point_2> Q;
+  for(const P& p : pts) Q.push_back(qp(p));
+  const std::string why = immersion_failure(Q, T, ccw);
+  CHECK(why.empty(), what << ": " << why);
+  return EXIT_SUCCESS;
+}
+
+// every triangulation of the n-gon (small n), as index triples (i, k, j), i < k < j
+void all_triangulations(std::size_t i, std::size_t j, std::vector<std::vector<Tri> >& out)
+{
+  out.clear();
+  if(j < i + 2) { out.push_back(std::vector<Tri>()); return; }
+  for(std::size_t k = i + 1; k < j; ++k)
+  {
+    std::vector<std::vector<Tri> > L, R;
+    all_triangulations(i, k, L);
+    all_triangulations(k, j, R);
+    for(const auto& l : L)
+      for(const auto& r : R)
+      {
+        std::vector<Tri> t = l;
+        t.insert(t.end(), r.begin(), r.end());
+        t.push_back(Tri{{ i, k, j }});
+        out.push_back(t);
+      }
+  }
+}
+
+template <class P>
+int run_public(const std::vector<P>& pts, bool expect_simple, bool expect_ccw, const std::string& what,
+               std::vector<Tri>* out = nullptr)
+{
+  std::vector<Tri> T;
+  PE::Polygon_triangulation_report r;
+  const PE::Error_code ec = PE::triangulate_self_overlapping_polygon_2(pts, std::back_inserter(T), PE::parameters::polygon_report(&r));
+  CHECK(ec == PE::OK, what << ": " << PE::get_error_name(ec));
+  CHECK(r.self_overlapping && r.simple == expect_simple && r.clockwise == !expect_ccw && r.dynamic_program == !expect_simple,
+        what << ": report simple " << r.simple << " clockwise " << r.clockwise << " dp " << r.dynamic_program);
+  CHECK(r.rotation_number == (expect_ccw ? 1 : -1), what << ": rotation number " << r.rotation_number);
+  RUN(certify(pts, T, expect_ccw, what));
+  if(out) *out = T;
+  return EXIT_SUCCESS;
+}
+
+// the dynamic program alone, on a counterclockwise polygon (simple ones included)
+template <class P>
+int run_dp(const std::vector<P>& pts, const std::string& what, std::vector<Tri>* out = nullptr)
+{
+  typedef typename CGAL::Kernel_traits<P>::Kernel K;
+  typedef typename PE::Progressive_embedding_traits_2<K>::Exact_orientation_2 O;
+  SO::Shor_van_wyk<P, O> dp(pts, O());
+  SO::Dp_statistics st;
+  std::vector<Tri> T;
+  CGAL::Real_timer timer; timer.start();
+  const PE::Error_code ec = dp.run(timer, 1e9, T, st);
+  CHECK(ec == PE::OK, what << " (dynamic program): " << PE::get_error_name(ec));
+  RUN(certify(pts, T, true, what + " (dynamic program)"));
+  if(out) *out = T;
+  return EXIT_SUCCESS;
+}
+
+// ---- polygons --------------------------------------------------------------------------------
+
+template <class K>
+std::vector<typename K::Point_2> star(std::size_t tips, double r_in, double r_out)
+{
+  std::vector<typename K::Point_2> P;
+  for(std::size_t k = 0; k < 2 * tips; ++k)
+  {
+    const double a = 3.14159265358979323846 * double(k) / double(tips), r = (k % 2) ? r_in : r_out;
+    P.push_back(point<K>(r * std::cos(a), r * std::sin(a)));
+  }
+  return P;
+}
+
+// a strip around a spiral centerline r = 1 + pitch * t / (2 pi), t in [0, turns * 2 pi], width w > pitch:
+// it overlaps itself. Outer side forward, inner side backward: counterclockwise, rotation number 1.
+template <class K>
+std::vector<typename K::Point_2> spiral_strip(std::size_t per_side, double turns, double pitch, double w)
+{
+  std::vector<typename K::Point_2> P;
+  const double two_pi = 2 * 3.14159265358979323846;
+  for(std::size_t k = 0; k < per_side; ++k)
+  {
+    const double t = turns * two_pi * double(k) / double(per_side - 1), r = 1 + pitch * t / two_pi + w;
+    P.push_back(point<K>(r * std::cos(t), r * std::sin(t)));
+  }
+  for(std::size_t k = per_side; k-- > 0; )
+  {
+    const double t = turns * two_pi * double(k) / double(per_side - 1), r = 1 + pitch * t / two_pi;
+    P.push_back(point<K>(r * std::cos(t), r * std::sin(t)));
+  }
+  return P;
+}
+
+// A random polyomino of `cells` cells (4-connected growth, holes filled), its outline counterclockwise
+// with a vertex at every unit step (runs of collinear vertices, vertices on diagonals). Empty if the
+// outline touches itself at a vertex (two cells meeting at a corner only).
+std::vector<Epick::Point_2> polyomino_outline(std::size_t cells, unsigned seed)
+{
+  const int S = 2 * int(cells) + 4;
+  std::vector<char> g(S * S, 0);
+  auto at = [&](int x, int y) -> char& { return g[y * S + x]; };
+  std::mt19937 rng(seed);
+  std::vector<std::pair<int, int> > cs(1, std::make_pair(S / 2, S / 2));
+  at(S / 2, S / 2) = 1;
+  const int dx[4] = { 1, 0, -1, 0 }, dy[4] = { 0, 1, 0, -1 };
+  while(cs.size() < cells)
+  {
+    const std::pair<int, int> c = cs[rng() % cs.size()];
+    const int d = int(rng() % 4), x = c.first + dx[d], y = c.second + dy[d];
+    if(x < 1 || y < 1 || x >= S - 1 || y >= S - 1 || at(x, y)) continue;
+    at(x, y) = 1; cs.push_back(std::make_pair(x, y));
+  }
+  // fill holes: flood the outside from the corner
+  std::vector<char> out(S * S, 0);
+  std::vector<std::pair<int, int> > st(1, std::make_pair(0, 0));
+  out[0] = 1;
+  while(!st.empty())
+  {
+    const std::pair<int, int> c = st.back(); st.pop_back();
+    for(int d = 0; d < 4; ++d)
+    {
+      const int x = c.first + dx[d], y = c.second + dy[d];
+      if(x < 0 || y < 0 || x >= S || y >= S || at(x, y) || out[y * S + x]) continue;
+      out[y * S + x] = 1; st.push_back(std::make_pair(x, y));
+    }
+  }
+  for(int k = 0; k < S * S; ++k) if(!out[k]) g[k] = 1;
+  // directed border edges, the cell on their left
+  std::map<std::pair<int, int>, std::vector<std::pair<int, int> > > next;
+  std::size_t edges = 0;
+  for(int y = 1; y < S - 1; ++y)
+    for(int x = 1; x < S - 1; ++x)
+    {
+      if(!at(x, y)) continue;
+      if(!at(x, y - 1)) { next[std::make_pair(x, y)].push_back(std::make_pair(x + 1, y)); ++edges; }
+      if(!at(x + 1, y)) { next[std::make_pair(x + 1, y)].push_back(std::make_pair(x + 1, y + 1)); ++edges; }
+      if(!at(x, y + 1)) { next[std::make_pair(x + 1, y + 1)].push_back(std::make_pair(x, y + 1)); ++edges; }
+      if(!at(x - 1, y)) { next[std::make_pair(x, y + 1)].push_back(std::make_pair(x, y)); ++edges; }
+    }
+  for(const auto& e : next) if(e.second.size() != 1) return std::vector<Epick::Point_2>();
+  std::vector<Epick::Point_2> P;
+  std::pair<int, int> v = next.begin()->first;
+  do { P.push_back(Epick::Point_2(v.first, v.second)); v = next[v][0]; } while(v != next.begin()->first && P.size() <= edges);
+  if(P.size() != edges) return std::vector<Epick::Point_2>();
+  return P;
+}
+
+template <class P>
+std::vector<P> rotated(const std::vector<P>& v, std::size_t s)
+{
+  std::vector<P> r(v.begin() + s, v.end());
+  r.insert(r.end(), v.begin(), v.begin() + s);
+  return r;
+}
+
+// A rectilinear strip of width 2 w around a square spiral centerline (left turns, side lengths growing by
+// `pitch` < 2 w every turn): integer coordinates, a vertex at every unit step. It overlaps itself.
+std::vector<Epick::Point_2> square_spiral_strip(int L, int segments, int pitch, int w)
+{
+  std::vector<std::array<int, 2> > c(1, std::array<int, 2>{{ 0, 0 }});
+  const int dx[4] = { 1, 0, -1, 0 }, dy[4] = { 0, 1, 0, -1 };
+  for(int s = 0; s < segments; ++s)
+  {
+    const int len = L + pitch * (s / 2);
+    c.push_back(std::array<int, 2>{{ c.back()[0] + len * dx[s % 4], c.back()[1] + len * dy[s % 4] }});
+  }
+  const int m = int(c.size());
+  // right normal of direction d: (dy, -dx); offset of centerline point k
+  auto offset = [&](int k, int side) {
+    std::array<int, 2> o = {{ 0, 0 }};
+    if(k > 0) { const int d = (k - 1) % 4; o[0] += dy[d]; o[1] += -dx[d]; }
+    if(k < m - 1) { const int d = k % 4; o[0] += dy[d]; o[1] += -dx[d]; }
+    if(k == 0 || k == m - 1) { o[0] *= 1; o[1] *= 1; }
+    return std::array<int, 2>{{ c[k][0] + side * w * o[0], c[k][1] + side * w * o[1] }};
+  };
+  std::vector<std::array<int, 2> > corners;
+  for(int k = 0; k < m; ++k) corners.push_back(offset(k, 1));      // right side, forward
+  for(int k = m; k-- > 0; ) corners.push_back(offset(k, -1));      // left side, backward
+  std::vector<Epick::Point_2> P;
+  for(std::size_t k = 0; k < corners.size(); ++k)
+  {
+    const std::array<int, 2> a = corners[k], b = corners[(k + 1) % corners.size()];
+    const int steps = (std::max)(std::abs(b[0] - a[0]), std::abs(b[1] - a[1]));
+    for(int s = 0; s < steps; ++s)
+      P.push_back(Epick::Point_2(a[0] + (b[0] - a[0]) * s / steps, a[1] + (b[1] - a[1]) * s / steps));
+  }
+  return P;
+}
+
+} // namespace
+
+PE_TEST_GROUP(self_overlapping_simple)
+{
+  (void)data_dir;
+  // convex
+  std::vector<Epick::Point_2> convex;
+  for(int k = 0; k < 50; ++k) convex.push_back(point<Epick>(std::cos(k * 0.12566370614359174), std::sin(k * 0.12566370614359174)));
+  RUN(run_public(convex, true, true, "convex 50"));
+  RUN(run_dp(convex, "convex 50"));
+  // star, both orientations; the dynamic program too
+  const std::vector<Epick::Point_2> st = star<Epick>(12, 0.3, 1.0);
+  RUN(run_public(st, true, true, "star 24"));
+  RUN(run_dp(st, "star 24"));
+  std::vector<Epick::Point_2> cw(st.rbegin(), st.rend());
+  RUN(run_public(cw, true, false, "clockwise star 24"));
+  // a clockwise self-overlapping polygon
+  const std::vector<Epick::Point_2> sp = spiral_strip<Epick>(30, 2.0, 0.3, 0.6);
+  RUN(run_public(std::vector<Epick::Point_2>(sp.rbegin(), sp.rend()), false, false, "clockwise spiral strip"));
+  // a triangle
+  std::vector<Epick::Point_2> tri = { point<Epick>(0, 0), point<Epick>(1, 0), point<Epick>(0, 1) };
+  RUN(run_public(tri, true, true, "triangle"));
+  // any range of points: a std::list
+  const std::list<Epick::Point_2> lst(st.begin(), st.end());
+  std::vector<Tri> T;
+  CHECK(PE::triangulate_self_overlapping_polygon_2(lst, std::back_inserter(T)) == PE::OK, "std::list");
+  RUN(certify(st, T, true, "std::list"));
+  return EXIT_SUCCESS;
+}
+
+PE_TEST_GROUP(self_overlapping_polyomino)
+{
+  (void)data_dir;
+  std::size_t shapes = 0, rotations = 0;
+  for(unsigned seed = 1; shapes < 6 && seed < 200; ++seed)
+  {
+    const std::vector<Epick::Point_2> P = polyomino_outline(40, seed);
+    if(P.empty()) continue;
+    ++shapes;
+    for(std::size_t s = 0; s < P.size(); ++s, ++rotations)
+    {
+      const std::vector<Epick::Point_2> R = rotated(P, s);
+      const std::string what = "polyomino seed " + std::to_string(seed) + " start " + std::to_string(s);
+      RUN(run_public(R, true, true, what));
+      RUN(run_dp(R, what));
+    }
+  }
+  CHECK(shapes == 6, "only " << shapes << " polyominoes");
+  std::cout << shapes << " polyomino outlines, " << rotations << " start rotations, both paths certified" << std::endl;
+  return EXIT_SUCCESS;
+}
+
+PE_TEST_GROUP(self_overlapping_spiral)
+{
+  (void)data_dir;
+  // a spiral strip that winds twice and overlaps itself (width 0.6 > pitch 0.3)
+  const std::vector<Epick::Point_2> sp = spiral_strip<Epick>(60, 2.0, 0.3, 0.6);
+  RUN(run_public(sp, false, true, "spiral strip 120"));
+  // every start vertex on a smaller one
+  const std::vector<Epick::Point_2> small = spiral_strip<Epick>(25, 2.0, 0.3, 0.6);
+  for(std::size_t s = 0; s < small.size(); ++s)
+    RUN(run_public(rotated(small, s), false, true, "spiral strip 50 start " + std::to_string(s)));
+  // three turns, larger
+  PE::Polygon_triangulation_report r;
+  std::vector<Tri> T;
+  const std::vector<Epick::Point_2> big = spiral_strip<Epick>(300, 3.0, 0.25, 0.5);
+  CHECK(PE::triangulate_self_overlapping_polygon_2(big, std::back_inserter(T), PE::parameters::polygon_report(&r)) == PE::OK, "spiral 600");
+  RUN(certify(big, T, true, "spiral strip 600"));
+  std::cout << "spiral strip 600: " << r.chords_tested << " chords tested, " << r.chords_stored << " stored, "
+            << r.triangles_tested << " triangles tested, " << r.seconds << " s" << std::endl;
+  return EXIT_SUCCESS;
+}
+
+PE_TEST_GROUP(self_overlapping_collinear)
+{
+  (void)data_dir;
+  // a rectangle with runs of collinear vertices on every side
+  std::vector<Epick::Point_2> rect;
+  for(int x = 0; x < 8; ++x) rect.push_back(point<Epick>(x, 0));
+  for(int y = 0; y < 3; ++y) rect.push_back(point<Epick>(8, y));
+  for(int x = 8; x > 0; --x) rect.push_back(point<Epick>(x, 3));
+  for(int y = 3; y > 0; --y) rect.push_back(point<Epick>(0, y));
+  RUN(run_public(rect, true, true, "rectangle with runs"));
+  RUN(run_dp(rect, "rectangle with runs"));
+  // a rectilinear strip around a square spiral: overlapping itself, collinear runs, vertices on diagonals
+  const std::vector<Epick::Point_2> sq = square_spiral_strip(12, 8, 2, 2);
+  RUN(run_public(sq, false, true, "square spiral strip " + std::to_string(sq.size())));
+  for(std::size_t s = 0; s < sq.size(); s += 7)
+    RUN(run_public(rotated(sq, s), false, true, "square spiral strip start " + std::to_string(s)));
+  // no pitch: the second turn lies exactly on the first (coincident vertices and overlapping edges of two sheets)
+  RUN(run_public(square_spiral_strip(12, 8, 0, 2), false, true, "square strip wound twice on itself"));
+  // one closed turn: the end cap lies on the start cap, the polygon runs along that segment both ways
+  RUN(run_public(square_spiral_strip(12, 4, 0, 2), false, true, "square annulus cut open"));
+  return EXIT_SUCCESS;
+}
+
+PE_TEST_GROUP(self_overlapping_errors)
+{
+  (void)data_dir;
+  const std::vector<Tri> sentinel(1, Tri{{ 7, 7, 7 }});
+  auto expect = [&](const std::vector<Epick::Point_2>& P, PE::Error_code want, const char* what) {
+    std::vector<Tri> T = sentinel;
+    const PE::Error_code ec = PE::triangulate_self_overlapping_polygon_2(P, std::back_inserter(T));
+    CHECK(ec == want, what << ": " << PE::get_error_name(ec) << " (" << int(ec) << ")");
+    CHECK(T == sentinel, what << ": the output was touched");
+    return EXIT_SUCCESS;
+  };
+  // figure-eight: rotation number 0
+  std::vector<Epick::Point_2> eight = { point<Epick>(0, 0), point<Epick>(2, 2), point<Epick>(2, 0), point<Epick>(0, 2) };
+  RUN(expect(eight, PE::ERROR_NOT_SELF_OVERLAPPING, "figure-eight"));
+  // a convex polygon wound twice: rotation number 2
+  std::vector<Epick::Point_2> twice;
+  for(int k = 0; k < 10; ++k) twice.push_back(point<Epick>(std::cos(k * 1.2566370614359172), std::sin(k * 1.2566370614359172) + 0.01 * k));
+  RUN(expect(twice, PE::ERROR_NOT_SELF_OVERLAPPING, "wound twice"));
+  // rotation number 1, but a clockwise kink encloses a region of winding number -1 (and a counterclockwise one elsewhere)
+  std::vector<Epick::Point_2> kinks = {
+    point<Epick>(0, 0), point<Epick>(3, 0), point<Epick>(5, 0), point<Epick>(5, -1), point<Epick>(4, -1), point<Epick>(4, 1),
+    point<Epick>(10, 1), point<Epick>(10, 10), point<Epick>(6, 10), point<Epick>(5, 10), point<Epick>(5, 11), point<Epick>(4, 11),
+    point<Epick>(4, 9), point<Epick>(0, 9) };
+  RUN(expect(kinks, PE::ERROR_NOT_SELF_OVERLAPPING, "kinks"));
+  // two squares touching at a corner: rotation number 1, but the disk would be pinched there
+  std::vector<Epick::Point_2> pinch = { point<Epick>(0, 0), point<Epick>(1, 0), point<Epick>(1, 1), point<Epick>(2, 1),
+                                        point<Epick>(2, 2), point<Epick>(1, 2), point<Epick>(1, 1), point<Epick>(0, 1) };
+  RUN(expect(pinch, PE::ERROR_NOT_SELF_OVERLAPPING, "pinched"));
+  // spike (reversal), repeated point, too short, non-finite
+  std::vector<Epick::Point_2> spike = { point<Epick>(0, 0), point<Epick>(2, 0), point<Epick>(1, 0), point<Epick>(1, 1) };
+  RUN(expect(spike, PE::ERROR_NOT_SELF_OVERLAPPING, "spike"));
+  std::vector<Epick::Point_2> rep = { point<Epick>(0, 0), point<Epick>(1, 0), point<Epick>(1, 0), point<Epick>(0, 1) };
+  RUN(expect(rep, PE::ERROR_NOT_SELF_OVERLAPPING, "repeated point"));
+  RUN(expect(std::vector<Epick::Point_2>(eight.begin(), eight.begin() + 2), PE::ERROR_BORDER_TOO_SHORT, "two points"));
+  std::vector<Epick::Point_2> nan = eight; nan[1] = Epick::Point_2(std::nan(""), 1);
+  RUN(expect(nan, PE::ERROR_NON_FINITE_COORDINATES, "NaN"));
+  // budgets: a tiny time budget on the dynamic program and on the simple path; a negative one
+  const std::vector<Epick::Point_2> sp = spiral_strip<Epick>(400, 2.0, 0.3, 0.6);
+  for(const std::vector<Epick::Point_2>* P : { &sp })
+  {
+    std::vector<Tri> T = sentinel;
+    CHECK(PE::triangulate_self_overlapping_polygon_2(*P, std::back_inserter(T), CGAL::parameters::maximum_running_time(1e-9))
+          == PE::ERROR_BUDGET_EXHAUSTED && T == sentinel, "tiny budget");
+    CHECK(PE::triangulate_self_overlapping_polygon_2(*P, std::back_inserter(T), CGAL::parameters::maximum_running_time(-1.))
+          == PE::ERROR_WRONG_PARAMETER && T == sentinel, "negative budget");
+  }
+  return EXIT_SUCCESS;
+}
+
+PE_TEST_GROUP(self_overlapping_exact)
+{
+  (void)data_dir;
+  // the same decisions in double and in exact rationals (the coordinates convert exactly): same triangles
+  const std::vector<Epick::Point_2> sp = spiral_strip<Epick>(20, 2.0, 0.3, 0.6);
+  std::vector<Kq::Point_2> spq;
+  for(const auto& p : sp) spq.push_back(Kq::Point_2(CGAL::Gmpq(p.x()), CGAL::Gmpq(p.y())));
+  std::vector<Tri> Td, Tq;
+  RUN(run_public(sp, false, true, "spiral 40 double", &Td));
+  RUN(run_public(spq, false, true, "spiral 40 Gmpq", &Tq));
+  CHECK(Td == Tq, "double and Gmpq triangulations differ");
+  // the simple path in Gmpq and Gmpfr, and a polygon whose points need more than double precision
+  const std::vector<Kq::Point_2> stq = star<Kq>(6, 0.25, 1.0);
+  RUN(run_public(stq, true, true, "star Gmpq"));
+  const std::vector<Kfr::Point_2> stf = star<Kfr>(6, 0.25, 1.0);
+  RUN(run_public(stf, true, true, "star Gmpfr"));
+  std::vector<Kfr::Point_2> spf;
+  for(const auto& p : sp) spf.push_back(Kfr::Point_2(ft<CGAL::Gmpfr>(p.x()), ft<CGAL::Gmpfr>(p.y())));
+  std::vector<Tri> Tf;
+  RUN(run_public(spf, false, true, "spiral 40 Gmpfr", &Tf));
+  CHECK(Td == Tf, "double and Gmpfr triangulations differ");
+  // a flat vertex a third of the way between two others, in rationals: (0,0) (1/3,0) (1,0) (1,1) (0,1)
+  std::vector<Kq::Point_2> third = { Kq::Point_2(0, 0), Kq::Point_2(CGAL::Gmpq(1, 3), 0), Kq::Point_2(1, 0), Kq::Point_2(1, 1), Kq::Point_2(0, 1) };
+  RUN(run_public(third, true, true, "flat vertex at 1/3"));
+  RUN(run_dp(third, "flat vertex at 1/3"));
+  return EXIT_SUCCESS;
+}
+
+// Small random polygons on a 5 x 5 grid (collinear runs, points on diagonals, repeated points, every
+// kind of overlap): the function's decision equals the brute force over all triangulations of the n-gon
+// with the independent certificate, and every triangulation it returns is certified.
+PE_TEST_GROUP(self_overlapping_brute_force)
+{
+  (void)data_dir;
+  std::mt19937 rng(12345);
+  std::size_t accepted = 0, rejected = 0, simple = 0;
+  for(int trial = 0; trial < 3000; ++trial)
+  {
+    const std::size_t n = (trial % 2 == 0) ? 4 + std::size_t(trial % 5) : 6 + std::size_t(trial % 4); // 4..8, 6..9
+    std::vector<Epick::Point_2> P;
+    if(trial % 2 == 0)
+      for(std::size_t k = 0; k < n; ++k) P.push_back(Epick::Point_2(double(rng() % 5), double(rng() % 5)));
+    else
+    {
+      // triangles glued one by one on a border edge, each positive: often an immersed disk that overlaps itself
+      P = { Epick::Point_2(0, 0), Epick::Point_2(1, 0), Epick::Point_2(0, 1) };
+      for(int tries = 0; P.size() < n && tries < 200; ++tries)
+      {
+        const std::size_t e = rng() % P.size();
+        const Epick::Point_2 x(double(rng() % 9) - 4, double(rng() % 9) - 4);
+        if(CGAL::orientation(P[(e + 1) % P.size()], P[e], x) != CGAL::LEFT_TURN) continue; // outside edge e
+        P.insert(P.begin() + std::ptrdiff_t(e + 1), x);
+      }
+      if(P.size() != n) continue;
+    }
+    std::vector<Kq::Point_2> Q, Qr;
+    for(const auto& p : P) Q.push_back(qp(p));
+    Qr.assign(Q.rbegin(), Q.rend());
+    std::vector<std::vector<Tri> > all;
+    all_triangulations(0, n - 1, all);
+    bool exists = false;
+    for(const auto& t : all) if(immersion_failure(Q, t, true).empty() || immersion_failure(Qr, t, true).empty()) { exists = true; break; }
+    std::vector<Tri> T;
+    PE::Polygon_triangulation_report r;
+    const PE::Error_code ec = PE::triangulate_self_overlapping_polygon_2(P, std::back_inserter(T), PE::parameters::polygon_report(&r));
+    CHECK(ec == PE::OK || ec == PE::ERROR_NOT_SELF_OVERLAPPING, "trial " << trial << ": " << PE::get_error_name(ec));
+    CHECK((ec == PE::OK) == exists, "trial " << trial << ": the function says " << PE::get_error_name(ec)
+          << ", the brute force " << (exists ? "self-overlapping" : "not self-overlapping"));
+    if(ec == PE::OK)
+    {
+      RUN(certify(P, T, !r.clockwise, "trial " + std::to_string(trial)));
+      ++accepted;
+      if(r.simple) ++simple;
+    }
+    else ++rejected;
+  }
+  CHECK(accepted > 300 && rejected > 300 && accepted - simple >= 30, accepted << " accepted (" << simple << " simple), " << rejected << " rejected");
+  std::cout << accepted << " accepted (" << simple << " simple), " << rejected << " rejected, all as the brute force" << std::endl;
+  return EXIT_SUCCESS;
+}
+
+// The certificate of these tests is not vacuous: it rejects broken triangulations of each kind.
+PE_TEST_GROUP(self_overlapping_certificate)
+{
+  (void)data_dir;
+  const double d2r = 3.14159265358979323846 / 180;
+  // a fan of four positive triangles around vertex 0 turning 400 degrees: a disk, every triangle positive,
+  // but not locally injective at vertex 0
+  std::vector<Kq::Point_2> Q = { Kq::Point_2(0, 0) };
+  const double ang[5] = { 0, 100, 200, 300, 400 }, rad[5] = { 2, 2, 2, 2, 1 };
+  for(int k = 0; k < 5; ++k) Q.push_back(qp(point<Epick>(rad[k] * std::cos(ang[k] * d2r), rad[k] * std::sin(ang[k] * d2r))));
+  const std::vector<Tri> wrap = { Tri{{ 0, 1, 2 }}, Tri{{ 0, 2, 3 }}, Tri{{ 0, 3, 4 }}, Tri{{ 0, 4, 5 }} };
+  const std::string why = immersion_failure(Q, wrap, true);
+  CHECK(why.find("monotonically") != std::string::npos, "the 400-degree fan: '" << why << "'");
+  // the same triangles, one of them listed clockwise; one missing; a polygon edge twice
+  std::vector<Tri> flipped = wrap; std::swap(flipped[1][1], flipped[1][2]);
+  CHECK(immersion_failure(Q, flipped, true).find("positive") != std::string::npos, "flipped triangle");
+  CHECK(!immersion_failure(Q, std::vector<Tri>(wrap.begin(), wrap.end() - 1), true).empty(), "missing triangle");
+  // a square triangulated along both diagonals' halves (4 triangles around no vertex) is refused by the count;
+  // the square with a repeated triangle is refused by the directed edges
+  std::vector<Kq::Point_2> sq = { Kq::Point_2(0, 0), Kq::Point_2(1, 0), Kq::Point_2(1, 1), Kq::Point_2(0, 1) };
+  CHECK(immersion_failure(sq, { Tri{{ 0, 1, 2 }}, Tri{{ 0, 2, 3 }} }, true).empty(), "the valid square");
+  CHECK(!immersion_failure(sq, { Tri{{ 0, 1, 2 }}, Tri{{ 0, 1, 2 }} }, true).empty(), "repeated triangle");
+  CHECK(!immersion_failure(sq, { Tri{{ 0, 1, 2 }}, Tri{{ 0, 2, 3 }} }, false).empty(), "wrong orientation");
+  return EXIT_SUCCESS;
+}

@@ -1,0 +1,772 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+#ifndef CGAL_PROGRESSIVE_EMBEDDING_CONSTRAINED_EMBEDDING_H
+#define CGAL_PROGRESSIVE_EMBEDDING_CONSTRAINED_EMBEDDING_H
+
+/// \file constrained_embedding.h
+///
+/// `constrained_embedding()`: a certified planar map of a disk-topology triangle mesh in which
+/// chosen interior vertices land exactly on given points (MatchMaker++). The pipeline:
+///  1. validation on the caller's mesh (a triangulated disk; constraints interior, distinct,
+///     finite), border uv (fixed from the uv map, or a border shape);
+///  2. the domain cut into convex polygons whose corners are border points and targets
+///     (internal::partition_domain); a clockwise border is mirrored (x -> -x, exact) so that the
+///     polygons' counterclockwise order is the orientation of the mesh faces, and mirrored back;
+///  3. on a Surface_mesh copy, the polygons' interior edges traced as paths of mesh edges
+///     (internal::trace_paths, edge splits where blocked), then the chords along one path or one
+///     straight border side split (no map into a convex polygon keeps them);
+///  4. path vertices placed on their segments by 3D arc length (internal::place_path_vertices):
+///     in floating point they are only within an ulp of the segment, so each patch border is a
+///     simple polygon convex up to rounding; each patch is embedded by
+///     internal::embed_patch_impl(..., simple_border = true) (Tutte + repair, every face certified
+///     strictly positive, border simple and unchanged);
+///  5. the whole map certified by check_embedding() (positive faces + simple fixed border: one-to-
+///     one), then optimize_distortion() with border and constrained vertices fixed, certified again;
+///  6. the edge splits replayed on the caller's mesh (internal::replay_splits; same split
+///     convention), the uv of every vertex written.
+/// Holes: filled with fans on the copy (internal::fill_holes), the regions the fans became removed
+/// after step 5's first certificate (tracked through the splits), then certified multiply connected.
+/// Nothing of the caller's mesh or uv map is touched before step 6, which cannot fail.
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Progressive_embedding/Error_code.h>
+#include <CGAL/Progressive_embedding/parameters.h>
+#include <CGAL/Progressive_embedding/Progressive_embedding_traits_2.h>
+#include <CGAL/Progressive_embedding/check_embedding.h>
+#include <CGAL/Progressive_embedding/tutte_embedding.h>
+#include <CGAL/Progressive_embedding/embed_patch.h>
+#include <CGAL/Progressive_embedding/optimize_distortion.h>
+#include <CGAL/Progressive_embedding/internal/indexed_disk.h>
+#include <CGAL/Progressive_embedding/internal/constrained/domain_partition.h>
+#include <CGAL/Progressive_embedding/internal/constrained/trace_paths.h>
+#include <CGAL/Progressive_embedding/internal/constrained/patch_chords.h>
+#include <CGAL/Progressive_embedding/internal/constrained/refinement.h>
+#include <CGAL/Progressive_embedding/internal/constrained/holes.h>
+
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Real_timer.h>
+
+#include <boost/functional/hash.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iterator>
+#include <limits>
+#include <set>
+#include <unordered_map>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Progressive_embedding {
+
+/// \ingroup PkgProgressiveEmbeddingReports
+/// What `constrained_embedding()` did, filled when a pointer to it is passed with the `statistics` named parameter
+/// (also on error, as far as the computation went).
+struct Constrained_embedding_statistics
+{
+  /// vertices of the input mesh
+  std::size_t input_vertices = 0;
+  /// vertices of the output mesh (input vertices first, then the Steiner vertices)
+  std::size_t output_vertices = 0;
+  /// vertices added by edge splits (path tracing and chord splits)
+  std::size_t steiner_vertices = 0;
+  /// of which added to split chords along one path or border side after tracing
+  std::size_t chord_splits = 0;
+  /// paths traced (interior edges of the partition of the domain)
+  std::size_t paths = 0;
+  /// patches (convex polygons of the partition), each embedded separately
+  std::size_t patches = 0;
+  /// patches whose Tutte map needed the progressive embedding repair
+  std::size_t repaired_patches = 0;
+  /// seconds spent validating the input and placing the border
+  double seconds_validation = 0;
+  /// seconds spent partitioning the target domain into convex polygons
+  double seconds_partition = 0;
+  /// seconds spent tracing the paths (chord splits included)
+  double seconds_tracing = 0;
+  /// seconds spent placing the path vertices and embedding the patches
+  double seconds_patches = 0;
+  /// seconds spent certifying the map
+  double seconds_certification = 0;
+  /// seconds spent optimizing the distortion
+  double seconds_optimization = 0;
+  /// seconds spent replaying the refinement on the input mesh and writing the uv map
+  double seconds_output = 0;
+  /// seconds in all
+  double seconds_total = 0;
+  /// the certificate of the map before the optimization (on the refined mesh)
+  Embedding_report report_before_optimization;
+  /// the certificate of the returned map
+  Embedding_report report;
+  /// whether `optimize_distortion()` ran
+  bool optimized = false;
+  /// what `optimize_distortion()` returned (`OK` or `ERROR_BUDGET_EXHAUSTED` keep its result; any other status
+  /// keeps the map before the optimization)
+  Error_code optimization_status = OK;
+  /// what the optimization did
+  Optimization_statistics optimization;
+  /// largest distance between a constrained vertex's uv and its target (0: bit-exact; computed in double)
+  double max_constraint_error = 0;
+};
+
+/// \ingroup PkgProgressiveEmbeddingReports
+/// Where a vertex added by `constrained_embedding()` lies on the input surface: the convex combination
+/// `sum weights[i] * point(corners[i])`, `i < size`, of at most three vertices of one input face (exact: the
+/// weights are dyadic and computed exactly in `double`).
+template <class VertexDescriptor>
+struct Steiner_point
+{
+  /// the added vertex (a vertex of the output mesh)
+  VertexDescriptor vertex;
+  /// the input vertices of the combination (the first `size` are used)
+  std::array<VertexDescriptor, 3> corners;
+  /// their weights (positive, summing to 1)
+  std::array<double, 3> weights;
+  /// 1, 2 or 3
+  std::size_t size = 0;
+};
+
+#ifndef DOXYGEN_RUNNING
+namespace internal_np {
+enum steiner_points_t { steiner_points };
+} // namespace internal_np
+#endif
+
+namespace parameters {
+#ifndef DOXYGEN_RUNNING
+template <typename T>
+CGAL::Named_function_parameters<T, internal_np::steiner_points_t>
+steiner_points(const T& t)
+{ return CGAL::Named_function_parameters<T, internal_np::steiner_points_t>(t); }
+template <typename T, typename NP_T, typename NP_Tag, typename NP_Base>
+CGAL::Named_function_parameters<T, internal_np::steiner_points_t, CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base> >
+steiner_points(const T& t, const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& np)
+{ return CGAL::Named_function_parameters<T, internal_np::steiner_points_t,
+           CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base> >(t, np); }
+#else
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// receives, for `constrained_embedding()`, the position on the input surface of every vertex it adds
+/// (`std::vector<Steiner_point<vertex_descriptor> >*`)
+template <typename T> unspecified_type steiner_points(const T& t);
+#endif
+} // namespace parameters
+
+namespace internal {
+
+// chords of a patch that no convex-polygon map keeps: along one path or one straight side of the
+// domain border (several border vertices per side with a square or triangle border)
+template <class Work>
+struct Constrained_chord_predicate
+{
+  typedef typename boost::graph_traits<Work>::vertex_descriptor vertex_descriptor;
+  const Same_side_chord<Work>& same_side;
+  const std::unordered_map<vertex_descriptor, std::size_t>& border_index; // position on the border
+  const std::vector<char>& corner;
+  const std::vector<std::size_t>& side;
+  std::size_t number_of_sides;
+  bool operator()(vertex_descriptor a, vertex_descriptor b) const
+  {
+    if(same_side(a, b)) return true;
+    const auto ia = border_index.find(a), ib = border_index.find(b);
+    if(ia == border_index.end() || ib == border_index.end()) return false;
+    auto sides_of = [&](std::size_t k, std::size_t* s) -> std::size_t {
+      s[0] = side[k];
+      if(!corner[k]) return 1;
+      s[1] = (side[k] + number_of_sides - 1) % number_of_sides;
+      return 2;
+    };
+    std::size_t sa[2], sb[2];
+    const std::size_t na = sides_of(ia->second, sa), nb = sides_of(ib->second, sb);
+    for(std::size_t i = 0; i < na; ++i)
+      for(std::size_t j = 0; j < nb; ++j)
+        if(sa[i] == sb[j]) return true;
+    return false;
+  }
+};
+
+// The indices of the strict corners of the exact convex hull of the polygon P (Andrew's monotone
+// chain with the exact orientation), in the polygon's order. ERROR_NON_CONVEX_BORDER when they are
+// not in the hull's cyclic order along the polygon (the polygon is not convex up to rounding),
+// ERROR_DEGENERATE_BORDER when the hull is flat.
+template <class Point_2, class ExactOrientation>
+Error_code hull_corners(const std::vector<Point_2>& P, ExactOrientation orient, std::vector<std::size_t>& corners)
+{
+  const std::size_t n = P.size();
+  std::vector<std::size_t> idx(n);
+  for(std::size_t i = 0; i < n; ++i) idx[i] = i;
+  std::sort(idx.begin(), idx.end(), [&P](std::size_t a, std::size_t b)
+            { return P[a].x() < P[b].x() || (P[a].x() == P[b].x() && P[a].y() < P[b].y()); });
+  std::vector<std::size_t> H;
+  for(int pass = 0; pass < 2; ++pass) // lower hull, then upper hull (each loop: n steps, pops bounded by pushes)
+  {
+    const std::size_t base = H.size();
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      const std::size_t i = pass == 0 ? idx[k] : idx[n - 1 - k];
+      while(H.size() >= base + 2 && orient(P[H[H.size() - 2]], P[H.back()], P[i]) != CGAL::LEFT_TURN) H.pop_back();
+      H.push_back(i);
+    }
+    H.pop_back(); // the last point starts the other chain
+  }
+  if(H.size() < 3) return ERROR_DEGENERATE_BORDER;
+  // along the polygon the corners must come in the hull's cyclic order, either way round
+  corners = H;
+  std::sort(corners.begin(), corners.end());
+  const std::size_t m = H.size();
+  const std::size_t start = static_cast<std::size_t>(std::find(H.begin(), H.end(), corners[0]) - H.begin());
+  bool forward = true, backward = true;
+  for(std::size_t k = 0; k < m; ++k)
+  {
+    if(H[(start + k) % m] != corners[k]) forward = false;
+    if(H[(start + m - k) % m] != corners[k]) backward = false;
+  }
+  return (forward || backward) ? OK : ERROR_NON_CONVEX_BORDER;
+}
+
+} // namespace internal
+
+/// \ingroup PkgProgressiveEmbeddingMainFunctions
+///
+/// computes a certified planar map of a disk-topology triangle mesh in which every constrained interior vertex
+/// lands bit-exactly on its target point, refining the mesh where needed (MatchMaker++).
+///
+/// The domain (the convex border polygon, fixed from `uvm` or given by a border shape) is cut into convex polygons
+/// whose corners are the border points and the targets; their interior edges are traced on the mesh as
+/// non-crossing paths of edges between the corresponding vertices (edges are split at their midpoints where a path
+/// is blocked, and where an edge joins two vertices of one path or of one straight border side); the path
+/// vertices are placed on their segments by 3D arc length; each patch is mapped into its polygon (Tutte's map,
+/// repaired by the progressive embedding when not valid in floating point). The whole map is then certified by
+/// `check_embedding()` and its distortion optimized (`optimize_distortion()`) with the border and the constrained
+/// vertices fixed, and certified again.
+///
+/// The computation runs on a `Surface_mesh` copy: on any error `tm` and `uvm` are left exactly as they were. On
+/// success the edge splits are replayed on `tm` (`Euler::split_edge` at the midpoint, then `Euler::split_face`
+/// joining the new vertex to the opposite corner of each incident face): the input vertices keep their
+/// descriptors and 3D points and come first in the vertex order, the new vertices (at edge midpoints, so on the
+/// input surface) follow; the uv of every vertex is written. The map is certified by `check_embedding()`, every
+/// constrained vertex is bit-exactly at its target and, with `Border_shape::FIXED`, the border bit-exactly
+/// unchanged. A clockwise border gives a clockwise map (the mirror image of a valid one).
+///
+/// <b>Holes</b>: a connected genus-0 mesh with several border cycles is accepted. Its outer cycle (the longest in
+/// 3D) gets the border (fixed from `uvm` or the shape); every other cycle (a hole) is closed on the working copy by
+/// a fan around a new vertex, the disk is mapped as above, and once that map is certified the faces that the fans
+/// became (after the splits) are removed: the restriction of a one-to-one map is one-to-one, each hole is the image
+/// of a disk bounded by its loop. The result is certified by `check_embedding()` with `multiply_connected(true)`
+/// and optimized with the hole loops free. Steiner vertices inside a hole are removed with it; those on a hole loop
+/// (an edge of the loop split) are kept (they lie on the input surface's boundary).
+///
+/// \tparam TriangleMesh a model of `MutableFaceGraph` (triangles)
+/// \tparam ConstraintRange a range of `std::pair<vertex_descriptor, Point_2>` (`Point_2` the uv map's value type)
+/// \tparam VertexUVMap a model of `ReadWritePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///         as key type and a CGAL `Point_2` as value type; its kernel's `FT` is the number type of the computation
+/// \tparam NamedParameters a sequence of named parameters
+///
+/// \param tm the mesh, refined on success
+/// \param constraints the constrained interior vertices of `tm` and their targets, strictly inside the domain
+/// \param uvm the uv map: read on the border with `Border_shape::FIXED`, written on every vertex on success
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{border_shape}
+///     \cgalParamDescription{the border: fixed from `uvm` (convex, flat vertices allowed), or a shape as in `tutte_embedding()`}
+///     \cgalParamType{`Border_shape`}
+///     \cgalParamDefault{`Border_shape::FIXED`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{triangle_corner_points}
+///     \cgalParamDescription{the corners of `Border_shape::TRIANGLE`, as in `tutte_embedding()`}
+///     \cgalParamType{`std::array<Point_2, 3>`}
+///     \cgalParamDefault{as in `tutte_embedding()`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{weights}
+///     \cgalParamDescription{the weights of the Tutte map of each patch}
+///     \cgalParamType{`Weights`}
+///     \cgalParamDefault{`Weights::UNIFORM`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the 3D points (read; written on the added vertices)}
+///     \cgalParamType{a model of `ReadWritePropertyMap` with `Point_3` values}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_running_time}
+///     \cgalParamDescription{seconds (wall clock) for the whole computation; `ERROR_BUDGET_EXHAUSTED` when exceeded
+///                           before the map is certified (the optimization gets what is left and stops early)}
+///     \cgalParamType{`double` (negative or NaN: `ERROR_WRONG_PARAMETER`)}
+///     \cgalParamDefault{no limit}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_steiner_vertices}
+///     \cgalParamDescription{the largest number of vertices path tracing may add}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{4 times the number of edges plus 1000}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{optimize}
+///     \cgalParamDescription{whether to optimize the distortion of the certified map (border and constraints fixed)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{statistics}
+///     \cgalParamDescription{receives counts, times and certificates}
+///     \cgalParamType{`Constrained_embedding_statistics*`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{steiner_points}
+///     \cgalParamDescription{receives (on success) the position on the input surface of every added vertex, in creation order}
+///     \cgalParamType{`std::vector<Steiner_point<vertex_descriptor> >*`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{verbose}
+///     \cgalParamDescription{progress messages on `std::cerr`}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \return `OK` only if the map is certified and every constraint met exactly; otherwise, with `tm` and `uvm`
+///         unchanged: the mesh errors of `tutte_embedding()` (`ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH`,
+///         `ERROR_NON_MANIFOLD`, `ERROR_NOT_A_DISK` (closed mesh), `ERROR_NOT_GENUS_ZERO` (a border, but not a
+///         connected genus-0 surface), `ERROR_BORDER_TOO_SHORT`), the border errors (`ERROR_NON_CONVEX_BORDER`,
+///         `ERROR_DEGENERATE_BORDER`), `ERROR_WRONG_PARAMETER` (a constrained vertex that is not a vertex of `tm`, a
+///         named parameter out of range), `ERROR_NON_FINITE_COORDINATES`, `ERROR_CONSTRAINT_ON_BORDER`,
+///         `ERROR_DUPLICATE_CONSTRAINT` (a vertex or a target given twice), `ERROR_CONSTRAINT_OUTSIDE_DOMAIN`,
+///         `ERROR_BUDGET_EXHAUSTED` (time or Steiner budget), `ERROR_PATH_TRACING_FAILED`, the errors of the patch
+///         embeddings (`ERROR_DEGENERATE_CHORD`, `ERROR_COLLAPSE_FAILED`, `ERROR_INSERTION_FAILED`, ...), or
+///         `ERROR_INVALID_EMBEDDING` when a certificate fails.
+template <class TriangleMesh, class ConstraintRange, class VertexUVMap,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constraints, VertexUVMap uvm,
+                                 const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef boost::graph_traits<TriangleMesh>                         GT;
+  typedef typename GT::vertex_descriptor                            vertex_descriptor;
+  typedef typename GT::halfedge_descriptor                          halfedge_descriptor;
+  typedef typename internal::Uv_map_types<VertexUVMap>::Traits      Traits;
+  typedef typename Traits::Point_2                                  Point_2;
+  typedef typename Traits::FT                                       FT;
+  typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::type VPM;
+  typedef typename boost::property_traits<VPM>::value_type          Point_3;
+  typedef typename CGAL::Kernel_traits<Point_3>::Kernel             K3;
+  typedef CGAL::Surface_mesh<Point_3>                               Work;
+  typedef typename boost::graph_traits<Work>::vertex_descriptor     wvertex;
+  typedef typename boost::graph_traits<Work>::face_descriptor       wface;
+
+  CGAL::Real_timer timer;
+  timer.start();
+  Constrained_embedding_statistics local_stats;
+  Constrained_embedding_statistics* stats_out =
+    choose_parameter(get_parameter(np, internal_np::statistics), static_cast<Constrained_embedding_statistics*>(nullptr));
+  Constrained_embedding_statistics& stats = stats_out ? *stats_out : local_stats;
+  stats = Constrained_embedding_statistics();
+  std::vector<Steiner_point<vertex_descriptor> >* steiner_out =
+    choose_parameter(get_parameter(np, internal_np::steiner_points),
+                     static_cast<std::vector<Steiner_point<vertex_descriptor> >*>(nullptr));
+  const VPM vpm = CGAL::parameters::choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                                     get_property_map(CGAL::vertex_point, tm));
+  const Traits traits;
+  const typename Traits::Exact_orientation_2 orient = traits.exact_orientation_2_object();
+  const Border_shape shape = choose_parameter(get_parameter(np, internal_np::border_shape), Border_shape::FIXED);
+  const Weights wts = choose_parameter(get_parameter(np, internal_np::weights), Weights::UNIFORM);
+  const bool optimize = choose_parameter(get_parameter(np, internal_np::optimize), true);
+  const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  const double max_seconds = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
+                                              std::numeric_limits<double>::infinity());
+  if(!(max_seconds >= 0)) return ERROR_WRONG_PARAMETER;
+  auto remaining = [&]() { return std::max(0., max_seconds - timer.time()); };
+  auto finish = [&](Error_code ec) { stats.seconds_total = timer.time(); return ec; };
+
+  // ---- 1. validation, border ----------------------------------------------------------------
+  internal::Indexed_disk<TriangleMesh> disk;
+  Error_code ec = internal::make_indexed_disk(tm, GT::null_halfedge(), disk);
+  // several border cycles (holes): the disk is the mesh with its outer loop (the longest in 3D) as
+  // border; the holes are filled with fans on the working copy and opened again once the map is
+  // certified (see step 5)
+  bool holes = false;
+  halfedge_descriptor outer = GT::null_halfedge();
+  if(ec == ERROR_NOT_A_DISK)
+  {
+    std::size_t V = 0, E = 0, F = 0, cycles = 0;
+    for(auto v : vertices(tm)) { (void)v; ++V; }
+    for(auto e : edges(tm)) { (void)e; ++E; }
+    for(auto f : faces(tm)) { (void)f; ++F; }
+    std::unordered_set<halfedge_descriptor, boost::hash<halfedge_descriptor> > seen;
+    for(halfedge_descriptor h : halfedges(tm))
+    {
+      if(!CGAL::is_border(h, tm) || seen.count(h)) continue;
+      ++cycles;
+      halfedge_descriptor c = h;
+      std::size_t guard = 0;
+      do { seen.insert(c); c = next(c, tm); } while(c != h && ++guard <= E);
+    }
+    const long chi = static_cast<long>(V) - static_cast<long>(E) + static_cast<long>(F);
+    if(cycles >= 1 && chi < 2 - static_cast<long>(cycles)) ec = ERROR_NOT_GENUS_ZERO;
+    else if(cycles >= 2 && chi == 2 - static_cast<long>(cycles))
+    {
+      // connectedness is checked by fill_holes() on the copy
+      holes = true;
+      outer = internal::longest_border_loop(tm, vpm);
+      disk = internal::Indexed_disk<TriangleMesh>();
+      std::unordered_map<vertex_descriptor, std::size_t, boost::hash<vertex_descriptor> > vid;
+      for(vertex_descriptor v : vertices(tm))
+      {
+        vid.emplace(v, disk.vertices.size());
+        disk.vertices.push_back(v);
+        disk.on_border.push_back(CGAL::is_border(v, tm) ? 1 : 0);
+      }
+      // the outer loop with the interior on the left, as make_indexed_disk() orders a border
+      std::vector<std::size_t> cyc;
+      halfedge_descriptor c = outer;
+      std::size_t guard = 0;
+      do { cyc.push_back(vid.at(target(c, tm))); c = next(c, tm); } while(c != outer && ++guard <= E);
+      disk.border.assign(cyc.rbegin(), cyc.rend());
+      ec = OK;
+    }
+  }
+  if(ec != OK) return finish(ec);
+  const std::size_t nv = disk.number_of_vertices(), nb = disk.border.size();
+  if(nb < 3) return finish(ERROR_BORDER_TOO_SHORT);
+  stats.input_vertices = nv;
+  std::unordered_map<vertex_descriptor, std::size_t, boost::hash<vertex_descriptor> > index_of;
+  for(std::size_t i = 0; i < nv; ++i) index_of.emplace(disk.vertices[i], i);
+
+  std::vector<vertex_descriptor> cverts;
+  std::vector<Point_2> targets;
+  for(const auto& c : constraints)
+  {
+    cverts.push_back(c.first);
+    targets.push_back(c.second);
+  }
+  {
+    std::unordered_set<vertex_descriptor, boost::hash<vertex_descriptor> > seen;
+    for(std::size_t i = 0; i < cverts.size(); ++i)
+    {
+      const auto it = index_of.find(cverts[i]);
+      if(it == index_of.end()) return finish(ERROR_WRONG_PARAMETER);
+      if(disk.on_border[it->second]) return finish(ERROR_CONSTRAINT_ON_BORDER);
+      if(!seen.insert(cverts[i]).second) return finish(ERROR_DUPLICATE_CONSTRAINT);
+      if(!internal::is_finite_ft(targets[i].x()) || !internal::is_finite_ft(targets[i].y()))
+        return finish(ERROR_NON_FINITE_COORDINATES);
+    }
+  }
+  std::vector<Point_2> bpos;
+  ec = internal::place_border(disk, uvm, vpm, traits, np, bpos);
+  if(ec != OK) return finish(ec);
+  for(const Point_2& p : bpos)
+    if(!internal::is_finite_ft(p.x()) || !internal::is_finite_ft(p.y())) return finish(ERROR_NON_FINITE_COORDINATES);
+  stats.seconds_validation = timer.time();
+
+  // ---- 2. partition of the domain ----------------------------------------------------------
+  // The partition's counterclockwise order must be the mesh faces' orientation (trace_paths'
+  // convention): a clockwise border is mirrored, exactly, and the map mirrored back at the end.
+  internal::Domain_partition_options popt;
+  popt.allow_flat_border_vertices = true;
+  internal::Domain_partition partition;
+  // border nodes: every border vertex (its index in `border_nodes`), or, when a border shape computed
+  // in floating point is convex only up to rounding (e.g. a triangle's slanted sides), the strict
+  // corners of the points' exact convex hull; the other border vertices then lie on the border
+  // sides between them, within rounding, like path vertices on their segments
+  std::vector<std::size_t> border_nodes(nb);
+  for(std::size_t k = 0; k < nb; ++k) border_nodes[k] = k;
+  std::vector<Point_2> B(bpos);
+  ec = internal::partition_domain(B, targets, partition, popt);
+  if(ec == ERROR_NON_CONVEX_BORDER && shape != Border_shape::FIXED)
+  {
+    ec = internal::hull_corners(bpos, orient, border_nodes);
+    if(ec != OK) return finish(ec);
+    B.clear();
+    for(std::size_t k : border_nodes) B.push_back(bpos[k]);
+    partition = internal::Domain_partition();
+    ec = internal::partition_domain(B, targets, partition, popt);
+  }
+  if(ec != OK) return finish(ec);
+  const std::size_t nbn = border_nodes.size();
+  const bool mirrored = !partition.counterclockwise;
+  auto mirror = [](const Point_2& p) { return Point_2(-p.x(), p.y()); };
+  std::vector<Point_2> T(targets), Bfull(bpos);
+  if(mirrored)
+  {
+    for(Point_2& p : B) p = mirror(p);
+    for(Point_2& p : T) p = mirror(p);
+    for(Point_2& p : Bfull) p = mirror(p);
+    partition = internal::Domain_partition();
+    ec = internal::partition_domain(B, T, partition, popt);
+    if(ec != OK) return finish(ec);
+    if(!partition.counterclockwise) return finish(ERROR_PATH_TRACING_FAILED); // cannot happen
+  }
+  stats.paths = partition.edges.size();
+  stats.seconds_partition = timer.time() - stats.seconds_validation;
+
+  // ---- 3. the working copy, path tracing, chord splits -------------------------------------
+  Work work;
+  std::vector<std::pair<vertex_descriptor, wvertex> > v2v;
+  CGAL::copy_face_graph(tm, work, CGAL::parameters::vertex_point_map(vpm).vertex_to_vertex_output_iterator(std::back_inserter(v2v)));
+  std::unordered_map<vertex_descriptor, wvertex, boost::hash<vertex_descriptor> > to_work;
+  std::unordered_map<wvertex, vertex_descriptor> to_mesh;
+  for(const auto& p : v2v) { to_work.emplace(p.first, p.second); to_mesh.emplace(p.second, p.first); }
+  auto wvpm = get(CGAL::vertex_point, work);
+  // holes: fans around new vertices; the pieces of the hole loops are tracked through the splits
+  // so that the hole regions (what the fans became) can be removed after the certificate
+  std::set<std::pair<wvertex, wvertex> > loop_pieces;
+  std::vector<wvertex> centers;
+  auto piece = [](wvertex a, wvertex b) { return a < b ? std::make_pair(a, b) : std::make_pair(b, a); };
+  if(holes)
+  {
+    const auto ho = halfedge(to_work.at(source(outer, tm)), to_work.at(target(outer, tm)), work);
+    if(!ho.second) return finish(ERROR_WRONG_PARAMETER); // cannot happen: the copy has tm's connectivity
+    const auto wouter = CGAL::is_border(ho.first, work) ? ho.first : opposite(ho.first, work);
+    internal::Filled_holes<Work> filled;
+    ec = internal::fill_holes(work, wouter, wvpm, filled);
+    if(ec != OK) return finish(ec);
+    centers = filled.centers;
+    for(wvertex c : centers)
+      for(auto h : CGAL::halfedges_around_target(c, work))
+      {
+        const auto opp = prev(h, work); // h ends at c: in its fan face, the edge opposite c (a loop edge)
+        if(!CGAL::is_border(h, work)) loop_pieces.insert(piece(source(opp, work), target(opp, work)));
+      }
+  }
+  std::vector<wvertex> nodes;
+  for(std::size_t k : border_nodes) nodes.push_back(to_work.at(disk.vertices[disk.border[k]]));
+  for(vertex_descriptor v : cverts) nodes.push_back(to_work.at(v));
+  std::vector<std::vector<wvertex> > paths;
+  std::vector<internal::Steiner_vertex<Work> > steiner;
+  const double t_tracing = timer.time();
+  if(!(remaining() > 0)) return finish(ERROR_BUDGET_EXHAUSTED);
+  if(!partition.edges.empty())
+  {
+    const std::size_t max_steiner = choose_parameter(get_parameter(np, internal_np::maximum_steiner_vertices),
+                                                     4 * static_cast<std::size_t>(num_edges(work)) + 1000);
+    ec = internal::trace_paths(work, wvpm, nodes, partition.edges, partition.rotation, paths, steiner,
+                               parameters::maximum_steiner_vertices(max_steiner).maximum_running_time(remaining()));
+    stats.steiner_vertices = steiner.size();
+    if(ec != OK)
+    {
+      if(verbose) std::cerr << "[constrained_embedding] path tracing failed: " << get_error_message(ec) << std::endl;
+      return finish(ec);
+    }
+  }
+  std::unordered_map<wvertex, std::size_t> border_index;
+  for(std::size_t k = 0; k < nbn; ++k) border_index.emplace(nodes[k], k);
+  {
+    std::vector<char> corner;
+    std::vector<std::size_t> side;
+    const std::size_t nsides = internal::polygon_sides(B, orient, corner, side);
+    const internal::Same_side_chord<Work> same_side(work, nodes, paths);
+    const internal::Constrained_chord_predicate<Work> accept{ same_side, border_index, corner, side, nsides };
+    stats.chord_splits = internal::split_chords(work, wvpm, paths, steiner, accept);
+  }
+  stats.steiner_vertices = steiner.size();
+  stats.seconds_tracing = timer.time() - t_tracing;
+  if(verbose)
+    std::cerr << "[constrained_embedding] " << paths.size() << " path(s), " << steiner.size() << " Steiner vertices ("
+              << stats.chord_splits << " chord splits)" << std::endl;
+
+  // ---- 4. uv of the path network, patch embeddings -----------------------------------------
+  const double t_patches = timer.time();
+  auto wuv = work.template add_property_map<wvertex, Point_2>("v:pe_constrained_uv", Point_2(0, 0)).first;
+  std::vector<wvertex> wborder;
+  for(std::size_t k = 0; k < nb; ++k) wborder.push_back(to_work.at(disk.vertices[disk.border[k]]));
+  for(std::size_t k = 0; k < nb; ++k) put(wuv, wborder[k], Bfull[k]);
+  for(std::size_t i = 0; i < T.size(); ++i) put(wuv, nodes[nbn + i], T[i]);
+  for(std::size_t e = 0; e < paths.size(); ++e)
+  {
+    const std::vector<wvertex>& P = paths[e];
+    if(P.size() < 3) continue;
+    // 3D arc-length fractions of the interior path vertices
+    std::vector<double> len(1, 0.);
+    for(std::size_t k = 0; k + 1 < P.size(); ++k)
+      len.push_back(len.back() + std::sqrt(CGAL::to_double(CGAL::squared_distance(get(wvpm, P[k]), get(wvpm, P[k + 1])))));
+    std::vector<double> fractions;
+    for(std::size_t k = 1; k + 1 < P.size(); ++k)
+    {
+      double f = len.back() > 0 ? len[k] / len.back() : double(k) / double(P.size() - 1);
+      if(!(f >= 0)) f = 0;
+      if(f > 1) f = 1;
+      if(!fractions.empty() && f < fractions.back()) f = fractions.back();
+      fractions.push_back(f);
+    }
+    std::vector<Point_2> positions;
+    ec = internal::place_path_vertices(partition, B, T, e, fractions, positions);
+    if(ec != OK) return finish(ec);
+    for(std::size_t k = 1; k + 1 < P.size(); ++k) put(wuv, P[k], positions[k - 1]);
+  }
+  std::vector<internal::Traced_patch<Work> > patches;
+  auto fpatch = get(CGAL::dynamic_face_property_t<std::size_t>(), work);
+  ec = internal::label_patches(work, nodes, paths, fpatch, patches);
+  if(ec != OK) return finish(ec);
+  stats.patches = patches.size();
+  std::vector<std::vector<wface> > patch_faces(patches.size());
+  for(wface f : faces(work)) patch_faces[get(fpatch, f)].push_back(f);
+  for(std::size_t p = 0; p < patches.size(); ++p)
+  {
+    if(!(remaining() > 0)) return finish(ERROR_BUDGET_EXHAUSTED);
+    Progressive_embedding_statistics pst;
+    ec = internal::embed_patch_impl(work, patch_faces[p], wuv,
+                                    parameters::statistics(&pst, parameters::weights(wts).maximum_running_time(remaining())),
+                                    true);
+    if(pst.collapses > 0 || pst.insertions > 0) ++stats.repaired_patches;
+    if(ec != OK)
+    {
+      if(verbose)
+        std::cerr << "[constrained_embedding] patch " << p << " (" << patch_faces[p].size() << " faces): "
+                  << get_error_message(ec) << std::endl;
+      return finish(ec);
+    }
+  }
+  stats.seconds_patches = timer.time() - t_patches;
+
+  // ---- 5. certificate, optimization ---------------------------------------------------------
+  const double t_cert = timer.time();
+  stats.report_before_optimization = check_embedding(work, wuv);
+  stats.seconds_certification = timer.time() - t_cert;
+  if(!stats.report_before_optimization.is_valid())
+  {
+    stats.report = stats.report_before_optimization;
+    if(verbose) std::cerr << "[constrained_embedding] " << stats.report.summary() << std::endl;
+    return finish(ERROR_INVALID_EMBEDDING);
+  }
+  if(holes)
+  {
+    // the splits of loop pieces refine the loops; then every face reachable from a center without
+    // crossing a loop piece is what a fan became: removed (with the vertices it isolates). The
+    // restriction of the certified one-to-one map to the remaining faces is one-to-one and each
+    // hole is the image of a disk bounded by its loop: certified again below
+    for(const auto& sv : steiner)
+    {
+      const auto it = loop_pieces.find(piece(sv.a, sv.b));
+      if(it == loop_pieces.end()) continue;
+      loop_pieces.erase(it);
+      loop_pieces.insert(piece(sv.a, sv.v));
+      loop_pieces.insert(piece(sv.v, sv.b));
+    }
+    std::set<wface> hole_faces;
+    std::vector<wface> stack;
+    for(wvertex c : centers)
+      for(wface f : CGAL::faces_around_target(halfedge(c, work), work))
+        if(f != boost::graph_traits<Work>::null_face() && hole_faces.insert(f).second) stack.push_back(f);
+    while(!stack.empty()) // each face pushed once
+    {
+      const wface f = stack.back(); stack.pop_back();
+      for(auto h : CGAL::halfedges_around_face(halfedge(f, work), work))
+      {
+        if(loop_pieces.count(piece(source(h, work), target(h, work)))) continue;
+        const wface g = face(opposite(h, work), work);
+        if(g != boost::graph_traits<Work>::null_face() && hole_faces.insert(g).second) stack.push_back(g);
+      }
+    }
+    for(wface f : hole_faces) CGAL::Euler::remove_face(halfedge(f, work), work);
+    stats.report_before_optimization = check_embedding(work, wuv, parameters::multiply_connected(true));
+    if(!stats.report_before_optimization.is_valid())
+    {
+      stats.report = stats.report_before_optimization;
+      if(verbose) std::cerr << "[constrained_embedding] holes: " << stats.report.summary() << std::endl;
+      return finish(ERROR_INVALID_EMBEDDING);
+    }
+  }
+  stats.report = stats.report_before_optimization;
+  if(optimize)
+  {
+    const double t_opt = timer.time();
+    std::vector<wvertex> fixed(nodes.begin() + nbn, nodes.end());
+    stats.optimized = true;
+    stats.optimization_status =
+      optimize_distortion(work, wuv, parameters::optimization_statistics(&stats.optimization,
+                                       parameters::constrained_vertices(fixed).maximum_running_time(remaining())));
+    stats.seconds_optimization = timer.time() - t_opt;
+    // OK / ERROR_BUDGET_EXHAUSTED: a certified, improved map was written; otherwise nothing was
+    stats.report = check_embedding(work, wuv, parameters::multiply_connected(holes));
+    if(!stats.report.is_valid()) return finish(ERROR_INVALID_EMBEDDING);
+  }
+
+  // constraints and border, exactly (before mirroring back)
+  for(std::size_t i = 0; i < T.size(); ++i)
+  {
+    const Point_2 p = get(wuv, nodes[nbn + i]);
+    if(!(p.x() == T[i].x() && p.y() == T[i].y()))
+    {
+      stats.max_constraint_error = std::max(stats.max_constraint_error,
+        std::sqrt(CGAL::to_double(CGAL::squared_distance(p, T[i]))));
+    }
+  }
+  for(std::size_t k = 0; k < nb; ++k)
+  {
+    const Point_2 p = get(wuv, wborder[k]);
+    if(!(p.x() == Bfull[k].x() && p.y() == Bfull[k].y())) return finish(ERROR_INVALID_EMBEDDING);
+  }
+  if(stats.max_constraint_error != 0) return finish(ERROR_INVALID_EMBEDDING);
+
+  // ---- 6. replay the refinement on tm, write the uv ------------------------------------------
+  const double t_out = timer.time();
+  std::vector<internal::Edge_split<wvertex, double> > splits;
+  splits.reserve(steiner.size());
+  std::vector<internal::Steiner_vertex<Work> > kept; // Steiner vertices inside a hole were removed with it
+  for(const auto& s : steiner)
+    if(!work.is_removed(s.v))
+    {
+      kept.push_back(s);
+      splits.push_back(internal::Edge_split<wvertex, double>{ s.a, s.b, s.v, s.t });
+    }
+  steiner.swap(kept);
+  stats.steiner_vertices = steiner.size();
+  std::unordered_map<wvertex, vertex_descriptor> copy_to_mesh(to_mesh);
+  auto midpoint = [](const Point_3& a, const Point_3& b, double) { return K3().construct_midpoint_3_object()(a, b); };
+  // the steiner points on the input surface, computed before tm changes
+  typedef internal::Surface_position<vertex_descriptor, double> Position;
+  std::unordered_map<wvertex, Position> position;
+  if(steiner_out)
+    for(const auto& p : to_mesh) position.emplace(p.first, Position::vertex(p.second));
+  std::vector<Position> steiner_positions;
+  if(steiner_out)
+    for(const auto& s : steiner)
+    {
+      Position q;
+      const auto ia = position.find(s.a), ib = position.find(s.b);
+      if(ia == position.end() || ib == position.end() || !Position::combine(ia->second, ib->second, s.t, q))
+        q = Position(); // not on one input face: cannot happen (kept splits are on the input surface)
+      position[s.v] = q;
+      steiner_positions.push_back(q);
+    }
+  ec = internal::replay_splits(splits, tm, vpm, copy_to_mesh, midpoint);
+  if(ec != OK) return finish(ec); // cannot happen: tm has the copy's connectivity
+  for(wvertex v : vertices(work))
+  {
+    const Point_2 p = get(wuv, v);
+    put(uvm, copy_to_mesh.at(v), mirrored ? mirror(p) : p);
+  }
+  if(mirrored) stats.report.clockwise = !stats.report.clockwise;
+  if(steiner_out)
+  {
+    steiner_out->clear();
+    for(std::size_t i = 0; i < steiner.size(); ++i)
+    {
+      Steiner_point<vertex_descriptor> sp;
+      sp.vertex = copy_to_mesh.at(steiner[i].v);
+      sp.size = steiner_positions[i].size;
+      for(std::size_t k = 0; k < sp.size; ++k)
+      {
+        sp.corners[k] = steiner_positions[i].corners[k];
+        sp.weights[k] = steiner_positions[i].weights[k];
+      }
+      steiner_out->push_back(sp);
+    }
+  }
+  stats.output_vertices = static_cast<std::size_t>(work.number_of_vertices());
+  stats.seconds_output = timer.time() - t_out;
+  if(verbose) std::cerr << "[constrained_embedding] " << stats.report.summary() << std::endl;
+  return finish(OK);
+}
+
+} // namespace Progressive_embedding
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_PROGRESSIVE_EMBEDDING_CONSTRAINED_EMBEDDING_H

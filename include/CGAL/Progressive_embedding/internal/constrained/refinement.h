@@ -1,0 +1,124 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+#ifndef CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CONSTRAINED_REFINEMENT_H
+#define CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CONSTRAINED_REFINEMENT_H
+
+// Constrained maps refine a working copy of the user's mesh (so that a failure leaves the user's
+// mesh untouched), then replay the refinement on the user's mesh. The only refinement is the
+// split of an edge at a parameter t, followed by the split of each (now quadrilateral) incident
+// face by the one diagonal that joins the new vertex to the opposite corner: the result is
+// determined by the split edge alone, so replaying the splits in the same order on a mesh with
+// the same connectivity gives the same mesh.
+//
+// Each vertex of a refined mesh lies on the input surface: it is a convex combination of at most
+// three input vertices of one input face (an input vertex is itself, a point on an input edge a
+// combination of the edge's two endpoints). Surface_position keeps that combination, so that
+// attributes can be interpolated.
+
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/Progressive_embedding/Error_code.h>
+
+#include <array>
+#include <cstddef>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Progressive_embedding {
+namespace internal {
+
+// a convex combination of at most three input vertices
+template <class Vertex, class FT>
+struct Surface_position
+{
+  std::array<Vertex, 3> corners;
+  std::array<FT, 3> weights;
+  std::size_t size = 0;
+
+  static Surface_position vertex(Vertex v)
+  {
+    Surface_position p;
+    p.corners[0] = v; p.weights[0] = FT(1); p.size = 1;
+    return p;
+  }
+
+  // (1 - t) a + t b, merging equal corners; false if the support exceeds three vertices
+  // (the two points are not on one input face: the caller split an edge that crosses input faces)
+  static bool combine(const Surface_position& a, const Surface_position& b, const FT& t, Surface_position& out)
+  {
+    out = Surface_position();
+    auto add = [&out](Vertex v, const FT& w) -> bool {
+      for(std::size_t i = 0; i < out.size; ++i)
+        if(out.corners[i] == v) { out.weights[i] += w; return true; }
+      if(out.size == 3) return false;
+      out.corners[out.size] = v; out.weights[out.size] = w; ++out.size;
+      return true;
+    };
+    const FT s = FT(1) - t;
+    for(std::size_t i = 0; i < a.size; ++i) if(!add(a.corners[i], s * a.weights[i])) return false;
+    for(std::size_t i = 0; i < b.size; ++i) if(!add(b.corners[i], t * b.weights[i])) return false;
+    return true;
+  }
+};
+
+// One edge split of a refinement: the edge (a, b) as it was when split, the parameter t of the
+// new vertex (position (1 - t) a + t b), and the new vertex.
+template <class Vertex, class FT>
+struct Edge_split
+{
+  Vertex a, b, v;
+  FT t;
+};
+
+// Splits the edge of halfedge h at `point` (the new vertex's point), then splits each incident
+// quadrilateral face by the diagonal from the new vertex to its opposite corner. Returns a halfedge
+// whose target is the new vertex.
+template <class TriangleMesh, class VertexPointMap, class Point>
+typename boost::graph_traits<TriangleMesh>::halfedge_descriptor
+split_edge_and_faces(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, const Point& point,
+                     TriangleMesh& tm, VertexPointMap vpm)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  // split_edge(h) inserts the new vertex before target(h): the returned halfedge ends at it
+  const halfedge_descriptor hnew = CGAL::Euler::split_edge(h, tm);
+  put(vpm, target(hnew, tm), point);
+  // the two faces of the new vertex's edges are quadrilaterals (unless border)
+  for(halfedge_descriptor hs : { hnew, opposite(next(hnew, tm), tm) })
+  {
+    if(is_border(hs, tm)) continue;
+    // hs ends at the new vertex; next(next(hs)) ends at the corner opposite to it
+    CGAL::Euler::split_face(hs, next(next(hs, tm), tm), tm);
+  }
+  return hnew;
+}
+
+// Replays `splits` (made on a copy whose vertex `copy_to_mesh` maps to the user's mesh) on `tm`:
+// each split edge is found by its two endpoints. `copy_to_mesh` receives the new vertices.
+// ERROR_WRONG_PARAMETER if an edge is missing (the meshes did not have the same connectivity).
+template <class TriangleMesh, class VertexPointMap, class CopyVertex, class FT, class Point_of_split>
+Error_code replay_splits(const std::vector<Edge_split<CopyVertex, FT> >& splits, TriangleMesh& tm, VertexPointMap vpm,
+                         std::unordered_map<CopyVertex, typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& copy_to_mesh,
+                         const Point_of_split& point_of_split)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  for(const Edge_split<CopyVertex, FT>& s : splits)
+  {
+    const auto ia = copy_to_mesh.find(s.a), ib = copy_to_mesh.find(s.b);
+    if(ia == copy_to_mesh.end() || ib == copy_to_mesh.end()) return ERROR_WRONG_PARAMETER;
+    const std::pair<halfedge_descriptor, bool> h = halfedge(ia->second, ib->second, tm);
+    if(!h.second) return ERROR_WRONG_PARAMETER;
+    const halfedge_descriptor hn = split_edge_and_faces(h.first, point_of_split(get(vpm, ia->second), get(vpm, ib->second), s.t), tm, vpm);
+    copy_to_mesh[s.v] = target(hn, tm);
+  }
+  return OK;
+}
+
+} // namespace internal
+} // namespace Progressive_embedding
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CONSTRAINED_REFINEMENT_H

@@ -1,0 +1,8 @@
+# constrained_embedding(): the public function of constrained maps (partition, tracing, patches, certificate, replay)
+pe_constrained_test(constrained_embedding_disks "constrained;matchmaker" 900)
+pe_constrained_test(constrained_embedding_shapes "constrained;matchmaker" 600)
+pe_constrained_test(constrained_embedding_cut_closed "constrained;matchmaker" 600)
+pe_constrained_test(constrained_embedding_polyhedron "constrained;matchmaker")
+pe_constrained_test(constrained_embedding_gmpq "constrained;matchmaker")
+pe_constrained_test(constrained_embedding_errors "constrained;matchmaker")
+pe_constrained_test(constrained_embedding_holes "constrained;matchmaker;holes" 600)

@@ -1,0 +1,464 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+// constrained_embedding(): certified maps with hard positional constraints on real disks and cut
+// closed meshes, border fixed or shaped, every error code with the caller's mesh and uv untouched,
+// Polyhedron_3 and exact rationals.
+
+#include <CGAL/Progressive_embedding/constrained_embedding.h>
+#include <CGAL/Progressive_embedding/tutte_embedding.h>
+#include <CGAL/Progressive_embedding/check_embedding.h>
+
+#include "registry.h"
+#include "../test_util.h"
+#include "../protocols.h"
+
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/generators.h>
+#include <CGAL/Polygon_2_algorithms.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace PE = CGAL::Progressive_embedding;
+
+// a snapshot of a mesh and its uv: vertices in order, their 3D points and uv (to check "unchanged")
+template <class Mesh, class UVM>
+struct Snapshot
+{
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> verts;
+  std::vector<typename boost::property_traits<typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type> points;
+  std::vector<typename boost::property_traits<UVM>::value_type> uv;
+  std::size_t faces = 0;
+  Snapshot(const Mesh& m, const UVM& uvm)
+  {
+    for(auto v : vertices(m)) { verts.push_back(v); points.push_back(get(CGAL::vertex_point, m, v)); uv.push_back(get(uvm, v)); }
+    faces = count_faces(m);
+  }
+  bool same_mesh(const Mesh& m) const
+  {
+    std::size_t i = 0;
+    for(auto v : vertices(m))
+    {
+      if(i >= verts.size() || verts[i] != v || !(points[i] == get(CGAL::vertex_point, m, v))) return false;
+      ++i;
+    }
+    return i == verts.size() && faces == count_faces(m);
+  }
+  // the original vertices come first, with their descriptors and 3D points
+  bool originals_first(const Mesh& m) const
+  {
+    std::size_t i = 0;
+    for(auto v : vertices(m))
+    {
+      if(i == verts.size()) break;
+      if(verts[i] != v || !(points[i] == get(CGAL::vertex_point, m, v))) return false;
+      ++i;
+    }
+    return i == verts.size();
+  }
+  bool same_uv(const Mesh& m, const UVM& uvm) const
+  {
+    std::size_t i = 0;
+    for(auto v : vertices(m))
+    {
+      if(i >= uv.size() || !(uv[i] == get(uvm, v))) return false;
+      ++i;
+    }
+    return true;
+  }
+};
+
+// border uv: the given shape by tutte_embedding (the interior uv is irrelevant)
+template <class Mesh, class UVM>
+bool shaped_border(const Mesh& m, UVM& uv, PE::Border_shape shape)
+{
+  return PE::tutte_embedding(m, boost::graph_traits<Mesh>::null_halfedge(), uv, PE::parameters::border_shape(shape)) == PE::OK;
+}
+
+// n seeded random interior vertices with targets strictly inside the border polygon: uniformly random
+// points of the polygon (rejection in its bounding box) pulled halfway to its centroid; or, with
+// `consistent`, the vertices' own positions in the current uv map (a Tutte map) pulled 2% towards the
+// centroid, slightly jittered (landmarks roughly consistent with the surface, as in practice)
+template <class K, class Mesh, class UVM>
+std::vector<std::pair<typename boost::graph_traits<Mesh>::vertex_descriptor, typename K::Point_2> >
+random_constraints(const Mesh& m, const UVM& uv, std::size_t n, unsigned seed, bool consistent = false)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor VD;
+  typedef Epick::Point_2 P;
+  std::vector<P> border;
+  for(auto h : halfedges(m))
+    if(CGAL::is_border(h, m))
+    {
+      for(auto g : CGAL::halfedges_around_face(h, m))
+        border.push_back(P(CGAL::to_double(get(uv, target(g, m)).x()), CGAL::to_double(get(uv, target(g, m)).y())));
+      break;
+    }
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300, cx = 0, cy = 0;
+  for(const P& p : border)
+  {
+    x0 = std::min(x0, p.x()); x1 = std::max(x1, p.x()); y0 = std::min(y0, p.y()); y1 = std::max(y1, p.y());
+    cx += p.x() / border.size(); cy += p.y() / border.size();
+  }
+  std::vector<VD> interior;
+  for(auto v : vertices(m)) if(!CGAL::is_border(v, m)) interior.push_back(v);
+  std::mt19937 rng(seed);
+  std::shuffle(interior.begin(), interior.end(), rng);
+  std::uniform_real_distribution<double> U(0, 1), J(-1e-3, 1e-3);
+  std::vector<std::pair<VD, typename K::Point_2> > c;
+  for(std::size_t i = 0; i < n && i < interior.size(); ++i)
+  {
+    double x, y;
+    if(consistent)
+    {
+      x = cx + 0.98 * (CGAL::to_double(get(uv, interior[i]).x()) - cx) + J(rng) * (x1 - x0);
+      y = cy + 0.98 * (CGAL::to_double(get(uv, interior[i]).y()) - cy) + J(rng) * (y1 - y0);
+    }
+    else
+    {
+      P q;
+      for(int tries = 0; tries < 1000; ++tries)
+      {
+        q = P(x0 + U(rng) * (x1 - x0), y0 + U(rng) * (y1 - y0));
+        if(CGAL::bounded_side_2(border.begin(), border.end(), q, Epick()) == CGAL::ON_BOUNDED_SIDE) break;
+      }
+      x = cx + 0.5 * (q.x() - cx);
+      y = cy + 0.5 * (q.y() - cy);
+    }
+    c.emplace_back(interior[i], point<K>(x, y));
+  }
+  return c;
+}
+
+// runs constrained_embedding and checks everything it promises
+template <class K, class Mesh>
+int run_case(Mesh& m, std::size_t n, unsigned seed, const std::string& what, bool fixed_border,
+             PE::Border_shape shape = PE::Border_shape::SQUARE, bool consistent = false, std::size_t max_steiner = 0)
+{
+  typedef typename K::Point_2 Point_2;
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor VD;
+  auto uv = make_uv_map(m, Point_2());
+  for(auto v : vertices(m)) put(uv, v, point<K>(0, 0));
+  CHECK(shaped_border(m, uv, shape), "border placed");
+  const auto C = random_constraints<K>(m, uv, n, seed, consistent);
+  CHECK(C.size() == n, "enough interior vertices");
+  const Snapshot<Mesh, decltype(uv)> before(m, uv);
+  PE::Constrained_embedding_statistics st;
+  std::vector<PE::Steiner_point<VD> > sp;
+  if(max_steiner == 0) max_steiner = 4 * static_cast<std::size_t>(num_edges(m)) + 1000; // the default
+  const PE::Error_code ec = fixed_border
+    ? PE::constrained_embedding(m, C, uv, PE::parameters::statistics(&st, PE::parameters::steiner_points(&sp,
+                                            PE::parameters::maximum_steiner_vertices(max_steiner))))
+    : PE::constrained_embedding(m, C, uv, PE::parameters::statistics(&st, PE::parameters::steiner_points(&sp,
+                                            PE::parameters::maximum_steiner_vertices(max_steiner,
+                                            PE::parameters::border_shape(shape)))));
+  std::cout << what << (consistent ? " consistent" : " random") << " n=" << n << " seed " << seed << ": " << PE::get_error_message(ec) << ", vertices "
+            << st.input_vertices << " -> " << st.output_vertices << ", Steiner " << st.steiner_vertices << " ("
+            << st.chord_splits << " chord splits), paths " << st.paths << ", patches " << st.patches << " ("
+            << st.repaired_patches << " repaired), seconds: trace " << st.seconds_tracing << ", patches "
+            << st.seconds_patches << ", optimize " << st.seconds_optimization << ", total " << st.seconds_total
+            << "; mean energy " << st.report_before_optimization.mean_energy_3d << " -> " << st.report.mean_energy_3d
+            << std::endl;
+  CHECK(ec == PE::OK, "constrained_embedding OK");
+  const PE::Embedding_report r = PE::check_embedding(m, uv);
+  CHECK(r.is_valid() && r.flipped == 0 && r.degenerate == 0 && r.overlapping_pairs == 0 && r.non_finite == 0,
+        "certified valid on the caller's mesh");
+  CHECK(st.report.is_valid() && st.report_before_optimization.is_valid(), "certificates in the statistics");
+  const std::size_t nv = static_cast<std::size_t>(std::distance(vertices(m).begin(), vertices(m).end()));
+  CHECK(nv == before.verts.size() + st.steiner_vertices && st.output_vertices == nv, "Steiner count reported");
+  CHECK(sp.size() == st.steiner_vertices, "one surface position per Steiner vertex");
+  CHECK(before.originals_first(m), "original vertices first, same descriptors and 3D points");
+  CHECK(st.max_constraint_error == 0, "max constraint error 0");
+  for(const auto& c : C)
+    CHECK(get(uv, c.first) == c.second, "constraint bit-exact");
+  if(fixed_border)
+  {
+    std::size_t i = 0;
+    for(auto v : vertices(m))
+    {
+      if(i == before.verts.size()) break;
+      if(CGAL::is_border(v, m)) CHECK(get(uv, v) == before.uv[i], "border bit-exact (FIXED)");
+      ++i;
+    }
+  }
+  // every Steiner point is the convex combination it claims (exactly: dyadic weights, midpoints)
+  for(const auto& s : sp)
+  {
+    CHECK(s.size >= 1 && s.size <= 3, "Steiner point support");
+    double w = 0;
+    for(std::size_t k = 0; k < s.size; ++k) { w += s.weights[k]; CHECK(s.weights[k] > 0, "positive weight"); }
+    CHECK(w == 1, "weights sum to 1");
+  }
+  return EXIT_SUCCESS;
+}
+
+template <class Mesh>
+int disk_cases(const std::string& file, const std::vector<std::size_t>& counts, bool fixed_border,
+               PE::Border_shape shape = PE::Border_shape::SQUARE, bool consistent = false)
+{
+  Mesh m0;
+  if(!read_mesh(file, m0)) return EXIT_FAILURE;
+  const std::string name = file.substr(file.find_last_of('/') + 1);
+  for(std::size_t n : counts)
+  {
+    Mesh m = m0;
+    RUN((run_case<Epick>(m, n, static_cast<unsigned>(n) + 7, name + (fixed_border ? " fixed" : " shape"), fixed_border, shape, consistent)));
+  }
+  return EXIT_SUCCESS;
+}
+
+} // namespace
+
+PE_TEST_GROUP(constrained_embedding_disks)
+{
+  RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/mushroom.off", { 1, 3, 10 }, true));
+  RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/lion-head.off", { 1, 3, 10 }, true));
+  RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/three_peaks.off", { 1, 3, 10 }, true));
+  // 50 landmarks roughly consistent with the surface (50 random targets tangle the paths: see the budget test)
+  RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/mushroom.off", { 50 }, true, PE::Border_shape::SQUARE, true));
+  RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/lion-head.off", { 50 }, true, PE::Border_shape::SQUARE, true));
+  return EXIT_SUCCESS;
+}
+
+PE_TEST_GROUP(constrained_embedding_shapes)
+{
+  RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/mushroom.off", { 3, 10 }, false, PE::Border_shape::CIRCLE));
+  RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/lion-head.off", { 10 }, false, PE::Border_shape::SQUARE));
+  RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/lion-head.off", { 10 }, false, PE::Border_shape::CIRCLE));
+  // the slanted sides of a triangle are straight only up to rounding: the nodes are the hull's corners
+  RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/mushroom.off", { 3, 10 }, false, PE::Border_shape::TRIANGLE));
+  RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/three_peaks.off", { 10 }, false, PE::Border_shape::TRIANGLE));
+  return EXIT_SUCCESS;
+}
+
+PE_TEST_GROUP(constrained_embedding_cut_closed)
+{
+  Surface_mesh m0;
+  if(!read_mesh(data_dir + "/meshes/cow.off", m0)) return EXIT_FAILURE;
+  std::array<boost::graph_traits<Surface_mesh>::vertex_descriptor, 3> pinned;
+  CHECK(PE::internal::thingi_cut(m0, 1u, pinned) == PE::OK, "cut open");
+  m0.collect_garbage();
+  for(std::size_t n : { 1, 3, 10 })
+  {
+    Surface_mesh m = m0;
+    RUN((run_case<Epick>(m, n, 11u + static_cast<unsigned>(n), "cow cut", true, PE::Border_shape::CIRCLE)));
+  }
+  return EXIT_SUCCESS;
+}
+
+namespace {
+
+// a disk with holes: on a multiply connected mesh, border on the unit square (border_shape), targets
+// random in its middle; certified with multiply_connected(true), the hole loops kept
+template <class Mesh>
+int holes_case(Mesh& m, std::size_t n, unsigned seed, const std::string& what, std::size_t cycles)
+{
+  typedef Epick::Point_2 Point_2;
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor VD;
+  auto uv = make_uv_map(m, Point_2());
+  for(auto v : vertices(m)) put(uv, v, Point_2(0, 0));
+  std::vector<VD> interior;
+  for(auto v : vertices(m)) if(!CGAL::is_border(v, m)) interior.push_back(v);
+  std::mt19937 rng(seed);
+  std::shuffle(interior.begin(), interior.end(), rng);
+  std::uniform_real_distribution<double> U(0.25, 0.75);
+  std::vector<std::pair<VD, Point_2> > C;
+  for(std::size_t i = 0; i < n; ++i) C.emplace_back(interior[i], Point_2(U(rng), U(rng)));
+  const Snapshot<Mesh, decltype(uv)> before(m, uv);
+  std::size_t border_before = 0;
+  for(auto h : halfedges(m)) if(CGAL::is_border(h, m)) ++border_before;
+  PE::Constrained_embedding_statistics st;
+  std::vector<PE::Steiner_point<VD> > sp;
+  const PE::Error_code ec = PE::constrained_embedding(m, C, uv, PE::parameters::statistics(&st,
+                              PE::parameters::steiner_points(&sp, PE::parameters::border_shape(PE::Border_shape::SQUARE))));
+  std::cout << what << " n=" << n << " seed " << seed << ": " << PE::get_error_message(ec) << ", vertices "
+            << st.input_vertices << " -> " << st.output_vertices << ", Steiner " << st.steiner_vertices << ", paths "
+            << st.paths << ", patches " << st.patches << ", seconds " << st.seconds_total << std::endl;
+  if(ec != PE::OK)
+    std::cout << "  before optimization: " << st.report_before_optimization.summary() << "\n  after: " << st.report.summary() << std::endl;
+  CHECK(ec == PE::OK, "constrained_embedding OK with holes");
+  const PE::Embedding_report r = PE::check_embedding(m, uv, PE::parameters::multiply_connected(true));
+  std::cout << "  " << r.summary() << std::endl;
+  CHECK(r.is_valid() && r.flipped == 0 && r.degenerate == 0 && r.overlapping_pairs == 0 && r.border_cycles == cycles,
+        "certified valid, multiply connected, every loop kept");
+  const std::size_t nv = static_cast<std::size_t>(std::distance(vertices(m).begin(), vertices(m).end()));
+  CHECK(nv == before.verts.size() + st.steiner_vertices && sp.size() == st.steiner_vertices, "Steiner count reported");
+  CHECK(before.originals_first(m), "original vertices first, same descriptors and 3D points");
+  for(const auto& c : C) CHECK(get(uv, c.first) == c.second, "constraint bit-exact");
+  return EXIT_SUCCESS;
+}
+
+} // namespace
+
+PE_TEST_GROUP(constrained_embedding_holes)
+{
+  {
+    // a real mesh with 7 border cycles (genus 0)
+    Surface_mesh m0;
+    if(!read_mesh(data_dir + "/meshes/holes.off", m0)) return EXIT_FAILURE;
+    for(std::size_t n : { 1, 3, 10 })
+    {
+      Surface_mesh m = m0;
+      RUN(holes_case(m, n, 3u + static_cast<unsigned>(n), "holes.off", 7));
+    }
+  }
+  {
+    // three holes cut in a disk: the faces around three interior vertices removed
+    Surface_mesh m;
+    if(!read_mesh(data_dir + "/meshes/mushroom.off", m)) return EXIT_FAILURE;
+    std::vector<boost::graph_traits<Surface_mesh>::vertex_descriptor> centers;
+    for(auto v : vertices(m))
+    {
+      if(centers.size() == 3) break;
+      bool far = !CGAL::is_border(v, m);
+      for(auto w : CGAL::vertices_around_target(v, m)) if(CGAL::is_border(w, m)) far = false;
+      for(auto c : centers)
+        for(auto w : CGAL::vertices_around_target(c, m))
+          for(auto x : CGAL::vertices_around_target(w, m)) if(x == v || w == v) far = false;
+      if(far && v.idx() % 500 == 100) centers.push_back(v);
+    }
+    CHECK(centers.size() == 3, "three hole centers");
+    for(auto c : centers)
+    {
+      std::vector<boost::graph_traits<Surface_mesh>::face_descriptor> F;
+      for(auto f : CGAL::faces_around_target(halfedge(c, m), m)) F.push_back(f);
+      for(auto f : F) CGAL::Euler::remove_face(halfedge(f, m), m);
+    }
+    m.collect_garbage();
+    RUN(holes_case(m, 10, 5u, "mushroom with 3 holes", 4));
+  }
+  return EXIT_SUCCESS;
+}
+
+PE_TEST_GROUP(constrained_embedding_polyhedron)
+{
+  Polyhedron m;
+  if(!read_mesh(data_dir + "/meshes/mushroom.off", m)) return EXIT_FAILURE;
+  RUN((run_case<Epick>(m, 10, 3u, "mushroom Polyhedron_3", true)));
+  return EXIT_SUCCESS;
+}
+
+PE_TEST_GROUP(constrained_embedding_gmpq)
+{
+  // a small triangulated grid disk, uv in exact rationals
+  Surface_mesh m;
+  const int N = 6;
+  std::vector<boost::graph_traits<Surface_mesh>::vertex_descriptor> V;
+  for(int j = 0; j <= N; ++j)
+    for(int i = 0; i <= N; ++i)
+      V.push_back(m.add_vertex(Epick::Point_3(i, j, 0.1 * ((i * j) % 3))));
+  for(int j = 0; j < N; ++j)
+    for(int i = 0; i < N; ++i)
+    {
+      const auto a = V[j * (N + 1) + i], b = V[j * (N + 1) + i + 1], c = V[(j + 1) * (N + 1) + i + 1], d = V[(j + 1) * (N + 1) + i];
+      m.add_face(a, b, c);
+      m.add_face(a, c, d);
+    }
+  RUN((run_case<Kq>(m, 3, 5u, "grid Gmpq", true)));
+  return EXIT_SUCCESS;
+}
+
+PE_TEST_GROUP(constrained_embedding_errors)
+{
+  typedef Epick::Point_2 Point_2;
+  typedef boost::graph_traits<Surface_mesh>::vertex_descriptor VD;
+  Surface_mesh m;
+  if(!read_mesh(data_dir + "/meshes/mushroom.off", m)) return EXIT_FAILURE;
+  auto uv = make_uv_map(m, Point_2());
+  CHECK(shaped_border(m, uv, PE::Border_shape::SQUARE), "border placed");
+  auto C = random_constraints<Epick>(m, uv, 3, 1u);
+  VD bv;
+  for(auto v : vertices(m)) if(CGAL::is_border(v, m)) { bv = v; break; }
+  const Snapshot<Surface_mesh, decltype(uv)> before(m, uv);
+  auto expect = [&](std::vector<std::pair<VD, Point_2> > c, PE::Error_code code, const char* what) -> int
+  {
+    const PE::Error_code ec = PE::constrained_embedding(m, c, uv);
+    std::cout << what << ": " << PE::get_error_message(ec) << std::endl;
+    CHECK(ec == code, what);
+    CHECK(before.same_mesh(m) && before.same_uv(m, uv), "mesh and uv unchanged");
+    return EXIT_SUCCESS;
+  };
+  { auto c = C; c[1].first = bv; RUN(expect(c, PE::ERROR_CONSTRAINT_ON_BORDER, "constraint on border")); }
+  { auto c = C; c[2].first = c[0].first; RUN(expect(c, PE::ERROR_DUPLICATE_CONSTRAINT, "same vertex twice")); }
+  { auto c = C; c[2].second = c[0].second; RUN(expect(c, PE::ERROR_DUPLICATE_CONSTRAINT, "same target twice")); }
+  { auto c = C; c[1].second = Point_2(std::numeric_limits<double>::quiet_NaN(), 0.5); RUN(expect(c, PE::ERROR_NON_FINITE_COORDINATES, "NaN target")); }
+  { auto c = C; c[1].second = Point_2(5, 5); RUN(expect(c, PE::ERROR_CONSTRAINT_OUTSIDE_DOMAIN, "target outside")); }
+  { auto c = C; c[1].second = get(uv, bv); RUN(expect(c, PE::ERROR_CONSTRAINT_OUTSIDE_DOMAIN, "target on the border")); }
+  {
+    // a non-convex fixed border
+    auto uv2 = make_uv_map(m, Point_2());
+    for(auto v : vertices(m)) put(uv2, v, get(uv, v));
+    put(uv2, bv, Point_2(0.5, 0.5));
+    const PE::Error_code ec = PE::constrained_embedding(m, C, uv2);
+    std::cout << "non-convex border: " << PE::get_error_message(ec) << std::endl;
+    CHECK(ec == PE::ERROR_NON_CONVEX_BORDER || ec == PE::ERROR_DEGENERATE_BORDER, "non-convex border refused");
+    CHECK(before.same_mesh(m), "mesh unchanged");
+  }
+  {
+    // a closed mesh: not a disk
+    Surface_mesh closed;
+    if(!read_mesh(data_dir + "/meshes/cow.off", closed)) return EXIT_FAILURE;
+    auto uvc = make_uv_map(closed, Point_2());
+    std::vector<std::pair<VD, Point_2> > none;
+    const std::size_t nv = closed.number_of_vertices();
+    CHECK(PE::constrained_embedding(closed, none, uvc) == PE::ERROR_NOT_A_DISK, "closed mesh refused");
+    CHECK(closed.number_of_vertices() == nv, "closed mesh unchanged");
+  }
+  {
+    // one border cycle, genus 3 (a closed genus-3 mesh cut open)
+    Surface_mesh g3;
+    if(!read_mesh(data_dir + "/meshes/elephant.off", g3)) return EXIT_FAILURE;
+    std::array<VD, 3> pinned;
+    CHECK(PE::internal::thingi_cut(g3, 1u, pinned) == PE::OK, "cut open");
+    auto uvg = make_uv_map(g3, Point_2());
+    std::vector<std::pair<VD, Point_2> > none;
+    const PE::Error_code ec = PE::constrained_embedding(g3, none, uvg, PE::parameters::border_shape(PE::Border_shape::CIRCLE));
+    std::cout << "genus 3: " << PE::get_error_message(ec) << std::endl;
+    CHECK(ec == PE::ERROR_NOT_GENUS_ZERO, "higher genus refused");
+  }
+  {
+    // several border cycles on a genus-3 surface
+    Surface_mesh holes;
+    if(!read_mesh(data_dir + "/meshes/elephant-with-holes.off", holes)) return EXIT_FAILURE;
+    auto uvh = make_uv_map(holes, Point_2());
+    std::vector<std::pair<VD, Point_2> > none;
+    const std::size_t nv = holes.number_of_vertices();
+    const PE::Error_code ec = PE::constrained_embedding(holes, none, uvh, PE::parameters::border_shape(PE::Border_shape::SQUARE));
+    std::cout << "106 border cycles, genus 3: " << PE::get_error_message(ec) << std::endl;
+    CHECK(ec == PE::ERROR_NOT_GENUS_ZERO, "several border cycles, higher genus refused");
+    CHECK(holes.number_of_vertices() == nv, "mesh unchanged");
+  }
+  {
+    // a time budget of zero
+    const PE::Error_code ec = PE::constrained_embedding(m, C, uv, CGAL::parameters::maximum_running_time(0.));
+    CHECK(ec == PE::ERROR_BUDGET_EXHAUSTED, "no time");
+    CHECK(before.same_mesh(m) && before.same_uv(m, uv), "mesh and uv unchanged");
+    CHECK(PE::constrained_embedding(m, C, uv, CGAL::parameters::maximum_running_time(-1.)) == PE::ERROR_WRONG_PARAMETER,
+          "negative time");
+  }
+  {
+    // 50 random targets tangle the paths: a small Steiner budget runs out, nothing is changed
+    auto c50 = random_constraints<Epick>(m, uv, 50, 57u);
+    const PE::Error_code ec = PE::constrained_embedding(m, c50, uv, PE::parameters::maximum_steiner_vertices(100));
+    std::cout << "50 random targets, 100 Steiner vertices allowed: " << PE::get_error_message(ec) << std::endl;
+    CHECK(ec == PE::ERROR_BUDGET_EXHAUSTED, "Steiner budget exhausted");
+    CHECK(before.same_mesh(m) && before.same_uv(m, uv), "mesh and uv unchanged");
+  }
+  // no constraint: the (certified) Tutte map with the border fixed
+  {
+    Surface_mesh m2 = m;
+    auto uv3 = make_uv_map(m2, Point_2());
+    for(auto v : vertices(m2)) put(uv3, v, get(uv, v));
+    std::vector<std::pair<VD, Point_2> > none;
+    PE::Constrained_embedding_statistics st;
+    CHECK(PE::constrained_embedding(m2, none, uv3, PE::parameters::statistics(&st)) == PE::OK, "no constraint");
+    CHECK(st.steiner_vertices == 0 && st.patches == 1 && PE::check_embedding(m2, uv3).is_valid(), "one patch, valid");
+  }
+  return EXIT_SUCCESS;
+}

@@ -135,31 +135,6 @@ struct Steiner_point
   std::size_t size = 0;
 };
 
-#ifndef DOXYGEN_RUNNING
-namespace internal_np {
-enum steiner_points_t { steiner_points };
-} // namespace internal_np
-#endif
-
-namespace parameters {
-#ifndef DOXYGEN_RUNNING
-template <typename T>
-CGAL::Named_function_parameters<T, internal_np::steiner_points_t>
-steiner_points(const T& t)
-{ return CGAL::Named_function_parameters<T, internal_np::steiner_points_t>(t); }
-template <typename T, typename NP_T, typename NP_Tag, typename NP_Base>
-CGAL::Named_function_parameters<T, internal_np::steiner_points_t, CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base> >
-steiner_points(const T& t, const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& np)
-{ return CGAL::Named_function_parameters<T, internal_np::steiner_points_t,
-           CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base> >(t, np); }
-#else
-/// \ingroup PkgProgressiveEmbeddingNamedParameters
-/// receives, for `constrained_embedding()`, the position on the input surface of every vertex it adds
-/// (`std::vector<Steiner_point<vertex_descriptor> >*`)
-template <typename T> unspecified_type steiner_points(const T& t);
-#endif
-} // namespace parameters
-
 namespace internal {
 
 // chords of a patch that no convex-polygon map keeps: along one path or one straight side of the

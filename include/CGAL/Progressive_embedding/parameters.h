@@ -28,6 +28,14 @@ enum class Border_shape
 };
 
 /// \ingroup PkgProgressiveEmbeddingEnums
+/// The cost of a path traced on the mesh by `constrained_embedding()`.
+enum class Path_metric
+{
+  EDGE_LENGTH, ///< sum of the 3D edge lengths
+  HOP_COUNT    ///< number of edges
+};
+
+/// \ingroup PkgProgressiveEmbeddingEnums
 /// Edge weights of the Tutte system.
 enum class Weights
 {
@@ -59,6 +67,11 @@ CGAL_PE_ADD_NAMED_PARAMETER(distortion_energy)
 CGAL_PE_ADD_NAMED_PARAMETER(optimization_statistics)
 CGAL_PE_ADD_NAMED_PARAMETER(optimize)
 CGAL_PE_ADD_NAMED_PARAMETER(multiply_connected)
+CGAL_PE_ADD_NAMED_PARAMETER(maximum_steiner_vertices)
+CGAL_PE_ADD_NAMED_PARAMETER(split_penalty)
+CGAL_PE_ADD_NAMED_PARAMETER(path_metric)
+CGAL_PE_ADD_NAMED_PARAMETER(proximity_penalty)
+CGAL_PE_ADD_NAMED_PARAMETER(steiner_points)
 #undef CGAL_PE_ADD_NAMED_PARAMETER
 } // namespace internal_np
 #endif
@@ -99,8 +112,31 @@ CGAL_PE_NAMED_PARAMETER_FUNCTIONS(distortion_energy)
 CGAL_PE_NAMED_PARAMETER_FUNCTIONS(optimization_statistics)
 CGAL_PE_NAMED_PARAMETER_FUNCTIONS(optimize)
 CGAL_PE_NAMED_PARAMETER_FUNCTIONS(multiply_connected)
+CGAL_PE_NAMED_PARAMETER_FUNCTIONS(maximum_steiner_vertices)
+CGAL_PE_NAMED_PARAMETER_FUNCTIONS(split_penalty)
+CGAL_PE_NAMED_PARAMETER_FUNCTIONS(path_metric)
+CGAL_PE_NAMED_PARAMETER_FUNCTIONS(proximity_penalty)
+CGAL_PE_NAMED_PARAMETER_FUNCTIONS(steiner_points)
 #undef CGAL_PE_NAMED_PARAMETER_FUNCTIONS
 #else
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// the largest number of Steiner vertices path tracing may add (`std::size_t`; default 4 times the number of edges plus 1000)
+template <typename T> unspecified_type maximum_steiner_vertices(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// how much longer a traced path may be to avoid one edge split (`double`, in mean edge lengths, or hops with
+/// `Path_metric::HOP_COUNT`; default 4)
+template <typename T> unspecified_type split_penalty(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// the cost of traced paths (a `Path_metric`; default `Path_metric::EDGE_LENGTH`)
+template <typename T> unspecified_type path_metric(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// the extra cost of a traced path at each vertex, divided by the vertex's hop distance to the already traced
+/// network (`double`, in mean edge lengths, or hops with `Path_metric::HOP_COUNT`; default 1; 0: plain shortest paths)
+template <typename T> unspecified_type proximity_penalty(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// receives, for `constrained_embedding()`, the position on the input surface of every vertex it adds
+/// (`std::vector<Steiner_point<vertex_descriptor> >*`)
+template <typename T> unspecified_type steiner_points(const T& t);
 /// \ingroup PkgProgressiveEmbeddingNamedParameters
 /// whether `check_embedding()` accepts a connected genus-0 mesh with several border cycles (`bool`, default `false`:
 /// such a mesh is refused with `ERROR_NOT_A_DISK`, as a mesh that is not a disk)

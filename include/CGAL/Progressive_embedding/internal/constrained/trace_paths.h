@@ -105,6 +105,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Dynamic_property_map.h>
+#include <CGAL/Progressive_embedding/parameters.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Real_timer.h>
 
@@ -125,60 +126,6 @@
 
 namespace CGAL {
 namespace Progressive_embedding {
-
-/// \ingroup PkgProgressiveEmbeddingEnums
-/// The cost of a path in `internal::trace_paths()`.
-enum class Path_metric
-{
-  EDGE_LENGTH, ///< sum of the 3D edge lengths
-  HOP_COUNT    ///< number of edges
-};
-
-#ifndef DOXYGEN_RUNNING
-namespace internal_np {
-enum maximum_steiner_vertices_t { maximum_steiner_vertices };
-enum split_penalty_t { split_penalty };
-enum path_metric_t { path_metric };
-enum proximity_penalty_t { proximity_penalty };
-} // namespace internal_np
-#endif
-
-namespace parameters {
-
-#ifndef DOXYGEN_RUNNING
-#define CGAL_PE_TRACE_NAMED_PARAMETER(NAME)                                                 \
-  template <typename T>                                                                     \
-  CGAL::Named_function_parameters<T, internal_np::NAME##_t>                                 \
-  NAME(const T& t)                                                                          \
-  { return CGAL::Named_function_parameters<T, internal_np::NAME##_t>(t); }                  \
-  template <typename T, typename NP_T, typename NP_Tag, typename NP_Base>                   \
-  CGAL::Named_function_parameters<T, internal_np::NAME##_t,                                 \
-                                  CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base> >   \
-  NAME(const T& t, const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& np)        \
-  { return CGAL::Named_function_parameters<T, internal_np::NAME##_t,                        \
-             CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base> >(t, np); }
-CGAL_PE_TRACE_NAMED_PARAMETER(maximum_steiner_vertices)
-CGAL_PE_TRACE_NAMED_PARAMETER(split_penalty)
-CGAL_PE_TRACE_NAMED_PARAMETER(path_metric)
-CGAL_PE_TRACE_NAMED_PARAMETER(proximity_penalty)
-#undef CGAL_PE_TRACE_NAMED_PARAMETER
-#else
-/// \ingroup PkgProgressiveEmbeddingNamedParameters
-/// the largest number of Steiner vertices path tracing may add (`std::size_t`; default 4 times the number of edges plus 1000)
-template <typename T> unspecified_type maximum_steiner_vertices(const T& t);
-/// \ingroup PkgProgressiveEmbeddingNamedParameters
-/// how much longer a traced path may be to avoid one edge split (`double`, in mean edge lengths, or hops with
-/// `Path_metric::HOP_COUNT`; default 4)
-template <typename T> unspecified_type split_penalty(const T& t);
-/// \ingroup PkgProgressiveEmbeddingNamedParameters
-/// the cost of traced paths (a `Path_metric`; default `Path_metric::EDGE_LENGTH`)
-template <typename T> unspecified_type path_metric(const T& t);
-/// the extra cost of a traced path at each vertex, divided by the vertex's hop distance to the already traced
-/// network (`double`, in mean edge lengths, or hops with `Path_metric::HOP_COUNT`; default 1; 0: plain shortest paths)
-template <typename T> unspecified_type proximity_penalty(const T& t);
-#endif
-
-} // namespace parameters
 
 namespace internal {
 

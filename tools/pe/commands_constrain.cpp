@@ -1,0 +1,91 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+// pe constrain: a map with hard positional constraints (constrained_embedding()).
+
+#include "cli.h"
+#include "pe.h"
+
+#include <CGAL/Progressive_embedding/constrained_embedding.h>
+
+#include <cmath>
+#include <cstring>
+#include <utility>
+#include <vector>
+
+namespace pe_tool {
+
+namespace {
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
+
+} // namespace
+
+int cmd_constrain(const Arguments& a)
+{
+  Run run(a);
+  run.summary << "constrain " << a.positional[0] << ": ";
+  Input in;
+  int status = read_input(run, a.positional[0], in, Uv_mode::OPTIONAL);
+  if(status != EXIT_VALID) return status;
+  Tutte_settings s;
+  status = tutte_settings(run, in, s);
+  if(status != EXIT_VALID) return status;
+  run.result.add("output", a.positional[1]);
+  // the targets: read_constraints() writes them into in.uv; they are taken from there
+  std::vector<vertex_descriptor> fixed;
+  if(a.has("--fix"))
+  {
+    status = read_constraints(run, a.get("--fix"), in, fixed);
+    if(status != EXIT_VALID) return status;
+  }
+  std::vector<std::pair<vertex_descriptor, Point_2> > constraints;
+  for(vertex_descriptor v : fixed) constraints.emplace_back(v, in.uv[v]);
+  run.result.add("constrained", constraints.size());
+  const std::size_t vertices_in = in.mesh.number_of_vertices();
+
+  const Budget budget(a);
+  PE::Constrained_embedding_statistics st;
+  const PE::Error_code ec = PE::constrained_embedding(in.mesh, constraints, in.uv,
+    PE::parameters::border_shape(s.border,
+      PE::parameters::weights(s.weights,
+        PE::parameters::optimize(!a.has("--no-optimize"),
+          PE::parameters::statistics(&st,
+            CGAL::parameters::maximum_running_time(budget.remaining()))))));
+  run.result.add("steiner_vertices", st.steiner_vertices);
+  run.result.add("paths", st.paths);
+  run.result.add("patches", st.patches);
+  run.summary << "vertices " << vertices_in << " -> " << in.mesh.number_of_vertices() << " (" << st.steiner_vertices
+              << " Steiner), " << st.paths << " paths, " << st.patches << " patches";
+  if(ec != PE::OK) { run.summary << "; "; return run.fail(ec, "constrained embedding failed on '" + in.filename + "'"); }
+
+  // every constraint bit-exact (the function guarantees it; the tool says it from the map it writes)
+  double error = 0;
+  bool exact = true;
+  for(const auto& c : constraints)
+  {
+    const Point_2 p = in.uv[c.first];
+    if(!same_bits(p.x(), c.second.x()) || !same_bits(p.y(), c.second.y())) exact = false;
+    error = (std::max)(error, std::hypot(p.x() - c.second.x(), p.y() - c.second.y()));
+  }
+  run.result.add("constraint_error", error);
+  run.result.add("constraints_exact", exact);
+  // the new vertices are interior (border edges are never split): one `v` line each after the input's
+  if(in.has_uv)
+    for(vertex_descriptor v : in.mesh.vertices())
+      if(std::size_t(v) >= in.vt_to_v.size())
+      {
+        in.positions.push_back(in.mesh.point(v));
+        in.vt_to_v.push_back(in.positions.size() - 1);
+      }
+  run.result.add("optimized", st.optimized);
+  run.result.add("status", "OK");
+  run.result.add("seconds", run.timer.seconds());
+  run.summary << ", constraint error " << format_number(error) << ", " << seconds_string(run.timer.seconds()) << "; ";
+  if(!exact) return run.fail(PE::ERROR_INVALID_EMBEDDING, "constrained embedding of '" + in.filename + "'",
+                             "a constrained vertex is not bit-exactly at its target");
+  return write_and_finish(run, in, a.positional[1], st.report);
+}
+
+} // namespace pe_tool

@@ -127,8 +127,6 @@ int write_and_finish(Run& run, const Input& in, const std::string& obj, const PE
 
 namespace {
 
-bool same_bits(double x, double y) { return std::memcmp(&x, &y, sizeof(double)) == 0; }
-
 // the faces as lists of vertex indices, each rotated to start at its smallest index
 std::vector<std::vector<std::size_t> > face_list(const Mesh& m)
 {

@@ -16,12 +16,6 @@
 
 namespace pe_tool {
 
-namespace {
-
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
-
-} // namespace
-
 int cmd_constrain(const Arguments& a)
 {
   Run run(a);

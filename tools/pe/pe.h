@@ -14,6 +14,8 @@
 #include <CGAL/Progressive_embedding/check_embedding.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <cstring>
 #include <CGAL/Surface_mesh.h>
 
 namespace CGAL {
@@ -71,6 +73,9 @@ struct Picture
 int write_outputs(Run& run, const Input& in, const std::string& obj, const std::string& svg = std::string(),
                   const Picture& picture = Picture());
 int write_picture(Run& run, const Input& in, const std::string& svg, const Picture& picture);
+
+// the two doubles have the same bits (bit-exact positions: -0 differs from 0, NaN equals itself)
+inline bool same_bits(double x, double y) { return std::memcmp(&x, &y, sizeof(double)) == 0; }
 
 // faces(m).size(): num_faces(Surface_mesh) also counts removed faces
 std::size_t count_faces(const Mesh& m);

@@ -98,6 +98,7 @@
 // hole vertex a node) and 3, 10, 50 interior nodes: 46, 121 and 193 Steiner vertices, under 45 ms.
 
 #include <CGAL/Progressive_embedding/Error_code.h>
+#include <CGAL/Progressive_embedding/internal/constrained/refinement.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -561,8 +562,8 @@ Error_code check_traced_paths(const TM& tm,
 
 // ---- splits --------------------------------------------------------------------------------------
 
-// splits the edge of h at its midpoint and joins the new vertex to the opposite vertices of the
-// (one or two) incident triangles; returns the new vertex
+// splits the edge of h at its midpoint (refinement.h's split_edge_and_faces: the one split that
+// constrained_embedding() replays on the caller's mesh) and records the Steiner vertex
 template <class TM, class VPM>
 typename boost::graph_traits<TM>::vertex_descriptor
 split_at_midpoint(typename boost::graph_traits<TM>::halfedge_descriptor h, TM& tm, VPM vpm,
@@ -570,13 +571,8 @@ split_at_midpoint(typename boost::graph_traits<TM>::halfedge_descriptor h, TM& t
 {
   const auto a = source(h, tm), b = target(h, tm);
   const auto pa = get(vpm, a), pb = get(vpm, b);
-  const auto hnew = CGAL::Euler::split_edge(h, tm); // source(h) -> m, then h: m -> b
-  const auto m = target(hnew, tm);
   typedef typename CGAL::Kernel_traits<typename std::decay<decltype(pa)>::type>::Kernel K;
-  put(vpm, m, K().construct_midpoint_3_object()(pa, pb));
-  if(!CGAL::is_border(h, tm)) CGAL::Euler::split_face(hnew, next(h, tm), tm);
-  const auto oh = opposite(h, tm), ohnew = opposite(hnew, tm);
-  if(!CGAL::is_border(oh, tm)) CGAL::Euler::split_face(oh, next(ohnew, tm), tm);
+  const auto m = target(split_edge_and_faces(h, K().construct_midpoint_3_object()(pa, pb), tm, vpm), tm);
   steiner.push_back(Steiner_vertex<TM>{ m, a, b, 0.5 });
   return m;
 }

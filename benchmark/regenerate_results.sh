@@ -1,7 +1,7 @@
 #!/bin/sh
 # Regenerates the tables and pictures of benchmark/results (see benchmark/results/README.md).
 #
-#   benchmark/regenerate_results.sh [--build DIR] [--out DIR] [--study] [--benchmark]
+#   benchmark/regenerate_results.sh [--build DIR] [--out DIR] [--study] [--benchmark] [--constrained]
 #
 # (default)    from the committed comparison-study run (study_runs.csv.gz, study_gallery.csv): the
 #              study's tables, plot and gallery; the driver only draws the gallery runs again (under
@@ -10,6 +10,7 @@
 # --benchmark  also runs pe_benchmark again on the failing corpus runs (study_tutte_failures.tsv)
 #              and the generated grids: progressive_embedding.{csv,md} and, with --optimize,
 #              progressive_embedding_optimized.{csv,md} (tens of minutes).
+# --constrained also runs constrained_benchmark again: constrained_embedding.{csv,md} (about an hour).
 # --build DIR  the CMake build directory (default: build); the drivers are built there.
 # --out DIR    the results folder (default: benchmark/results), e.g. a copy to compare with.
 #
@@ -22,13 +23,15 @@ build="$repo/build"
 results="$repo/benchmark/results"
 study=0
 benchmark=0
+constrained=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --build) [ $# -ge 2 ] || { echo "--build needs a directory" >&2; exit 2; }; build=$2; shift 2 ;;
     --out) [ $# -ge 2 ] || { echo "--out needs a directory" >&2; exit 2; }; results=$2; shift 2 ;;
     --study) study=1; shift ;;
     --benchmark) benchmark=1; shift ;;
-    -h|--help) sed -n '2,17p' "$0"; exit 0 ;;
+    --constrained) constrained=1; shift ;;
+    -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
     *) echo "unknown option $1 (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -54,5 +57,11 @@ if [ "$benchmark" = 1 ]; then
     "$results/progressive_embedding" --repeat 3
   "$build/bin/pe_benchmark" "$build/cgal_data/data" "$results/study_tutte_failures.tsv" \
     "$results/progressive_embedding_optimized" --optimize
+fi
+if [ "$constrained" = 1 ]; then
+  cmake --build "$build" --target constrained_benchmark
+  # exits 1 when a run did not end certified (the table lists those runs): keep the tables anyway
+  "$build/bin/constrained_benchmark" "$build/cgal_data/data" "$results/constrained_embedding" \
+    --min-vertices 1000 --optimize-seeds 1 --budget 120 || true
 fi
 echo "$results regenerated"

@@ -13,6 +13,7 @@
 #include <CGAL/Progressive_embedding/Progressive_embedding_traits_2.h>
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
 #include <CGAL/Progressive_embedding/check_embedding.h>
+#include <CGAL/Progressive_embedding/check_immersion.h>
 #include <CGAL/Progressive_embedding/progressive_embedding.h>
 #include <CGAL/Progressive_embedding/embed_patch.h>
 #include <CGAL/Progressive_embedding/triangulate_self_overlapping_polygon_2.h>

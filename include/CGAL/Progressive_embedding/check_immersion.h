@@ -1,0 +1,258 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+#ifndef CGAL_PROGRESSIVE_EMBEDDING_CHECK_IMMERSION_H
+#define CGAL_PROGRESSIVE_EMBEDDING_CHECK_IMMERSION_H
+
+/// \file check_immersion.h
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Progressive_embedding/Error_code.h>
+#include <CGAL/Progressive_embedding/parameters.h>
+#include <CGAL/Progressive_embedding/Progressive_embedding_traits_2.h>
+#include <CGAL/Progressive_embedding/distortion.h>
+#include <CGAL/Progressive_embedding/internal/indexed_disk.h>
+#include <CGAL/Progressive_embedding/internal/number_utils.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+
+#include <algorithm>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Progressive_embedding {
+
+/// \ingroup PkgProgressiveEmbeddingReports
+///
+/// The exact certificate of a locally injective map (an immersion) of a disk into the plane, returned by
+/// `check_immersion()`. An immersion may overlap itself (a map onto a weakly self-overlapping border polygon
+/// does), so it is certified locally: every face has the orientation of the map, and the one-ring of every
+/// interior vertex winds exactly once around it. A valid embedding (`check_embedding()`) is an immersion; an
+/// immersion is an embedding when moreover its border is simple.
+struct Immersion_report
+{
+  /// `OK` when the map could be checked; otherwise why not (`ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH`,
+  /// `ERROR_NON_MANIFOLD`, `ERROR_NOT_A_DISK`, or `ERROR_WRONG_PARAMETER` for a border polygon of the wrong size)
+  Error_code status = OK;
+  /// number of faces
+  std::size_t faces = 0;
+  /// number of vertices
+  std::size_t vertices = 0;
+  /// number of border vertices
+  std::size_t border_vertices = 0;
+  /// `true` if the faces are clockwise (the mirror image of a counterclockwise map: then the counts below are
+  /// relative to that orientation)
+  bool clockwise = false;
+  /// faces oriented against the map (the minority orientation)
+  std::size_t flipped = 0;
+  /// faces of zero area (exact predicate)
+  std::size_t degenerate = 0;
+  /// vertices with a non-finite coordinate
+  std::size_t non_finite = 0;
+  /// interior vertices whose one-ring winds a number of times other than once around them (among the interior
+  /// vertices whose incident faces are all correctly oriented)
+  std::size_t winding_errors = 0;
+  /// largest number of turns of the one-ring of an interior vertex (1 for an immersion)
+  std::size_t max_winding = 0;
+  /// interior vertices not checked because an incident face is flipped, degenerate or not finite
+  std::size_t unchecked_vertices = 0;
+  /// with a `border_polygon`: the number of border vertices whose uv differs from the polygon's point (compared
+  /// bit-exactly, the polygon's first point at the border vertex `border_polygon_start`)
+  std::size_t border_mismatches = 0;
+
+  /// returns `true` if the map is an immersion: no flipped, degenerate or non-finite element, every interior
+  /// one-ring winding once, and (with a border polygon) the border bit-exactly the polygon
+  bool is_immersion() const
+  {
+    return status == OK && faces > 0 && flipped == 0 && degenerate == 0 && non_finite == 0 && winding_errors == 0
+        && unchecked_vertices == 0 && border_mismatches == 0;
+  }
+
+  /// returns a one-line human-readable summary
+  std::string summary() const
+  {
+    std::ostringstream os;
+    if(status != OK) { os << "not checked: " << get_error_message(status); return os.str(); }
+    os << (is_immersion() ? "immersion" : "NOT AN IMMERSION") << ": faces " << faces << ", flipped " << flipped
+       << ", degenerate " << degenerate;
+    if(non_finite) os << ", non-finite vertices " << non_finite;
+    os << ", interior one-rings not winding once " << winding_errors << " (max turns " << max_winding << ")";
+    if(unchecked_vertices) os << ", unchecked vertices " << unchecked_vertices;
+    if(border_mismatches) os << ", border vertices off the polygon " << border_mismatches;
+    return os.str();
+  }
+};
+
+namespace internal {
+
+// 0 if the direction from c to p points into the half-open upper half-plane [0, pi), 1 into [pi, 2 pi)
+// (exact: coordinate comparisons only)
+template <class Point_2>
+int direction_half(const Point_2& c, const Point_2& p)
+{
+  const CGAL::Comparison_result cy = CGAL::compare(p.y(), c.y());
+  if(cy == CGAL::LARGER) return 0;
+  if(cy == CGAL::SMALLER) return 1;
+  return CGAL::compare(p.x(), c.x()) == CGAL::LARGER ? 0 : 1;
+}
+
+} // namespace internal
+
+/// \ingroup PkgProgressiveEmbeddingMainFunctions
+///
+/// certifies exactly that the uv map `uvm` of the disk `tm` is an immersion (a locally injective map): every face
+/// strictly oriented like the map (counterclockwise, or every face clockwise for a mirror image), and the one-ring
+/// of every interior vertex winding exactly once around it. The winding is counted exactly: with every incident
+/// face correctly oriented, each face turns the direction from the vertex by an angle in (0, pi), and the number
+/// of turns is the number of faces whose turn passes the direction (1, 0) (coordinate comparisons and the exact
+/// orientation predicate only: exact in every number type, at every scale). Never throws on data.
+///
+/// Overlaps between faces far apart are allowed (a map onto a weakly self-overlapping border has them): use
+/// `check_embedding()` for a one-to-one map.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` (triangles)
+/// \tparam VertexUVMap a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///         as key type and a CGAL `Point_2` as value type
+/// \tparam PointRange a range of the uv map's `Point_2` (only for the second overload)
+/// \tparam NamedParameters a sequence of named parameters
+///
+/// \param tm the mesh, a triangulated topological disk
+/// \param uvm the uv map
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{the traits class whose exact orientation predicate decides every sign}
+///     \cgalParamType{a model of `ProgressiveEmbeddingTraits_2` whose `Point_2` is the uv map's value type}
+///     \cgalParamDefault{`Progressive_embedding_traits_2<K>`, `K` the kernel of the uv map's point type}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \return the report; the map is an immersion iff `Immersion_report::is_immersion()`
+template <typename TriangleMesh, typename VertexUVMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Immersion_report check_immersion(const TriangleMesh& tm, VertexUVMap uvm,
+                                 const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename internal::Check_traits<VertexUVMap, CGAL_NP_CLASS>::type Traits;
+  typedef typename internal::Uv_map_types<VertexUVMap>::Point_2             Point_2;
+  const Traits traits = choose_parameter<Traits>(get_parameter(np, CGAL::internal_np::geom_traits));
+  const typename Traits::Exact_orientation_2 orient = traits.exact_orientation_2_object();
+
+  Immersion_report r;
+  internal::Indexed_disk<TriangleMesh> disk;
+  r.status = internal::make_indexed_disk(tm, boost::graph_traits<TriangleMesh>::null_halfedge(), disk);
+  if(r.status != OK) return r;
+  const std::size_t nv = disk.number_of_vertices(), nf = disk.number_of_faces();
+  r.faces = nf;
+  r.vertices = nv;
+  r.border_vertices = disk.border.size();
+
+  std::vector<Point_2> P(nv);
+  std::vector<char> finite(nv, 1);
+  for(std::size_t i = 0; i < nv; ++i)
+  {
+    P[i] = get(uvm, disk.vertices[i]);
+    if(!internal::is_finite_ft(P[i].x()) || !internal::is_finite_ft(P[i].y())) { finite[i] = 0; ++r.non_finite; }
+  }
+
+  // face orientations; the map's orientation is the majority one (a mirror image is an immersion too)
+  std::vector<signed char> sign(nf, 0);
+  std::size_t positive = 0, negative = 0;
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    const auto& t = disk.faces[f];
+    if(!finite[t[0]] || !finite[t[1]] || !finite[t[2]]) { sign[f] = 2; continue; } // not decided
+    const CGAL::Orientation o = orient(P[t[0]], P[t[1]], P[t[2]]);
+    sign[f] = static_cast<signed char>(o == CGAL::POSITIVE ? 1 : o == CGAL::NEGATIVE ? -1 : 0);
+    if(o == CGAL::POSITIVE) ++positive;
+    else if(o == CGAL::NEGATIVE) ++negative;
+    else ++r.degenerate;
+  }
+  r.clockwise = negative > positive;
+  const signed char good = r.clockwise ? -1 : 1;
+  r.flipped = r.clockwise ? positive : negative;
+
+  // winding of each interior one-ring: a correctly oriented face (c, a, b) turns the direction from c by an
+  // angle in (0, pi) counterclockwise (clockwise for a mirror image); the turn passes the direction (1, 0) iff
+  // it goes from the lower half-open half-plane to the upper one (the reverse for a mirror image)
+  std::vector<std::size_t> turns(nv, 0);
+  std::vector<char> bad(nv, 0);
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    const auto& t = disk.faces[f];
+    const bool ok = sign[f] == good;
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t c = t[k], a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+      if(disk.on_border[c]) continue;
+      if(!ok) { bad[c] = 1; continue; }
+      const int ha = internal::direction_half(P[c], P[a]), hb = internal::direction_half(P[c], P[b]);
+      if(r.clockwise ? (ha == 0 && hb == 1) : (ha == 1 && hb == 0)) ++turns[c];
+    }
+  }
+  for(std::size_t i = 0; i < nv; ++i)
+  {
+    if(disk.on_border[i]) continue;
+    if(bad[i]) { ++r.unchecked_vertices; continue; }
+    r.max_winding = (std::max)(r.max_winding, turns[i]);
+    if(turns[i] != 1) ++r.winding_errors;
+  }
+  return r;
+}
+
+/// \ingroup PkgProgressiveEmbeddingMainFunctions
+///
+/// certifies that the uv map `uvm` of the disk `tm` is an immersion (as the first overload) whose border is
+/// bit-exactly the polygon `border`: the border vertex `start` at `border[0]`, and the next ones along the border
+/// (mesh interior on the left) at the next points. A polygon whose size is not the number of border vertices, or a
+/// `start` that is not a border vertex, gives `ERROR_WRONG_PARAMETER` in the report's status.
+///
+/// \param tm the mesh, a triangulated topological disk
+/// \param uvm the uv map
+/// \param start a border vertex of `tm`
+/// \param border the expected uv of the border vertices, from `start` on
+/// \param np the named parameters of the first overload
+template <typename TriangleMesh, typename VertexUVMap, typename PointRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Immersion_report check_immersion(const TriangleMesh& tm, VertexUVMap uvm,
+                                 typename boost::graph_traits<TriangleMesh>::vertex_descriptor start,
+                                 const PointRange& border,
+                                 const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  Immersion_report r = check_immersion(tm, uvm, np);
+  if(r.status != OK) return r;
+  internal::Indexed_disk<TriangleMesh> disk;
+  internal::make_indexed_disk(tm, boost::graph_traits<TriangleMesh>::null_halfedge(), disk);
+  const std::size_t n = disk.border.size();
+  if(static_cast<std::size_t>(std::distance(std::begin(border), std::end(border))) != n)
+  {
+    r.status = ERROR_WRONG_PARAMETER;
+    return r;
+  }
+  std::size_t first = n;
+  for(std::size_t k = 0; k < n; ++k) if(disk.vertices[disk.border[k]] == start) { first = k; break; }
+  if(first == n) { r.status = ERROR_WRONG_PARAMETER; return r; }
+  std::size_t k = 0;
+  for(const auto& p : border)
+  {
+    const auto q = get(uvm, disk.vertices[disk.border[(first + k) % n]]);
+    // bit-exact: equal values (and for floating point the same zero sign does not matter to the map)
+    if(!(q.x() == p.x() && q.y() == p.y())) ++r.border_mismatches;
+    ++k;
+  }
+  return r;
+}
+
+} // namespace Progressive_embedding
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_PROGRESSIVE_EMBEDDING_CHECK_IMMERSION_H

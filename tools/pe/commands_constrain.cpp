@@ -11,6 +11,8 @@
 
 #include <cmath>
 #include <cstring>
+#include <map>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -23,6 +25,9 @@ int cmd_constrain(const Arguments& a)
   Input in;
   int status = read_input(run, a.positional[0], in, Uv_mode::OPTIONAL);
   if(status != EXIT_VALID) return status;
+  // the targets are points of the domain: its border must be known, not guessed
+  if(!in.has_uv && !a.has("--border"))
+    return usage("constrain needs a border: an input OBJ with texture coordinates (vt), or --border circle|square|triangle");
   Tutte_settings s;
   status = tutte_settings(run, in, s);
   if(status != EXIT_VALID) return status;
@@ -37,16 +42,40 @@ int cmd_constrain(const Arguments& a)
   std::vector<std::pair<vertex_descriptor, Point_2> > constraints;
   for(vertex_descriptor v : fixed) constraints.emplace_back(v, in.uv[v]);
   run.result.add("constrained", constraints.size());
+  // the faults constrained_embedding() refuses, said with the vertex (read_constraints() keeps the
+  // last target of a vertex given twice, so a repeated vertex is found here, not by its targets)
+  {
+    const std::string what = "cannot use --fix '" + a.get("--fix") + "'";
+    std::set<std::size_t> vertex_seen;
+    std::map<std::pair<double, double>, std::size_t> target_seen;
+    for(vertex_descriptor v : fixed)
+    {
+      const std::string name = "vertex " + std::to_string(std::size_t(v));
+      if(CGAL::is_border(v, in.mesh))
+        return run.fail(PE::ERROR_CONSTRAINT_ON_BORDER, what, name + " is on the border: only interior vertices can be constrained");
+      if(!vertex_seen.insert(std::size_t(v)).second)
+        return run.fail(PE::ERROR_DUPLICATE_CONSTRAINT, what, name + " is constrained twice");
+      const Point_2& t = in.uv[v];
+      const auto other = target_seen.emplace(std::make_pair(t.x() == 0 ? 0. : t.x(), t.y() == 0 ? 0. : t.y()), std::size_t(v));
+      if(!other.second)
+        return run.fail(PE::ERROR_DUPLICATE_CONSTRAINT, what, name + " and vertex " + std::to_string(other.first->second) +
+                        " have the same target (" + format_number(t.x()) + ", " + format_number(t.y()) + ")");
+    }
+  }
   const std::size_t vertices_in = in.mesh.number_of_vertices();
 
   const Budget budget(a);
   PE::Constrained_embedding_statistics st;
+  Picture picture;
+  picture.has_patches = true;
+  picture.patches = in.mesh.add_property_map<face_descriptor, int>("f:pe_patch", -1).first;
   const PE::Error_code ec = PE::constrained_embedding(in.mesh, constraints, in.uv,
     PE::parameters::border_shape(s.border,
       PE::parameters::weights(s.weights,
         PE::parameters::optimize(!a.has("--no-optimize"),
           PE::parameters::statistics(&st,
-            CGAL::parameters::maximum_running_time(budget.remaining()))))));
+            PE::parameters::face_patch_map(picture.patches,
+              CGAL::parameters::maximum_running_time(budget.remaining())))))));
   run.result.add("steiner_vertices", st.steiner_vertices);
   run.result.add("paths", st.paths);
   run.result.add("patches", st.patches);
@@ -79,7 +108,12 @@ int cmd_constrain(const Arguments& a)
   run.summary << ", constraint error " << format_number(error) << ", " << seconds_string(run.timer.seconds()) << "; ";
   if(!exact) return run.fail(PE::ERROR_INVALID_EMBEDDING, "constrained embedding of '" + in.filename + "'",
                              "a constrained vertex is not bit-exactly at its target");
-  return write_and_finish(run, in, a.positional[1], st.report);
+  picture.constrained = fixed;
+  picture.color_by_distortion = false;
+  picture.title = in.filename + ": " + std::to_string(fixed.size()) + " constrained vertices, " + std::to_string(st.patches)
+                + " patches, " + std::to_string(st.steiner_vertices) + " Steiner vertices, "
+                + (st.report.is_valid() ? "valid" : "INVALID");
+  return write_and_finish(run, in, a.positional[1], st.report, a.get("--svg"), picture);
 }
 
 } // namespace pe_tool

@@ -273,16 +273,27 @@ int read_constraints(Run& run, const std::string& filename, Input& in, std::vect
     unsigned long long index = 0;
     std::string why;
     double u = 0, v = 0;
-    auto real = [](const std::string& s, double& d) {
+    // why a coordinate is refused, empty if it is a finite number
+    auto real = [](const char* name, const std::string& s, double& d) -> std::string {
       char* end = nullptr;
       errno = 0;
       d = std::strtod(s.c_str(), &end);
-      return end != s.c_str() && *end == '\0' && std::isfinite(d);
+      if(end == s.c_str() || *end != '\0') return std::string(name) + " '" + s + "' is not a number";
+      if(!std::isfinite(d)) return std::string(name) + " '" + s + "' is not finite";
+      return std::string();
     };
-    if(tokens.size() != 3 || !parse_count(tokens[0], 0, n == 0 ? 0 : n - 1, index, why) || n == 0
-       || !real(tokens[1], u) || !real(tokens[2], v))
-      return run.fail(PE::ERROR_MALFORMED_FILE, what, "line " + std::to_string(lineno) +
-                      ": expected 'vertex_index u v' with 0 <= vertex_index < " + std::to_string(n) + " and finite u, v");
+    // the line's fault, said precisely (the expected form is recalled in every message)
+    if(tokens.size() != 3) why = tokens.size() < 3 ? plural(tokens.size(), "field") : std::string("more than 3 fields");
+    else if(n == 0) why = "the mesh has no vertex";
+    else if(!parse_count(tokens[0], 0, n - 1, index, why)) why = "vertex_index " + why;
+    else
+    {
+      why = real("u", tokens[1], u);
+      if(why.empty()) why = real("v", tokens[2], v);
+    }
+    if(!why.empty())
+      return run.fail(PE::ERROR_MALFORMED_FILE, what, "line " + std::to_string(lineno) + ": " + why +
+                      " (expected 'vertex_index u v' with 0 <= vertex_index < " + std::to_string(n) + " and finite u, v)");
     const vertex_descriptor vd(static_cast<Mesh::size_type>(index));
     in.uv[vd] = Point_2(u, v);
     fixed.push_back(vd);
@@ -297,7 +308,10 @@ int write_picture(Run& run, const Input& in, const std::string& svg, const Pictu
   options.inset = picture.inset;
   // the distortion colors need 3D triangles of non-zero area: without them, plain faces
   options.color_by_distortion = picture.color_by_distortion && picture.has_3d_energy;
-  const PE::Error_code ec = PE::IO::write_SVG(svg, in.mesh, in.uv, options);
+  const PE::Error_code ec = picture.has_patches
+    ? PE::IO::write_SVG(svg, in.mesh, in.uv, options,
+        PE::parameters::face_patch_map(picture.patches, PE::parameters::constrained_vertices(picture.constrained)))
+    : PE::IO::write_SVG(svg, in.mesh, in.uv, options);
   if(ec != PE::OK) return run.fail(ec, "cannot write '" + svg + "'");
   return EXIT_VALID;
 }

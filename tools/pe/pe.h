@@ -66,6 +66,11 @@ struct Picture
   bool color_by_distortion = true;  // faces coloured by their distortion, with a legend
   bool inset = false;               // an inset zoomed on the flipped faces
   bool has_3d_energy = true;        // the certificate has 3D energies (else no distortion colors)
+  // constrain: faces filled by patch (adjacent patches in different colors), lines between
+  // patches, the constrained vertices marked
+  bool has_patches = false;
+  Mesh::Property_map<face_descriptor, int> patches;   // -1: no patch
+  std::vector<vertex_descriptor> constrained;
 };
 
 // writes the map (OBJ with uv) and, if `svg` is not empty, its picture; returns EXIT_VALID, or

@@ -72,6 +72,7 @@ CGAL_PE_ADD_NAMED_PARAMETER(split_penalty)
 CGAL_PE_ADD_NAMED_PARAMETER(path_metric)
 CGAL_PE_ADD_NAMED_PARAMETER(proximity_penalty)
 CGAL_PE_ADD_NAMED_PARAMETER(steiner_points)
+CGAL_PE_ADD_NAMED_PARAMETER(face_patch_map)
 #undef CGAL_PE_ADD_NAMED_PARAMETER
 } // namespace internal_np
 #endif
@@ -117,6 +118,7 @@ CGAL_PE_NAMED_PARAMETER_FUNCTIONS(split_penalty)
 CGAL_PE_NAMED_PARAMETER_FUNCTIONS(path_metric)
 CGAL_PE_NAMED_PARAMETER_FUNCTIONS(proximity_penalty)
 CGAL_PE_NAMED_PARAMETER_FUNCTIONS(steiner_points)
+CGAL_PE_NAMED_PARAMETER_FUNCTIONS(face_patch_map)
 #undef CGAL_PE_NAMED_PARAMETER_FUNCTIONS
 #else
 /// \ingroup PkgProgressiveEmbeddingNamedParameters
@@ -137,6 +139,10 @@ template <typename T> unspecified_type proximity_penalty(const T& t);
 /// receives, for `constrained_embedding()`, the position on the input surface of every vertex it adds
 /// (`std::vector<Steiner_point<vertex_descriptor> >*`)
 template <typename T> unspecified_type steiner_points(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// a face property map (integral values) that receives, for `constrained_embedding()`, the index of the patch of every
+/// face of the output mesh, and from which `IO::write_SVG()` colors the faces by patch and draws the patch borders
+template <typename T> unspecified_type face_patch_map(const T& t);
 /// \ingroup PkgProgressiveEmbeddingNamedParameters
 /// whether `check_embedding()` accepts a connected genus-0 mesh with several border cycles (`bool`, default `false`:
 /// such a mesh is refused with `ERROR_NOT_A_DISK`, as a mesh that is not a disk)

@@ -42,6 +42,8 @@
 #include <cstddef>
 #include <iostream>
 #include <limits>
+#include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -90,6 +92,12 @@ struct SVG_options
   double inset_size = 360;
   /// the number of distinct colors of the distortion scale (faces of one color are one SVG path); in [2, 1024]
   int color_levels = 64;
+  /// the width in pixels of the lines between patches (drawn with the `face_patch_map` named parameter of
+  /// `write_SVG()`); in [0, 100]
+  double patch_border_width = 1.5;
+  /// the radius in pixels of the points that mark the vertices of the `constrained_vertices` named parameter of
+  /// `write_SVG()`; in [0, 100] (0: not drawn)
+  double constrained_vertex_radius = 4;
 };
 
 /// \ingroup PkgProgressiveEmbeddingIO
@@ -194,7 +202,8 @@ inline bool svg_options_are_valid(const SVG_options& o)
   return in(o.size, 100, 100000) && in(o.edge_width, 0, 100) && in(o.border_width, 0, 100)
       && in(o.inset_size, 100, 100000) && o.significant_digits >= 1 && o.significant_digits <= 17
       && o.coordinate_decimals >= 0 && o.coordinate_decimals <= 6 && o.color_levels >= 2 && o.color_levels <= 1024
-      && svg_is_color(o.flipped_color) && svg_is_color(o.degenerate_color) && svg_is_color(o.face_color);
+      && svg_is_color(o.flipped_color) && svg_is_color(o.degenerate_color) && svg_is_color(o.face_color)
+      && in(o.patch_border_width, 0, 100) && in(o.constrained_vertex_radius, 0, 100);
 }
 
 // Sequential color scale (YlGnBu): light for low energies, dark blue for high ones; red, the
@@ -232,6 +241,98 @@ struct Svg_color_map
     return hex(c);
   }
 };
+
+// the number of light qualitative colors of svg_patch_color()
+constexpr std::size_t svg_patch_palette_size = 10;
+
+// The fill color of the patch color class `k`: light qualitative colors (none red, the color of
+// flipped faces), then, past them, hues spaced by the golden angle.
+inline std::string svg_patch_color(std::size_t k)
+{
+  static const char* palette[svg_patch_palette_size] = { "#8dd3c7", "#ffffb3", "#bebada", "#80b1d3", "#fdb462",
+                                                         "#b3de69", "#fccde5", "#d9d9d9", "#bc80bd", "#ccebc5" };
+  const std::size_t n = svg_patch_palette_size;
+  if(k < n) return palette[k];
+  const double h = std::fmod(double(k - n) * 137.508, 360.) / 60., s = 0.55, l = 0.75;
+  const double c = (1 - std::abs(2 * l - 1)) * s, x = c * (1 - std::abs(std::fmod(h, 2.) - 1)), m = l - c / 2;
+  double r = 0, g = 0, b = 0;
+  switch(int(h))
+  {
+    case 0: r = c; g = x; break;
+    case 1: r = x; g = c; break;
+    case 2: g = c; b = x; break;
+    case 3: g = x; b = c; break;
+    case 4: r = x; b = c; break;
+    default: r = c; b = x; break;
+  }
+  const std::array<int, 3> rgb = {{ int(std::lround((r + m) * 255)), int(std::lround((g + m) * 255)), int(std::lround((b + m) * 255)) }};
+  return Svg_color_map::hex(rgb);
+}
+
+// Colors of the patches 0..P-1 such that two adjacent patches differ: greedy coloring in the reverse
+// of a smallest-last order, each patch taking, among the colors its colored neighbors do not use, the
+// palette color used least so far (so that up to a palette of patches all differ), and a color past
+// the palette only when its neighbors use all of the palette.
+inline std::vector<std::size_t> svg_color_patches(const std::vector<std::vector<std::size_t> >& adjacency)
+{
+  const std::size_t P = adjacency.size();
+  std::vector<std::size_t> degree(P), order, color(P, 0);
+  std::vector<char> removed(P, 0), colored(P, 0);
+  std::set<std::pair<std::size_t, std::size_t> > queue;
+  for(std::size_t i = 0; i < P; ++i) { degree[i] = adjacency[i].size(); queue.emplace(degree[i], i); }
+  while(!queue.empty()) // each patch leaves the queue once
+  {
+    const std::size_t i = queue.begin()->second;
+    queue.erase(queue.begin());
+    removed[i] = 1;
+    order.push_back(i);
+    for(std::size_t j : adjacency[i])
+      if(!removed[j]) { queue.erase(std::make_pair(degree[j], j)); queue.emplace(--degree[j], j); }
+  }
+  std::vector<char> used;
+  std::vector<std::size_t> uses(svg_patch_palette_size, 0);
+  for(std::size_t k = P; k-- > 0; )
+  {
+    const std::size_t i = order[k];
+    used.assign((std::max)(svg_patch_palette_size, adjacency[i].size() + 1), 0);
+    for(std::size_t j : adjacency[i])
+      if(colored[j] && color[j] < used.size()) used[color[j]] = 1;
+    std::size_t c = used.size();
+    for(std::size_t q = 0; q < svg_patch_palette_size; ++q)
+      if(!used[q] && (c == used.size() || uses[q] < uses[c])) c = q;
+    if(c == used.size())
+    {
+      c = svg_patch_palette_size;
+      while(used[c]) ++c; // a free color among the first degree + 1
+    }
+    else ++uses[c];
+    color[i] = c;
+    colored[i] = 1;
+  }
+  return color;
+}
+
+// the patch of every face (face_patch_map), in the order of faces(tm); false without the parameter
+template <class TriangleMesh>
+bool svg_face_patches(const TriangleMesh&, CGAL::internal_np::Param_not_found, std::vector<long long>&) { return false; }
+
+template <class TriangleMesh, class FacePatchMap>
+bool svg_face_patches(const TriangleMesh& tm, const FacePatchMap& fpm, std::vector<long long>& patch)
+{
+  patch.clear();
+  for(auto f : faces(tm)) patch.push_back(static_cast<long long>(get(fpm, f)));
+  return true;
+}
+
+// the vertices to mark (constrained_vertices); none without the parameter
+template <class VertexIndexMap>
+void svg_marked_vertices(const VertexIndexMap&, CGAL::internal_np::Param_not_found, std::vector<std::size_t>&) {}
+
+template <class VertexIndexMap, class VertexRange>
+void svg_marked_vertices(const VertexIndexMap& vid, const VertexRange& vertices, std::vector<std::size_t>& out)
+{
+  for(const auto& v : vertices) out.push_back(get(vid, v));
+}
 
 // Logarithmic energy scale from `lo` (at most 4, the isometry) to `hi`.
 struct Svg_energy_scale
@@ -320,6 +421,18 @@ struct Svg_faces
 /// Faces of one color are one SVG path and pixel coordinates have `options.coordinate_decimals`
 /// decimals, so that the file stays small.
 ///
+/// With the named parameter `face_patch_map`, the picture shows a partition of the faces into patches
+/// (e.g. the patches of `constrained_embedding()`): unless `options.color_by_distortion` is set, the
+/// correctly oriented faces of each patch are filled with one light color, two patches that share an
+/// edge never with the same color (ten colors used evenly, so that up to ten patches all differ; more
+/// colors only where the neighbors of a patch use all ten); the faces of each patch are one path of class `pe-patch` whose attribute `data-patch`
+/// is the patch's value in the map. The edges between faces of different patches are drawn as lines
+/// `options.patch_border_width` wide (the path of class `pe-patch-borders`), and the number of patches
+/// is in the legend (`<text>` of id `pe-count-patches`). With the named parameter `constrained_vertices`,
+/// each listed vertex is marked by a black point of radius `options.constrained_vertex_radius` ringed
+/// in white (one `<circle>` of class `pe-constrained` each), and their number is in the legend (id
+/// `pe-count-constrained`).
+///
 /// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 /// \tparam VertexUVMap a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
 ///         as key type and a CGAL `Point_2` as value type
@@ -342,6 +455,19 @@ struct Svg_faces
 ///     \cgalParamDescription{the traits providing the exact orientation predicate}
 ///     \cgalParamType{a model of `ProgressiveEmbeddingTraits_2` whose `Point_2` is the value type of `uvm`}
 ///     \cgalParamDefault{`Progressive_embedding_traits_2<K>`, where `K` is the kernel of the value type of `uvm`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_patch_map}
+///     \cgalParamDescription{the patch of every face: faces filled by patch, lines between patches (see above); a face
+///                           whose value is negative once converted to `long long` (e.g. `-1` or `std::size_t(-1)`)
+///                           is in no patch and filled with `options.face_color`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor`
+///                    as key type and an integral value type}
+///     \cgalParamDefault{none: no patches}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{constrained_vertices}
+///     \cgalParamDescription{vertices marked by points (e.g. the constrained vertices of `constrained_embedding()`)}
+///     \cgalParamType{a range of `boost::graph_traits<TriangleMesh>::%vertex_descriptor` (e.g. a `std::vector`)}
+///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
@@ -394,8 +520,10 @@ Error_code write_SVG(std::ostream& out, const TriangleMesh& tm, VertexUVMap uvm,
       finite.push_back(PI::is_finite_ft(uv.back().x()) && PI::is_finite_ft(uv.back().y()) && std::isfinite(x) && std::isfinite(y));
     }
     internal::Svg_faces F;
+    auto fidx = get(CGAL::dynamic_face_property_t<std::size_t>(), tm);
     for(face_descriptor f : faces(tm))
     {
+      put(fidx, f, F.tri.size());
       std::array<std::size_t, 3> t;
       std::size_t k = 0;
       for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm))
@@ -485,6 +613,45 @@ Error_code write_SVG(std::ostream& out, const TriangleMesh& tm, VertexUVMap uvm,
       scale_e.lo = lo;
       scale_e.hi = (std::max)(hi, 10 * lo);
     }
+    // ---- patches: compact indices, the edges between patches, colors; the marked vertices
+    std::vector<long long> patch_value;
+    const bool has_patches =
+      internal::svg_face_patches(tm, get_parameter(np, Progressive_embedding::internal_np::face_patch_map), patch_value);
+    std::vector<std::size_t> patch_of(nf, std::size_t(-1)), patch_color;
+    std::vector<long long> patch_ids;               // the value of each compact patch index
+    std::vector<std::array<std::size_t, 2> > patch_edges; // vertex indices of the edges between patches
+    if(has_patches)
+    {
+      std::map<long long, std::size_t> compact;
+      for(std::size_t i = 0; i < nf; ++i)
+        if(patch_value[i] >= 0)
+        {
+          const auto it = compact.emplace(patch_value[i], compact.size()).first;
+          patch_of[i] = it->second;
+        }
+      patch_ids.resize(compact.size());
+      for(const auto& c : compact) patch_ids[c.second] = c.first;
+      std::vector<std::vector<std::size_t> > adjacency(compact.size());
+      for(auto e : edges(tm))
+      {
+        const halfedge_descriptor h = halfedge(e, tm), o = opposite(h, tm);
+        if(is_border(h, tm) || is_border(o, tm)) continue;
+        const std::size_t a = get(fidx, face(h, tm)), b = get(fidx, face(o, tm));
+        if(patch_value[a] == patch_value[b] || (patch_value[a] < 0 && patch_value[b] < 0)) continue;
+        patch_edges.push_back({{ get(vid, source(h, tm)), get(vid, target(h, tm)) }});
+        if(patch_value[a] >= 0 && patch_value[b] >= 0)
+        {
+          adjacency[patch_of[a]].push_back(patch_of[b]);
+          adjacency[patch_of[b]].push_back(patch_of[a]);
+        }
+      }
+      for(auto& l : adjacency) { std::sort(l.begin(), l.end()); l.erase(std::unique(l.begin(), l.end()), l.end()); }
+      patch_color = internal::svg_color_patches(adjacency);
+    }
+    std::vector<std::size_t> marked;
+    internal::svg_marked_vertices(vid, get_parameter(np, Progressive_embedding::internal_np::constrained_vertices), marked);
+    const bool by_patch = has_patches && !options.color_by_distortion;
+
     const int levels = options.color_levels;
     auto level_of = [&](double e) { return int(std::lround(scale_e.position(e) * (levels - 1))); };
     auto level_color = [&](int l) { return internal::Svg_color_map::color(double(l) / double(levels - 1)); };
@@ -548,8 +715,8 @@ Error_code write_SVG(std::ostream& out, const TriangleMesh& tm, VertexUVMap uvm,
     };
     // Draws the faces through `to_px`, keeping the polygons that `keep` accepts (clipping them).
     auto draw_faces = [&](std::string& g, auto to_px, auto keep, double stroke_scale) {
-      std::vector<std::string> by_level(static_cast<std::size_t>(levels));
-      std::string flipped, degenerate, border;
+      std::vector<std::string> by_level(static_cast<std::size_t>(levels)), by_patch_d(patch_ids.size());
+      std::string flipped, degenerate, border, between;
       std::vector<std::array<double, 2> > poly;
       for(std::size_t i = 0; i < nf; ++i)
       {
@@ -557,7 +724,8 @@ Error_code write_SVG(std::ostream& out, const TriangleMesh& tm, VertexUVMap uvm,
         poly.clear();
         for(std::size_t v : F.tri[i]) poly.push_back(to_px(p[v][0], p[v][1]));
         if(!keep(poly)) continue;
-        if(F.kind[i] == 1)
+        if(F.kind[i] == 1 && by_patch && patch_of[i] != std::size_t(-1)) subpath(by_patch_d[patch_of[i]], poly);
+        else if(F.kind[i] == 1)
           subpath(by_level[options.color_by_distortion ? std::size_t(level_of(F.energy[i])) : 0], poly);
         else if(F.kind[i] == -1) subpath(flipped, poly);
         else subpath(degenerate, poly);
@@ -580,6 +748,23 @@ Error_code write_SVG(std::ostream& out, const TriangleMesh& tm, VertexUVMap uvm,
         if(!by_level[std::size_t(l)].empty())
           g += "<path fill=\"" + (options.color_by_distortion ? level_color(l) : options.face_color) + "\"" + es
              + " d=\"" + by_level[std::size_t(l)] + "\"/>\n";
+      for(std::size_t k = 0; k < by_patch_d.size(); ++k)
+        if(!by_patch_d[k].empty())
+          g += "<path class=\"pe-patch\" data-patch=\"" + std::to_string(patch_ids[k]) + "\" fill=\""
+             + internal::svg_patch_color(patch_color[k]) + "\"" + es + " d=\"" + by_patch_d[k] + "\"/>\n";
+      for(const std::array<std::size_t, 2>& e : patch_edges)
+      {
+        if(!finite[e[0]] || !finite[e[1]]) continue;
+        poly.clear();
+        poly.push_back(to_px(p[e[0]][0], p[e[0]][1])); poly.push_back(to_px(p[e[1]][0], p[e[1]][1]));
+        if(!keep(poly) || poly.size() < 2) continue;
+        between += 'M'; pt(between, poly[0][0], poly[0][1]);
+        for(std::size_t k = 1; k < poly.size(); ++k) { between += 'L'; pt(between, poly[k][0], poly[k][1]); }
+      }
+      if(!between.empty() && options.patch_border_width > 0)
+        g += "<path class=\"pe-patch-borders\" fill=\"none\" stroke=\"#1a1a1a\" stroke-width=\""
+           + internal::svg_number(options.patch_border_width * stroke_scale, 2)
+           + "\" stroke-linecap=\"round\" stroke-linejoin=\"round\" d=\"" + between + "\"/>\n";
       if(!flipped.empty())
         g += "<path class=\"pe-flipped\" fill=\"" + options.flipped_color + "\" stroke=\"" + options.flipped_color
            + "\" stroke-width=\"" + internal::svg_number((std::max)(0.5, options.edge_width) * stroke_scale, 2)
@@ -609,6 +794,17 @@ Error_code write_SVG(std::ostream& out, const TriangleMesh& tm, VertexUVMap uvm,
       }
       if(!md.empty()) g += "<path class=\"pe-degenerate-markers\" fill=\"none\" stroke=\"" + options.degenerate_color + "\" stroke-width=\"1.5\" d=\"" + md + "\"/>\n";
       if(!mf.empty()) g += "<path class=\"pe-flipped-markers\" fill=\"none\" stroke=\"" + options.flipped_color + "\" stroke-width=\"2\" d=\"" + mf + "\"/>\n";
+      // the marked vertices: black points ringed in white, seen on any fill
+      if(options.constrained_vertex_radius > 0)
+        for(std::size_t v : marked)
+        {
+          if(v >= nv || !finite[v]) continue;
+          const std::array<double, 2> c = to_px(p[v][0], p[v][1]);
+          if(!visible(c[0], c[1])) continue;
+          g += "<circle class=\"pe-constrained\" cx=\"" + internal::svg_number(c[0], dec) + "\" cy=\"" + internal::svg_number(c[1], dec)
+             + "\" r=\"" + internal::svg_number(options.constrained_vertex_radius, 2)
+             + "\" fill=\"#000000\" stroke=\"#ffffff\" stroke-width=\"1.5\"/>\n";
+        }
       return g;
     };
 
@@ -687,6 +883,23 @@ Error_code write_SVG(std::ostream& out, const TriangleMesh& tm, VertexUVMap uvm,
       text("pe-count-flipped", col_x, y, "flipped: " + std::to_string(F.flipped)); y += 17;
       text("pe-count-degenerate", col_x, y, "degenerate: " + std::to_string(F.degenerate)); y += 17;
       text("pe-count-non-finite", col_x, y, "non-finite vertices: " + std::to_string(F.non_finite_vertices)); y += 17;
+      if(has_patches)
+      {
+        y += 7;
+        if(by_patch)
+          for(std::size_t k = 0; k < 3; ++k)
+            legend += "<rect x=\"" + num(col_x + 5 * double(k)) + "\" y=\"" + num(y - 11 + 2 * double(k)) + "\" width=\"10\" height=\"10\" fill=\""
+                    + internal::svg_patch_color(k) + "\" stroke=\"#404040\" stroke-width=\"0.5\"/>\n";
+        text("pe-count-patches", col_x + 22, y, "patches: " + std::to_string(patch_ids.size())); y += 20;
+        legend += "<line x1=\"" + num(col_x) + "\" y1=\"" + num(y - 4) + "\" x2=\"" + num(col_x + 16) + "\" y2=\"" + num(y - 4)
+                + "\" stroke=\"#1a1a1a\" stroke-width=\"" + internal::svg_number((std::max)(1., options.patch_border_width), 2) + "\"/>\n";
+        text("", col_x + 22, y, "patch border"); y += 20;
+      }
+      if(!marked.empty())
+      {
+        legend += "<circle cx=\"" + num(col_x + 7) + "\" cy=\"" + num(y - 4) + "\" r=\"4\" fill=\"#000000\" stroke=\"#ffffff\" stroke-width=\"1.5\"/>\n";
+        text("pe-count-constrained", col_x + 22, y, "constrained vertices: " + std::to_string(marked.size())); y += 17;
+      }
       legend += "</g>\n";
       ly = y;
     }

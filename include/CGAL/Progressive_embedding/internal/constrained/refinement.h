@@ -21,6 +21,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/Progressive_embedding/Error_code.h>
+#include <CGAL/Surface_mesh.h>
 
 #include <array>
 #include <cstddef>
@@ -99,6 +100,26 @@ split_edge_and_faces(typename boost::graph_traits<TriangleMesh>::halfedge_descri
 // Replays `splits` (made on a copy whose vertex `copy_to_mesh` maps to the user's mesh) on `tm`:
 // each split edge is found by its two endpoints. `copy_to_mesh` receives the new vertices.
 // ERROR_WRONG_PARAMETER if an edge is missing (the meshes did not have the same connectivity).
+// Surface_mesh reuses the slots of removed elements: vertices added to a mesh that still holds removed
+// ones would come before the input's. The guard turns the reuse off for its lifetime (other meshes append).
+template <class TriangleMesh>
+struct No_recycling_guard
+{
+  explicit No_recycling_guard(TriangleMesh&) {}
+};
+
+template <class P>
+struct No_recycling_guard<CGAL::Surface_mesh<P> >
+{
+  CGAL::Surface_mesh<P>& mesh;
+  const bool recycled;
+  explicit No_recycling_guard(CGAL::Surface_mesh<P>& m) : mesh(m), recycled(m.does_recycle_garbage())
+  { m.set_recycle_garbage(false); }
+  ~No_recycling_guard() { mesh.set_recycle_garbage(recycled); }
+  No_recycling_guard(const No_recycling_guard&) = delete;
+  No_recycling_guard& operator=(const No_recycling_guard&) = delete;
+};
+
 template <class TriangleMesh, class VertexPointMap, class CopyVertex, class FT, class Point_of_split>
 Error_code replay_splits(const std::vector<Edge_split<CopyVertex, FT> >& splits, TriangleMesh& tm, VertexPointMap vpm,
                          std::unordered_map<CopyVertex, typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& copy_to_mesh,

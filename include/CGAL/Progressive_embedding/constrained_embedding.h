@@ -36,6 +36,8 @@
 #include <CGAL/Progressive_embedding/parameters.h>
 #include <CGAL/Progressive_embedding/Progressive_embedding_traits_2.h>
 #include <CGAL/Progressive_embedding/check_embedding.h>
+#include <CGAL/Progressive_embedding/check_immersion.h>
+#include <CGAL/Progressive_embedding/triangulate_self_overlapping_polygon_2.h>
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
 #include <CGAL/Progressive_embedding/embed_patch.h>
 #include <CGAL/Progressive_embedding/optimize_distortion.h>
@@ -114,6 +116,11 @@ struct Constrained_embedding_statistics
   Error_code optimization_status = OK;
   /// what the optimization did
   Optimization_statistics optimization;
+  /// `true` when the fixed border is not simple (weakly self-overlapping): the map is an immersion, certified by
+  /// `check_immersion()` (`immersion_report`; `report` is then the embedding certificate, which fails on the border)
+  bool immersion = false;
+  /// the immersion certificate, when `immersion` is `true`
+  Immersion_report immersion_report;
   /// largest distance between a constrained vertex's uv and its target (0: bit-exact; computed in double)
   double max_constraint_error = 0;
 };
@@ -207,6 +214,31 @@ Error_code hull_corners(const std::vector<Point_2>& P, ExactOrientation orient, 
   return (forward || backward) ? OK : ERROR_NON_CONVEX_BORDER;
 }
 
+// face_patch_map of constrained_embedding(): nothing to write without it
+template <class TriangleMesh, class Work, class CopyToMesh, class Labels>
+void write_face_patch_map(const TriangleMesh&, const Work&, const CopyToMesh&, const Labels&, CGAL::internal_np::Param_not_found)
+{}
+
+template <class TriangleMesh, class Work, class CopyToMesh, class Labels, class FacePatchMap>
+void write_face_patch_map(const TriangleMesh& tm, const Work& work, const CopyToMesh& copy_to_mesh, const Labels& labels,
+                          FacePatchMap fpm)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<Work>::vertex_descriptor         wvertex;
+  typedef typename boost::property_traits<FacePatchMap>::value_type     Value;
+  std::unordered_map<vertex_descriptor, wvertex, boost::hash<vertex_descriptor> > to_copy;
+  for(const auto& p : copy_to_mesh) to_copy.emplace(p.second, p.first);
+  for(auto f : faces(tm))
+  {
+    const auto h = halfedge(f, tm);
+    const auto a = to_copy.find(source(h, tm)), b = to_copy.find(target(h, tm));
+    if(a == to_copy.end() || b == to_copy.end()) continue; // cannot happen: every vertex of tm has its copy
+    const auto wh = halfedge(a->second, b->second, work);
+    if(!wh.second || CGAL::is_border(wh.first, work)) continue; // cannot happen: same connectivity
+    put(fpm, f, static_cast<Value>(get(labels, face(wh.first, work))));
+  }
+}
+
 } // namespace internal
 
 /// \ingroup PkgProgressiveEmbeddingMainFunctions
@@ -214,7 +246,7 @@ Error_code hull_corners(const std::vector<Point_2>& P, ExactOrientation orient, 
 /// computes a certified planar map of a disk-topology triangle mesh in which every constrained interior vertex
 /// lands bit-exactly on its target point, refining the mesh where needed (MatchMaker++).
 ///
-/// The domain (the convex border polygon, fixed from `uvm` or given by a border shape) is cut into convex polygons
+/// The domain (the border polygon, fixed from `uvm` or given by a border shape) is cut into convex polygons
 /// whose corners are the border points and the targets; their interior edges are traced on the mesh as
 /// non-crossing paths of edges between the corresponding vertices (edges are split at their midpoints where a path
 /// is blocked, and where an edge joins two vertices of one path or of one straight border side); the path
@@ -239,6 +271,18 @@ Error_code hull_corners(const std::vector<Point_2>& P, ExactOrientation orient, 
 /// and optimized with the hole loops free. Steiner vertices inside a hole are removed with it; those on a hole loop
 /// (an edge of the loop split) are kept (they lie on the input surface's boundary).
 ///
+/// <b>Non-convex borders</b> (`Border_shape::FIXED` only): a simple non-convex border polygon is cut into convex
+/// polygons the same way (its reflex corners keep interior edges, some of them between two border points); the
+/// result is an embedding, certified and optimized as above. A border polygon that is not simple but weakly
+/// self-overlapping (it bounds an immersed disk: `triangulate_self_overlapping_polygon_2()`) is cut along its
+/// Shor-Van Wyk triangulation, merged into convex pieces; the map is then an immersion (locally injective,
+/// overlapping itself), certified by `check_immersion()` with the border bit-exactly the given polygon
+/// (`Constrained_embedding_statistics::immersion` and `immersion_report`), and returned without optimization (the
+/// optimizer certifies embeddings). Constraints need a simple border (a target of an overlapping domain could lie
+/// on several sheets): with a self-overlapping border they give `ERROR_CONSTRAINT_OUTSIDE_DOMAIN`; a border that is
+/// not even weakly self-overlapping gives `ERROR_NOT_SELF_OVERLAPPING`; holes need a simple outer border
+/// (`ERROR_NOT_A_DISK` otherwise).
+///
 /// \tparam TriangleMesh a model of `MutableFaceGraph` (triangles)
 /// \tparam ConstraintRange a range of `std::pair<vertex_descriptor, Point_2>` (`Point_2` the uv map's value type)
 /// \tparam VertexUVMap a model of `ReadWritePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
@@ -252,7 +296,7 @@ Error_code hull_corners(const std::vector<Point_2>& P, ExactOrientation orient, 
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{border_shape}
-///     \cgalParamDescription{the border: fixed from `uvm` (convex, flat vertices allowed), or a shape as in `tutte_embedding()`}
+///     \cgalParamDescription{the border: fixed from `uvm` (convex, flat vertices allowed; or non-convex, see above), or a shape as in `tutte_embedding()`}
 ///     \cgalParamType{`Border_shape`}
 ///     \cgalParamDefault{`Border_shape::FIXED`}
 ///   \cgalParamNEnd
@@ -297,6 +341,19 @@ Error_code hull_corners(const std::vector<Point_2>& P, ExactOrientation orient, 
 ///     \cgalParamType{`std::vector<Steiner_point<vertex_descriptor> >*`}
 ///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{face_patch_map}
+///     \cgalParamDescription{receives (on success) for every face of the refined `tm` the index of its patch: the convex
+///                           polygon of the partition of the domain into which the face was mapped, from 0 to
+///                           `Constrained_embedding_statistics::patches` - 1. Faces created by the refinement get the
+///                           patch they lie in (the labels are taken from the refined working copy, whose faces are
+///                           those of the refined `tm`); the optimization changes no label. Two faces sharing an edge
+///                           have different patches only if the edge is on a traced path; with holes, a patch
+///                           that lay inside a hole has no face. Nothing is written on error.}
+///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor` as
+///                    key type and an integral value type (the index is converted by `static_cast`); it must accept the
+///                    faces the refinement adds to `tm` (a `Surface_mesh` property map, a dynamic property map)}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{verbose}
 ///     \cgalParamDescription{progress messages on `std::cerr`}
 ///     \cgalParamType{`bool`}
@@ -307,8 +364,8 @@ Error_code hull_corners(const std::vector<Point_2>& P, ExactOrientation orient, 
 /// \return `OK` only if the map is certified and every constraint met exactly; otherwise, with `tm` and `uvm`
 ///         unchanged: the mesh errors of `tutte_embedding()` (`ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH`,
 ///         `ERROR_NON_MANIFOLD`, `ERROR_NOT_A_DISK` (closed mesh), `ERROR_NOT_GENUS_ZERO` (a border, but not a
-///         connected genus-0 surface), `ERROR_BORDER_TOO_SHORT`), the border errors (`ERROR_NON_CONVEX_BORDER`,
-///         `ERROR_DEGENERATE_BORDER`), `ERROR_WRONG_PARAMETER` (a constrained vertex that is not a vertex of `tm`, a
+///         connected genus-0 surface), `ERROR_BORDER_TOO_SHORT`), the border errors (`ERROR_NON_CONVEX_BORDER` for a
+///         border shape, `ERROR_NOT_SELF_OVERLAPPING`, `ERROR_DEGENERATE_BORDER`), `ERROR_WRONG_PARAMETER` (a constrained vertex that is not a vertex of `tm`, a
 ///         named parameter out of range), `ERROR_NON_FINITE_COORDINATES`, `ERROR_CONSTRAINT_ON_BORDER`,
 ///         `ERROR_DUPLICATE_CONSTRAINT` (a vertex or a target given twice), `ERROR_CONSTRAINT_OUTSIDE_DOMAIN`,
 ///         `ERROR_BUDGET_EXHAUSTED` (time or Steiner budget), `ERROR_PATH_TRACING_FAILED`, the errors of the patch
@@ -326,7 +383,6 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
   typedef typename GT::halfedge_descriptor                          halfedge_descriptor;
   typedef typename internal::Uv_map_types<VertexUVMap>::Traits      Traits;
   typedef typename Traits::Point_2                                  Point_2;
-  typedef typename Traits::FT                                       FT;
   typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::type VPM;
   typedef typename boost::property_traits<VPM>::value_type          Point_3;
   typedef typename CGAL::Kernel_traits<Point_3>::Kernel             K3;
@@ -433,6 +489,10 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
   }
   std::vector<Point_2> bpos;
   ec = internal::place_border(disk, uvm, vpm, traits, np, bpos);
+  // a fixed border that is not convex (read in full before the test): a simple polygon gives an
+  // embedding, a weakly self-overlapping one an immersion (step 2 decides which)
+  const bool non_convex = ec == ERROR_NON_CONVEX_BORDER && shape == Border_shape::FIXED && bpos.size() == nb;
+  if(non_convex) ec = OK;
   if(ec != OK) return finish(ec);
   for(const Point_2& p : bpos)
     if(!internal::is_finite_ft(p.x()) || !internal::is_finite_ft(p.y())) return finish(ERROR_NON_FINITE_COORDINATES);
@@ -443,6 +503,7 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
   // convention): a clockwise border is mirrored, exactly, and the map mirrored back at the end.
   internal::Domain_partition_options popt;
   popt.allow_flat_border_vertices = true;
+  popt.allow_non_convex_border = non_convex;
   internal::Domain_partition partition;
   // border nodes: every border vertex (its index in `border_nodes`), or, when a border shape computed
   // in floating point is convex only up to rounding (e.g. a triangle's slanted sides), the strict
@@ -452,6 +513,26 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
   for(std::size_t k = 0; k < nb; ++k) border_nodes[k] = k;
   std::vector<Point_2> B(bpos);
   ec = internal::partition_domain(B, targets, partition, popt);
+  // a fixed border that is not simple: a weakly self-overlapping polygon (Shor-Van Wyk) bounds an
+  // immersed disk, cut into convex polygons along its triangulation; a target there could lie on
+  // several sheets, so only the border may be prescribed
+  bool immersed = false;
+  std::vector<std::array<std::size_t, 3> > sheet_triangles;
+  auto partition_immersed = [&](const std::vector<Point_2>& border) -> Error_code
+  {
+    sheet_triangles.clear();
+    const Error_code e = triangulate_self_overlapping_polygon_2(border, std::back_inserter(sheet_triangles));
+    if(e != OK) return e;
+    partition = internal::Domain_partition();
+    return internal::partition_immersed_domain(border, sheet_triangles, partition, popt);
+  };
+  if(ec == ERROR_NON_CONVEX_BORDER && non_convex)
+  {
+    if(holes) return finish(ERROR_NOT_A_DISK); // an immersion with holes is not supported
+    if(!targets.empty()) return finish(ERROR_CONSTRAINT_OUTSIDE_DOMAIN);
+    immersed = true;
+    ec = partition_immersed(B);
+  }
   if(ec == ERROR_NON_CONVEX_BORDER && shape != Border_shape::FIXED)
   {
     ec = internal::hull_corners(bpos, orient, border_nodes);
@@ -472,11 +553,20 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     for(Point_2& p : T) p = mirror(p);
     for(Point_2& p : Bfull) p = mirror(p);
     partition = internal::Domain_partition();
-    ec = internal::partition_domain(B, T, partition, popt);
+    ec = immersed ? partition_immersed(B) : internal::partition_domain(B, T, partition, popt);
     if(ec != OK) return finish(ec);
     if(!partition.counterclockwise) return finish(ERROR_PATH_TRACING_FAILED); // cannot happen
   }
   stats.paths = partition.edges.size();
+  if(verbose)
+  {
+    std::cerr << "[constrained_embedding] partition: " << partition.edges.size() << " interior edges, "
+              << partition.polygons.size() << " polygons" << (immersed ? " (immersed)" : "") << std::endl;
+    if(immersed)
+      for(const auto& e : partition.edges)
+        std::cerr << "  edge " << e[0] << " (" << CGAL::to_double(B[e[0]].x()) << ", " << CGAL::to_double(B[e[0]].y())
+                  << ") - " << e[1] << " (" << CGAL::to_double(B[e[1]].x()) << ", " << CGAL::to_double(B[e[1]].y()) << ")\n";
+  }
   stats.seconds_partition = timer.time() - stats.seconds_validation;
 
   // ---- 3. the working copy, path tracing, chord splits -------------------------------------
@@ -591,8 +681,14 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     if(ec != OK)
     {
       if(verbose)
+      {
         std::cerr << "[constrained_embedding] patch " << p << " (" << patch_faces[p].size() << " faces): "
-                  << get_error_message(ec) << std::endl;
+                  << get_error_message(ec) << "; border:";
+        for(auto h : patches[p].border)
+          std::cerr << " (" << CGAL::to_double(get(wuv, target(h, work)).x()) << ", "
+                    << CGAL::to_double(get(wuv, target(h, work)).y()) << ")";
+        std::cerr << std::endl;
+      }
       return finish(ec);
     }
   }
@@ -600,9 +696,21 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
 
   // ---- 5. certificate, optimization ---------------------------------------------------------
   const double t_cert = timer.time();
-  stats.report_before_optimization = check_embedding(work, wuv);
+  stats.report_before_optimization = check_embedding(work, wuv, parameters::check_overlap(!immersed));
+  if(immersed)
+  {
+    // locally injective with the border bit-exactly the given polygon (an immersion overlaps itself:
+    // the embedding certificate above fails on the border, by design)
+    stats.immersion = true;
+    std::vector<Point_2> polygon(Bfull.begin(), Bfull.begin() + static_cast<std::ptrdiff_t>(nb));
+    stats.immersion_report = check_immersion(work, wuv, to_work.at(disk.vertices[disk.border[0]]), polygon);
+    stats.seconds_certification = timer.time() - t_cert;
+    if(verbose) std::cerr << "[constrained_embedding] " << stats.immersion_report.summary() << std::endl;
+    stats.report = stats.report_before_optimization;
+    if(!stats.immersion_report.is_immersion()) return finish(ERROR_INVALID_EMBEDDING);
+  }
   stats.seconds_certification = timer.time() - t_cert;
-  if(!stats.report_before_optimization.is_valid())
+  if(!immersed && !stats.report_before_optimization.is_valid())
   {
     stats.report = stats.report_before_optimization;
     if(verbose) std::cerr << "[constrained_embedding] " << stats.report.summary() << std::endl;
@@ -647,7 +755,8 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     }
   }
   stats.report = stats.report_before_optimization;
-  if(optimize)
+  // the optimizer certifies embeddings only: an immersion is returned as embedded
+  if(optimize && !immersed)
   {
     const double t_opt = timer.time();
     std::vector<wvertex> fixed(nodes.begin() + nbn, nodes.end());
@@ -709,7 +818,10 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
       position[s.v] = q;
       steiner_positions.push_back(q);
     }
-  ec = internal::replay_splits(splits, tm, vpm, copy_to_mesh, midpoint);
+  {
+    const internal::No_recycling_guard<TriangleMesh> append_only(tm); // added vertices after the input's
+    ec = internal::replay_splits(splits, tm, vpm, copy_to_mesh, midpoint);
+  }
   if(ec != OK) return finish(ec); // cannot happen: tm has the copy's connectivity
   for(wvertex v : vertices(work))
   {
@@ -717,6 +829,9 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     put(uvm, copy_to_mesh.at(v), mirrored ? mirror(p) : p);
   }
   if(mirrored) stats.report.clockwise = !stats.report.clockwise;
+  // the patch of every face of the refined tm: the faces of tm are the faces of the copy (same
+  // connectivity after the replay), each found from one of its halfedges (same orientation)
+  internal::write_face_patch_map(tm, work, copy_to_mesh, fpatch, get_parameter(np, internal_np::face_patch_map));
   if(steiner_out)
   {
     steiner_out->clear();

@@ -53,6 +53,63 @@
 //   target for the inside test, a sort of the edges, a union-find for polygon identities; every loop
 //   is bounded by the number of half-edges.
 //
+// partition_domain with options.allow_non_convex_border (default false: everything above unchanged)
+//   A border classified non-convex above may then be any SIMPLE polygon (a convex border, strict or
+//   with allowed flat vertices, takes the convex path: the same output as without the option).
+//   Checks, in this order after the finite test and the DEGENERATE_BORDER ones above (fewer than 3
+//   points, a repeated consecutive point, all collinear):
+//     ERROR_DEGENERATE_BORDER         a flat vertex without allow_flat_border_vertices
+//     ERROR_NON_CONVEX_BORDER         the border is not simple (two edges meet other than consecutive
+//                                     ones at their common vertex; exact): Error_code has no code for
+//                                     a non-simple border, and such a border is not convex either
+//     ERROR_CONSTRAINT_OUTSIDE_DOMAIN a target outside the polygon (e.g. in a reflex notch), equal to
+//                                     a border point or on a border edge (exact)
+//     ERROR_DUPLICATE_CONSTRAINT      two equal targets
+//   Method: the CDT of the border points with the border edges as constraints, then the targets
+//   inserted one by one (a target on a border edge splits that constraint, an equal point returns the
+//   existing vertex: both detected); the outside faces are those reached from the infinite face
+//   across unconstrained edges (the outside of a simple polygon is connected); only the inside faces
+//   enter the same greedy merge. Orientation: that of the lexicographically smallest vertex (a strict
+//   corner). A flat vertex is a collinear one whose neighbours lie on both sides of it; a spike (both
+//   on one side) makes two edges overlap, hence ERROR_NON_CONVEX_BORDER (not simple).
+//   Postconditions: as in the convex case, except that interior edges may now join two border nodes
+//   (diagonals at reflex vertices, where no union is convex): "every interior edge has a target as
+//   an endpoint" does not hold; a reflex border node always keeps at least one interior edge. All
+//   fields keep their meaning (rotation of a border node from the next border side to the previous
+//   one across the inside, counterclockwise polygons, edge_polygons left/right).
+//
+// partition_immersed_domain(border, triangles, out [, options])
+//   border   : a weakly self-overlapping polygon (the border of an immersed disk), either orientation;
+//              its vertices may coincide in the plane (different sheets); no targets.
+//   triangles: its triangulation as an immersed disk, as triangulate_self_overlapping_polygon_2()
+//              writes it: nb - 2 index triples, each strictly counterclockwise (exact); every border
+//              edge a side of exactly one triangle, in the direction (i, i+1) for a counterclockwise
+//              border and (i+1, i) for a clockwise one; every other side (a diagonal) shared by exactly
+//              two triangles with opposite directions; the triangles around each node form one fan.
+//   out      : as above with number_of_targets == 0; counterclockwise tells the border's orientation
+//              (read from the triangles). Written only on success.
+//   Method: the combinatorics come from the triangles only (the geometry overlaps, so no point
+//   location): half-edges glued by their index pairs, then the same greedy merge, decided locally:
+//   two adjacent strictly convex polygons are merged when the union's two new corners are strict
+//   left turns (exact). This is enough: the union is an immersed disk whose border turns once, so a
+//   locally strictly convex union is an embedded convex polygon; the corners are sums of corners
+//   below 180 degrees, so the orientation decides exactly whether the sum stays below 180.
+//   Flat vertices (with allow_flat_border_vertices): a collinear border vertex whose total angle is
+//   exactly 180 degrees (every fan neighbour strictly left of u -> next) is flat as above; a collinear
+//   vertex with a total angle of 540 degrees or more is an ordinary (reflex) corner.
+//   Postconditions: every polygon strictly convex and counterclockwise (flat corners as above), the
+//   polygons cover the immersed disk once (each triangle is in exactly one polygon; their areas sum
+//   to the border's signed area), V - E + F = 1 with the border edges counted (checked before
+//   returning, as is every polygon's convexity); interior edges join border nodes (there is no other
+//   node); rotation, edge_polygons, polygon_side_edges() as above, combinatorially (two nodes may
+//   have equal positions, the rotation is the order of the triangles around the node).
+//   Errors: ERROR_NON_FINITE_COORDINATES; ERROR_DEGENERATE_BORDER (fewer than 3 points, a repeated
+//   consecutive point, a collinear vertex without allow_flat_border_vertices); ERROR_WRONG_PARAMETER
+//   (triangles not as described: count, index range, a non-positive triangle, a border edge missing
+//   or in both directions, a diagonal not shared by exactly two triangles, a node whose triangles do
+//   not form one fan).
+//   Complexity: O(n log n): a sort of the half-edges, then as above.
+//
 // polygon_side_edges(partition): per polygon side, the interior edge along it or -1 (border edge).
 //
 // place_path_vertices(partition, border, targets, edge, fractions, positions [, sides])
@@ -165,6 +222,9 @@ struct Domain_partition_options
   /// accept a convex border with flat (180 degree) vertices; the polygons are then convex with their
   /// flat corners only at flat border nodes (default: strictly convex border required)
   bool allow_flat_border_vertices = false;
+  /// accept a simple border polygon that is not convex (checked exactly); a convex border gives the
+  /// same partition as without this option (default: a convex border required)
+  bool allow_non_convex_border = false;
 };
 
 namespace domain_detail {
@@ -241,107 +301,24 @@ struct Union_find
   void unite(std::size_t a, std::size_t b) { parent[find(b)] = find(a); }
 };
 
-} // namespace domain_detail
-
-/// Cuts the domain bounded by `border` into convex polygons whose corners are border points and
-/// targets, every target a corner (see the top of this file for the full contract).
-/// \tparam Point_2 a point of a CGAL kernel whose FT is supported (double, Gmpq, Gmpfr, ...)
-template <class Point_2>
-Error_code partition_domain(const std::vector<Point_2>& border, const std::vector<Point_2>& targets,
-                            Domain_partition& out,
-                            const Domain_partition_options& options = Domain_partition_options())
+// The greedy merge and the output, shared by every kind of domain. The faces are given as half-edge
+// cycles: half-edge h runs from from[h] to to[h] with its face on the left, next/prev in its face,
+// twin[h] the opposite half-edge or `none` on the border (a border half-edge runs from a border node
+// to its counterclockwise successor). flat[u]: border node u has a total angle of exactly 180 degrees.
+// Every polygon corner is below 180 degrees (or 180 at a flat node covering it wholly), so the union
+// of two polygons across an edge turns at its two ends by the sum of the two corners there (below 360
+// degrees): the exact orientation of the union's corner decides whether it stays strictly convex,
+// without any global test. This holds for an immersed disk as well as for a planar one.
+template <class Point_2, class Points>
+Error_code merge_into_convex_polygons(const Points& point, std::size_t nb, std::size_t nt, bool ccw,
+                                      const std::vector<char>& flat,
+                                      const std::vector<std::size_t>& from, const std::vector<std::size_t>& to,
+                                      std::vector<std::size_t>& next, std::vector<std::size_t>& prev,
+                                      const std::vector<std::size_t>& twin,
+                                      const Domain_partition_options& options, Domain_partition& out)
 {
-  typedef typename Point_ft<Point_2>::type FT;
-  static_assert(Check_number_type<FT>::value, "");
-  typedef Certification_kernel<FT> CKS;
-  typedef typename CKS::Kernel CK;
-
-  const std::size_t nb = border.size(), nt = targets.size(), nn = nb + nt;
-  const domain_detail::Node_points<Point_2> point{ border, targets };
-
-  // ---- input checks --------------------------------------------------------------------------
-  for(std::size_t n = 0; n < nn; ++n)
-    if(!is_finite_ft(point(n).x()) || !is_finite_ft(point(n).y()))
-      return ERROR_NON_FINITE_COORDINATES;
-
-  int orientation = 0;
-  const Polygon_class pc = classify_convex_polygon(border, Exact_orientation_2<Point_2>(), orientation);
-  if(pc == Polygon_class::DEGENERATE) return ERROR_DEGENERATE_BORDER;
-  if(pc == Polygon_class::NON_CONVEX) return ERROR_NON_CONVEX_BORDER;
-  if(pc == Polygon_class::CONVEX && !options.allow_flat_border_vertices) return ERROR_DEGENERATE_BORDER;
-  const bool ccw = orientation > 0;
-
-  // flat border vertices (only with allow_flat_border_vertices)
-  std::vector<char> flat(nb, 0);
-  std::size_t corner0 = nb;
-  for(std::size_t i = 0; i < nb; ++i)
-  {
-    flat[i] = exact_orientation(border[(i + nb - 1) % nb], border[i], border[(i + 1) % nb]) == CGAL::COLLINEAR;
-    if(!flat[i] && corner0 == nb) corner0 = i;
-  }
-  if(corner0 == nb) return ERROR_DEGENERATE_BORDER; // classified degenerate above; kept for safety
-
-  // targets strictly inside: fan search from a strict corner, counterclockwise
-  auto ccw_border = [&](std::size_t k) -> const Point_2& {
-    return ccw ? border[(corner0 + k) % nb] : border[(corner0 + nb - k % nb) % nb];
-  };
-  for(std::size_t t = 0; t < nt; ++t)
-    if(!domain_detail::strictly_inside_convex(nb, ccw_border, targets[t]))
-      return ERROR_CONSTRAINT_OUTSIDE_DOMAIN;
-
-  {
-    std::vector<std::size_t> order(nt);
-    std::iota(order.begin(), order.end(), std::size_t(0));
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return exact_compare_xy(targets[a], targets[b]) == CGAL::SMALLER; });
-    for(std::size_t k = 1; k < nt; ++k)
-      if(exact_compare_xy(targets[order[k - 1]], targets[order[k]]) == CGAL::EQUAL)
-        return ERROR_DUPLICATE_CONSTRAINT;
-  }
-
-  // ---- constrained Delaunay triangulation -------------------------------------------------------
-  typedef CGAL::Triangulation_vertex_base_with_info_2<std::size_t, CK>           Vb;
-  typedef CGAL::Triangulation_face_base_with_info_2<std::size_t, CK>             Fbb;
-  typedef CGAL::Constrained_triangulation_face_base_2<CK, Fbb>                   Fb;
-  typedef CGAL::Triangulation_data_structure_2<Vb, Fb>                           Tds;
-  typedef CGAL::Constrained_Delaunay_triangulation_2<CK, Tds, CGAL::Exact_predicates_tag> CDT;
-  typedef typename CDT::Vertex_handle Vertex_handle;
-
-  CDT cdt;
-  {
-    std::vector<std::pair<typename CK::Point_2, std::size_t> > pts;
-    pts.reserve(nn);
-    for(std::size_t n = 0; n < nn; ++n) pts.emplace_back(CKS::convert(point(n)), n);
-    cdt.insert(pts.begin(), pts.end()); // spatially sorted insertion
-  }
-  if(cdt.number_of_vertices() != nn || cdt.dimension() != 2)
-    return ERROR_DEGENERATE_BORDER; // cannot happen after the checks above (distinct, not collinear)
-  std::vector<Vertex_handle> vh(nn);
-  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) vh[v->info()] = v;
-  for(std::size_t i = 0; i < nb; ++i) cdt.insert_constraint(vh[i], vh[(i + 1) % nb]);
-  if(cdt.number_of_vertices() != nn) return ERROR_DEGENERATE_BORDER; // no constraint crossed anything
-
-  // ---- half-edges of the triangles ---------------------------------------------------------------
-  // half-edge 3f+i of face f runs counterclockwise along the edge opposite to vertex i
-  std::size_t nf = 0;
-  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) f->info() = nf++;
-  const std::size_t nh = 3 * nf;
+  const std::size_t nn = nb + nt, nh = from.size(), nf = nh / 3;
   const std::size_t none = std::size_t(-1);
-  std::vector<std::size_t> from(nh), to(nh), next(nh), prev(nh), twin(nh, none);
-  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
-  {
-    const std::size_t id = f->info();
-    for(int i = 0; i < 3; ++i)
-    {
-      const std::size_t h = 3 * id + i;
-      from[h] = f->vertex(CDT::ccw(i))->info();
-      to[h] = f->vertex(CDT::cw(i))->info();
-      next[h] = 3 * id + (i + 1) % 3;
-      prev[h] = 3 * id + (i + 2) % 3;
-      const auto g = f->neighbor(i);
-      if(!cdt.is_infinite(g) && !f->is_constrained(i)) twin[h] = 3 * g->info() + g->index(f);
-    }
-  }
 
   // ---- greedy merge ---------------------------------------------------------------------------------
   std::vector<std::size_t> candidates;
@@ -449,6 +426,382 @@ Error_code partition_domain(const std::vector<Point_2>& border, const std::vecto
     }
   }
 
+  out = std::move(result);
+  return OK;
+}
+
+
+// The non-convex case of partition_domain() (options.allow_non_convex_border): `border` is known to be
+// finite, with at least 3 points, no repeated consecutive point and not all collinear. See the top of
+// this file for the contract.
+template <class Point_2>
+Error_code partition_simple_domain(const std::vector<Point_2>& border, const std::vector<Point_2>& targets,
+                                   Domain_partition& out, const Domain_partition_options& options)
+{
+  typedef typename Point_ft<Point_2>::type FT;
+  typedef Certification_kernel<FT> CKS;
+  typedef typename CKS::Kernel CK;
+  const std::size_t nb = border.size(), nt = targets.size(), nn = nb + nt;
+  const Node_points<Point_2> point{ border, targets };
+  const std::size_t none = std::size_t(-1);
+
+  // flat vertices: collinear with the next point beyond the vertex from the previous one (the other
+  // collinear case, a spike, makes two edges overlap: not simple, refused below)
+  std::vector<char> flat(nb, 0);
+  bool any_flat = false;
+  for(std::size_t i = 0; i < nb; ++i)
+  {
+    const Point_2& a = border[(i + nb - 1) % nb];
+    const Point_2& c = border[(i + 1) % nb];
+    flat[i] = exact_orientation(a, border[i], c) == CGAL::COLLINEAR
+              && exact_compare_xy(a, border[i]) == exact_compare_xy(border[i], c);
+    if(flat[i]) any_flat = true;
+  }
+  if(any_flat && !options.allow_flat_border_vertices) return ERROR_DEGENERATE_BORDER;
+
+  // simplicity, exactly (no two edges meet except consecutive ones at their common vertex): there is
+  // no dedicated code, and a non-simple border is in particular not the border of a convex domain
+  if(count_polygon_self_intersections(border, Exact_orientation_2<Point_2>(), 1) != 0)
+    return ERROR_NON_CONVEX_BORDER;
+
+  // orientation: the lexicographically smallest vertex is a strict corner of a simple polygon
+  std::size_t lowest = 0;
+  for(std::size_t i = 1; i < nb; ++i)
+    if(exact_compare_xy(border[i], border[lowest]) == CGAL::SMALLER) lowest = i;
+  const CGAL::Orientation lo = exact_orientation(border[(lowest + nb - 1) % nb], border[lowest], border[(lowest + 1) % nb]);
+  if(lo == CGAL::COLLINEAR) return ERROR_DEGENERATE_BORDER; // cannot happen for a simple polygon
+  const bool ccw = lo == CGAL::LEFT_TURN;
+
+  // ---- constrained Delaunay triangulation of the border, then the targets ----------------------
+  typedef CGAL::Triangulation_vertex_base_with_info_2<std::size_t, CK>           Vb;
+  typedef CGAL::Triangulation_face_base_with_info_2<std::size_t, CK>             Fbb;
+  typedef CGAL::Constrained_triangulation_face_base_2<CK, Fbb>                   Fb;
+  typedef CGAL::Triangulation_data_structure_2<Vb, Fb>                           Tds;
+  typedef CGAL::Constrained_Delaunay_triangulation_2<CK, Tds, CGAL::Exact_predicates_tag> CDT;
+  typedef typename CDT::Vertex_handle Vertex_handle;
+  typedef typename CDT::Face_handle Face_handle;
+
+  CDT cdt;
+  {
+    std::vector<std::pair<typename CK::Point_2, std::size_t> > pts;
+    pts.reserve(nb);
+    for(std::size_t n = 0; n < nb; ++n) pts.emplace_back(CKS::convert(border[n]), n);
+    cdt.insert(pts.begin(), pts.end()); // spatially sorted insertion
+  }
+  if(cdt.number_of_vertices() != nb || cdt.dimension() != 2)
+    return ERROR_DEGENERATE_BORDER; // cannot happen for a simple polygon (distinct, not collinear)
+  std::vector<Vertex_handle> vh(nn);
+  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) vh[v->info()] = v;
+  for(std::size_t i = 0; i < nb; ++i) cdt.insert_constraint(vh[i], vh[(i + 1) % nb]);
+  if(cdt.number_of_vertices() != nb) return ERROR_DEGENERATE_BORDER; // simple: no constraint crossed another
+  // targets one by one: an existing vertex comes back for a point already there (a border point or an
+  // earlier target); a target on a border edge splits its constraint
+  std::vector<Vertex_handle> target_vertex(nt);
+  bool duplicate = false;
+  {
+    Face_handle hint;
+    for(std::size_t t = 0; t < nt; ++t)
+    {
+      const std::size_t before = cdt.number_of_vertices();
+      const Vertex_handle v = cdt.insert(CKS::convert(targets[t]), hint);
+      if(cdt.number_of_vertices() == before + 1) { v->info() = nb + t; vh[nb + t] = v; }
+      else if(v->info() >= nb) duplicate = true; // equal to an earlier target
+      target_vertex[t] = v;
+      hint = v->face();
+    }
+  }
+
+  // inside faces: not reachable from the infinite face without crossing the border (the outside of
+  // a simple polygon is connected); each face is pushed once, so the fill is bounded
+  for(auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = none;
+  const std::size_t outside = none - 1;
+  {
+    std::vector<Face_handle> stack(1, cdt.infinite_face());
+    cdt.infinite_face()->info() = outside;
+    while(!stack.empty())
+    {
+      const Face_handle f = stack.back();
+      stack.pop_back();
+      for(int i = 0; i < 3; ++i)
+      {
+        const Face_handle g = f->neighbor(i);
+        if(g->info() == outside || f->is_constrained(i)) continue;
+        g->info() = outside;
+        stack.push_back(g);
+      }
+    }
+  }
+
+  // targets strictly inside: not a border point, not on a border edge, in an inside face
+  for(std::size_t t = 0; t < nt; ++t)
+  {
+    const Vertex_handle v = target_vertex[t];
+    if(v->info() < nb || cdt.are_there_incident_constraints(v)) return ERROR_CONSTRAINT_OUTSIDE_DOMAIN;
+    if(v->face()->info() == outside) return ERROR_CONSTRAINT_OUTSIDE_DOMAIN; // no constraint at v: all its faces agree
+  }
+  if(duplicate) return ERROR_DUPLICATE_CONSTRAINT;
+  if(cdt.number_of_vertices() != nn) return ERROR_DEGENERATE_BORDER; // cannot happen after the checks above
+
+  // ---- half-edges of the inside triangles -----------------------------------------------------------
+  std::size_t nf = 0;
+  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if(f->info() != outside) f->info() = nf++;
+  const std::size_t nh = 3 * nf;
+  std::vector<std::size_t> from(nh), to(nh), next(nh), prev(nh), twin(nh, none);
+  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+  {
+    if(f->info() == outside) continue;
+    const std::size_t id = f->info();
+    for(int i = 0; i < 3; ++i)
+    {
+      const std::size_t h = 3 * id + i;
+      from[h] = f->vertex(CDT::ccw(i))->info();
+      to[h] = f->vertex(CDT::cw(i))->info();
+      next[h] = 3 * id + (i + 1) % 3;
+      prev[h] = 3 * id + (i + 2) % 3;
+      const auto g = f->neighbor(i);
+      if(!f->is_constrained(i) && !cdt.is_infinite(g) && g->info() != outside) twin[h] = 3 * g->info() + g->index(f);
+    }
+  }
+  return merge_into_convex_polygons<Point_2>(point, nb, nt, ccw, flat, from, to, next, prev, twin, options, out);
+}
+
+} // namespace domain_detail
+
+/// Cuts the domain bounded by `border` into convex polygons whose corners are border points and
+/// targets, every target a corner (see the top of this file for the full contract).
+/// \tparam Point_2 a point of a CGAL kernel whose FT is supported (double, Gmpq, Gmpfr, ...)
+template <class Point_2>
+Error_code partition_domain(const std::vector<Point_2>& border, const std::vector<Point_2>& targets,
+                            Domain_partition& out,
+                            const Domain_partition_options& options = Domain_partition_options())
+{
+  typedef typename Point_ft<Point_2>::type FT;
+  static_assert(Check_number_type<FT>::value, "");
+  typedef Certification_kernel<FT> CKS;
+  typedef typename CKS::Kernel CK;
+
+  const std::size_t nb = border.size(), nt = targets.size(), nn = nb + nt;
+  const domain_detail::Node_points<Point_2> point{ border, targets };
+
+  // ---- input checks --------------------------------------------------------------------------
+  for(std::size_t n = 0; n < nn; ++n)
+    if(!is_finite_ft(point(n).x()) || !is_finite_ft(point(n).y()))
+      return ERROR_NON_FINITE_COORDINATES;
+
+  int orientation = 0;
+  const Polygon_class pc = classify_convex_polygon(border, Exact_orientation_2<Point_2>(), orientation);
+  if(pc == Polygon_class::DEGENERATE) return ERROR_DEGENERATE_BORDER;
+  if(pc == Polygon_class::NON_CONVEX)
+  {
+    if(!options.allow_non_convex_border) return ERROR_NON_CONVEX_BORDER;
+    return domain_detail::partition_simple_domain(border, targets, out, options);
+  }
+  if(pc == Polygon_class::CONVEX && !options.allow_flat_border_vertices) return ERROR_DEGENERATE_BORDER;
+  const bool ccw = orientation > 0;
+
+  // flat border vertices (only with allow_flat_border_vertices)
+  std::vector<char> flat(nb, 0);
+  std::size_t corner0 = nb;
+  for(std::size_t i = 0; i < nb; ++i)
+  {
+    flat[i] = exact_orientation(border[(i + nb - 1) % nb], border[i], border[(i + 1) % nb]) == CGAL::COLLINEAR;
+    if(!flat[i] && corner0 == nb) corner0 = i;
+  }
+  if(corner0 == nb) return ERROR_DEGENERATE_BORDER; // classified degenerate above; kept for safety
+
+  // targets strictly inside: fan search from a strict corner, counterclockwise
+  auto ccw_border = [&](std::size_t k) -> const Point_2& {
+    return ccw ? border[(corner0 + k) % nb] : border[(corner0 + nb - k % nb) % nb];
+  };
+  for(std::size_t t = 0; t < nt; ++t)
+    if(!domain_detail::strictly_inside_convex(nb, ccw_border, targets[t]))
+      return ERROR_CONSTRAINT_OUTSIDE_DOMAIN;
+
+  {
+    std::vector<std::size_t> order(nt);
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return exact_compare_xy(targets[a], targets[b]) == CGAL::SMALLER; });
+    for(std::size_t k = 1; k < nt; ++k)
+      if(exact_compare_xy(targets[order[k - 1]], targets[order[k]]) == CGAL::EQUAL)
+        return ERROR_DUPLICATE_CONSTRAINT;
+  }
+
+  // ---- constrained Delaunay triangulation -------------------------------------------------------
+  typedef CGAL::Triangulation_vertex_base_with_info_2<std::size_t, CK>           Vb;
+  typedef CGAL::Triangulation_face_base_with_info_2<std::size_t, CK>             Fbb;
+  typedef CGAL::Constrained_triangulation_face_base_2<CK, Fbb>                   Fb;
+  typedef CGAL::Triangulation_data_structure_2<Vb, Fb>                           Tds;
+  typedef CGAL::Constrained_Delaunay_triangulation_2<CK, Tds, CGAL::Exact_predicates_tag> CDT;
+  typedef typename CDT::Vertex_handle Vertex_handle;
+
+  CDT cdt;
+  {
+    std::vector<std::pair<typename CK::Point_2, std::size_t> > pts;
+    pts.reserve(nn);
+    for(std::size_t n = 0; n < nn; ++n) pts.emplace_back(CKS::convert(point(n)), n);
+    cdt.insert(pts.begin(), pts.end()); // spatially sorted insertion
+  }
+  if(cdt.number_of_vertices() != nn || cdt.dimension() != 2)
+    return ERROR_DEGENERATE_BORDER; // cannot happen after the checks above (distinct, not collinear)
+  std::vector<Vertex_handle> vh(nn);
+  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) vh[v->info()] = v;
+  for(std::size_t i = 0; i < nb; ++i) cdt.insert_constraint(vh[i], vh[(i + 1) % nb]);
+  if(cdt.number_of_vertices() != nn) return ERROR_DEGENERATE_BORDER; // no constraint crossed anything
+
+  // ---- half-edges of the triangles ---------------------------------------------------------------
+  // half-edge 3f+i of face f runs counterclockwise along the edge opposite to vertex i
+  std::size_t nf = 0;
+  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) f->info() = nf++;
+  const std::size_t nh = 3 * nf;
+  const std::size_t none = std::size_t(-1);
+  std::vector<std::size_t> from(nh), to(nh), next(nh), prev(nh), twin(nh, none);
+  for(auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+  {
+    const std::size_t id = f->info();
+    for(int i = 0; i < 3; ++i)
+    {
+      const std::size_t h = 3 * id + i;
+      from[h] = f->vertex(CDT::ccw(i))->info();
+      to[h] = f->vertex(CDT::cw(i))->info();
+      next[h] = 3 * id + (i + 1) % 3;
+      prev[h] = 3 * id + (i + 2) % 3;
+      const auto g = f->neighbor(i);
+      if(!cdt.is_infinite(g) && !f->is_constrained(i)) twin[h] = 3 * g->info() + g->index(f);
+    }
+  }
+
+  return domain_detail::merge_into_convex_polygons<Point_2>(point, nb, nt, ccw, flat, from, to, next, prev, twin,
+                                                            options, out);
+}
+
+/// Cuts the immersed disk bounded by the weakly self-overlapping polygon `border` into strictly convex
+/// polygons, from a triangulation of it (see the top of this file for the full contract).
+/// \tparam Point_2 a point of a CGAL kernel whose FT is supported (double, Gmpq, Gmpfr, ...)
+/// \param border the polygon, either orientation
+/// \param triangles its triangulation as an immersed disk, as `triangulate_self_overlapping_polygon_2()`
+///        writes it: `border.size() - 2` index triples, each strictly counterclockwise
+/// \param out written on success only; it has no target (`number_of_targets == 0`)
+/// \param options the merge order, and whether flat border vertices are accepted
+template <class Point_2>
+Error_code partition_immersed_domain(const std::vector<Point_2>& border,
+                                     const std::vector<std::array<std::size_t, 3> >& triangles,
+                                     Domain_partition& out,
+                                     const Domain_partition_options& options = Domain_partition_options())
+{
+  typedef typename Point_ft<Point_2>::type FT;
+  static_assert(Check_number_type<FT>::value, "");
+  const std::size_t nb = border.size();
+  const std::vector<Point_2> no_targets;
+  const domain_detail::Node_points<Point_2> point{ border, no_targets };
+  const std::size_t none = std::size_t(-1);
+
+  // ---- input checks --------------------------------------------------------------------------
+  for(std::size_t n = 0; n < nb; ++n)
+    if(!is_finite_ft(border[n].x()) || !is_finite_ft(border[n].y()))
+      return ERROR_NON_FINITE_COORDINATES;
+  if(nb < 3) return ERROR_DEGENERATE_BORDER;
+  for(std::size_t i = 0; i < nb; ++i)
+    if(exact_compare_xy(border[i], border[(i + 1) % nb]) == CGAL::EQUAL) return ERROR_DEGENERATE_BORDER;
+  if(triangles.size() != nb - 2) return ERROR_WRONG_PARAMETER;
+  for(const std::array<std::size_t, 3>& t : triangles)
+  {
+    if(t[0] >= nb || t[1] >= nb || t[2] >= nb || t[0] == t[1] || t[1] == t[2] || t[2] == t[0])
+      return ERROR_WRONG_PARAMETER;
+    if(exact_orientation(border[t[0]], border[t[1]], border[t[2]]) != CGAL::LEFT_TURN)
+      return ERROR_WRONG_PARAMETER;
+  }
+
+  // ---- half-edges, glued by their index pairs (the geometry overlaps: no point location) -----------
+  const std::size_t nf = triangles.size(), nh = 3 * nf;
+  std::vector<std::size_t> from(nh), to(nh), next(nh), prev(nh), twin(nh, none);
+  for(std::size_t f = 0; f < nf; ++f)
+    for(std::size_t i = 0; i < 3; ++i)
+    {
+      const std::size_t h = 3 * f + i;
+      from[h] = triangles[f][i];
+      to[h] = triangles[f][(i + 1) % 3];
+      next[h] = 3 * f + (i + 1) % 3;
+      prev[h] = 3 * f + (i + 2) % 3;
+    }
+  std::vector<std::size_t> order(nh);
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return std::make_pair(from[a], to[a]) < std::make_pair(from[b], to[b]); });
+  auto find_half_edge = [&](std::size_t u, std::size_t v) {
+    const auto it = std::lower_bound(order.begin(), order.end(), std::make_pair(u, v),
+      [&](std::size_t h, const std::pair<std::size_t, std::size_t>& key) { return std::make_pair(from[h], to[h]) < key; });
+    return (it != order.end() && from[*it] == u && to[*it] == v) ? *it : none;
+  };
+  for(std::size_t k = 1; k < nh; ++k)
+    if(from[order[k]] == from[order[k - 1]] && to[order[k]] == to[order[k - 1]]) return ERROR_WRONG_PARAMETER; // a repeated half-edge
+  // the border's orientation: its edges are the triangles' sides in one direction only
+  const bool ccw = find_half_edge(0, 1) != none;
+  std::vector<char> border_half_edge(nh, 0);
+  for(std::size_t i = 0; i < nb; ++i)
+  {
+    const std::size_t j = (i + 1) % nb;
+    const std::size_t h = ccw ? find_half_edge(i, j) : find_half_edge(j, i);
+    if(h == none || (ccw ? find_half_edge(j, i) : find_half_edge(i, j)) != none) return ERROR_WRONG_PARAMETER;
+    border_half_edge[h] = 1;
+  }
+  for(std::size_t h = 0; h < nh; ++h)
+  {
+    if(border_half_edge[h]) continue;
+    twin[h] = find_half_edge(to[h], from[h]);
+    if(twin[h] == none) return ERROR_WRONG_PARAMETER; // a diagonal must join exactly two triangles
+  }
+  // every node's triangles form one fan from its border half-edge (around u, the half-edge after h
+  // counterclockwise is twin(prev(h))): with n - 2 triangles and every node on the border, the
+  // triangles then form a disk bordered by the polygon (Euler characteristic 1)
+  std::vector<std::size_t> out_border(nb, none);
+  for(std::size_t h = 0; h < nh; ++h) if(border_half_edge[h]) out_border[from[h]] = h;
+  std::size_t corners = 0;
+  std::vector<char> flat(nb, 0);
+  for(std::size_t u = 0; u < nb; ++u)
+  {
+    const std::size_t h0 = out_border[u];
+    const std::size_t n1 = to[h0], n0 = ccw ? (u + nb - 1) % nb : (u + 1) % nb;
+    // flat: the total angle at u is exactly 180 degrees, i.e. collinear and every fan neighbour
+    // strictly left of u -> n1 (a total angle of 180 + 360 k, k >= 1, has a fan direction in
+    // [180, 360] since each step is below 180; 0 or 360 would be a reversal)
+    const bool collinear = exact_orientation(border[n0], border[u], border[n1]) == CGAL::COLLINEAR;
+    bool all_left = true;
+    std::size_t h = h0, step = 0;
+    for(; step < nh; ++step)
+    {
+      ++corners;
+      const std::size_t p = prev[h];
+      if(border_half_edge[p]) break; // the border half-edge into u: the fan is complete
+      h = twin[p];
+      if(h == h0) return ERROR_WRONG_PARAMETER; // a closed fan: u would be an interior node
+      if(exact_orientation(border[u], border[n1], border[to[h]]) != CGAL::LEFT_TURN) all_left = false;
+    }
+    if(step == nh) return ERROR_WRONG_PARAMETER;
+    if(collinear)
+    {
+      if(!options.allow_flat_border_vertices) return ERROR_DEGENERATE_BORDER;
+      flat[u] = all_left;
+    }
+  }
+  if(corners != nh) return ERROR_WRONG_PARAMETER; // some triangles are not in the fans: not a disk
+
+  Domain_partition result;
+  const Error_code ec = domain_detail::merge_into_convex_polygons<Point_2>(point, nb, 0, ccw, flat, from, to, next, prev,
+                                                                          twin, options, result);
+  if(ec != OK) return ec;
+
+  // consistency: V - E + F = 1 with the border edges counted, every polygon strictly convex (flat
+  // corners only at flat nodes)
+  if(std::ptrdiff_t(nb) - std::ptrdiff_t(nb + result.edges.size()) + std::ptrdiff_t(result.polygons.size()) != 1)
+    return ERROR_WRONG_PARAMETER;
+  for(const std::vector<std::size_t>& poly : result.polygons)
+    for(std::size_t k = 0, m = poly.size(); k < m; ++k)
+    {
+      const CGAL::Orientation o = exact_orientation(border[poly[(k + m - 1) % m]], border[poly[k]], border[poly[(k + 1) % m]]);
+      if(!(o == CGAL::LEFT_TURN || (o == CGAL::COLLINEAR && flat[poly[k]]))) return ERROR_WRONG_PARAMETER;
+    }
   out = std::move(result);
   return OK;
 }

@@ -1,0 +1,182 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+// constrained_embedding() onto fixed borders that are not convex: simple polygons (an L, a comb) give
+// certified embeddings, with and without constraints; a rectilinear strip winding 1.25 times around a
+// square (weakly self-overlapping) gives a certified immersion; constraints on it, and a polygon that
+// bounds no immersed disk, give clear errors with the mesh and uv untouched.
+
+#include <CGAL/Progressive_embedding/constrained_embedding.h>
+#include <CGAL/Progressive_embedding/check_embedding.h>
+#include <CGAL/Progressive_embedding/check_immersion.h>
+#include <CGAL/Progressive_embedding/internal/indexed_disk.h>
+
+#include "registry.h"
+#include "../test_util.h"
+#include "../protocols.h"
+
+#include <CGAL/boost/graph/helpers.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace {
+
+namespace PE = CGAL::Progressive_embedding;
+typedef Epick::Point_2 P2;
+
+// Places the border of m on the polygon Q (axis-parallel sides, in the border order of
+// make_indexed_disk: interior on the left) by 3D arc length: corner j goes to the border vertex whose
+// arc-length fraction is nearest to the corner's perimeter fraction (distinct, in order), the vertices
+// between two corners are spread on the side between them (one coordinate exactly constant).
+template <class Mesh, class UVM>
+bool border_on_polygon(const Mesh& m, UVM& uv, const std::vector<P2>& Q)
+{
+  PE::internal::Indexed_disk<Mesh> disk;
+  if(PE::internal::make_indexed_disk(m, boost::graph_traits<Mesh>::null_halfedge(), disk) != PE::OK) return false;
+  const std::size_t nb = disk.border.size(), nq = Q.size();
+  if(nb < 2 * nq) return false;
+  std::vector<double> s(nb + 1, 0.);
+  for(std::size_t k = 0; k < nb; ++k)
+  {
+    const auto p = get(CGAL::vertex_point, m, disk.vertices[disk.border[k]]);
+    const auto q = get(CGAL::vertex_point, m, disk.vertices[disk.border[(k + 1) % nb]]);
+    s[k + 1] = s[k] + std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q)));
+  }
+  std::vector<double> t(nq + 1, 0.);
+  for(std::size_t j = 0; j < nq; ++j) t[j + 1] = t[j] + std::sqrt(CGAL::squared_distance(Q[j], Q[(j + 1) % nq]));
+  std::vector<std::size_t> at(nq, 0);
+  for(std::size_t j = 1; j < nq; ++j)
+  {
+    const double f = t[j] / t[nq];
+    std::size_t best = at[j - 1] + 1;
+    for(std::size_t k = best; k + (nq - j) < nb; ++k)
+      if(std::abs(s[k] / s[nb] - f) < std::abs(s[best] / s[nb] - f)) best = k;
+    at[j] = best;
+  }
+  for(std::size_t j = 0; j < nq; ++j)
+  {
+    const std::size_t a = at[j], b = (j + 1 < nq) ? at[j + 1] : nb;
+    const P2 A = Q[j], B = Q[(j + 1) % nq];
+    for(std::size_t k = a; k < b; ++k)
+    {
+      const double u = (s[k] - s[a]) / (s[b] - s[a]);
+      // axis-parallel sides: the constant coordinate is copied, the other interpolated
+      const double x = A.x() == B.x() ? A.x() : A.x() + u * (B.x() - A.x());
+      const double y = A.y() == B.y() ? A.y() : A.y() + u * (B.y() - A.y());
+      put(uv, disk.vertices[disk.border[k]], P2(x, y));
+    }
+  }
+  return true;
+}
+
+template <class Mesh>
+int embed_on(const std::string& what, Mesh m, const std::vector<P2>& Q, const std::vector<P2>& targets, bool expect_immersion)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor VD;
+  auto uv = make_uv_map(m, P2());
+  for(auto v : vertices(m)) put(uv, v, P2(0, 0));
+  CHECK(border_on_polygon(m, uv, Q), "border placed on the polygon");
+  std::vector<std::pair<VD, P2> > C;
+  std::vector<VD> interior;
+  for(auto v : vertices(m)) if(!CGAL::is_border(v, m)) interior.push_back(v);
+  std::mt19937 rng(7);
+  std::shuffle(interior.begin(), interior.end(), rng);
+  for(std::size_t i = 0; i < targets.size(); ++i) C.emplace_back(interior[i], targets[i]);
+  std::vector<VD> border;
+  std::vector<P2> border_uv;
+  for(auto v : vertices(m)) if(CGAL::is_border(v, m)) { border.push_back(v); border_uv.push_back(get(uv, v)); }
+  PE::Constrained_embedding_statistics st;
+  const PE::Error_code ec = PE::constrained_embedding(m, C, uv, PE::parameters::statistics(&st));
+  std::cout << what << ", " << targets.size() << " targets: " << PE::get_error_message(ec) << ", vertices "
+            << st.input_vertices << " -> " << st.output_vertices << ", Steiner " << st.steiner_vertices << ", paths "
+            << st.paths << ", patches " << st.patches << ", immersion " << st.immersion << ", seconds " << st.seconds_total
+            << "; mean energy " << st.report_before_optimization.mean_energy_3d << " -> " << st.report.mean_energy_3d << std::endl;
+  CHECK(ec == PE::OK, "constrained_embedding OK");
+  for(std::size_t i = 0; i < border.size(); ++i) CHECK(get(uv, border[i]) == border_uv[i], "border bit-exact");
+  for(const auto& c : C) CHECK(get(uv, c.first) == c.second, "constraint bit-exact");
+  const PE::Immersion_report ir = PE::check_immersion(m, uv);
+  std::cout << "  " << ir.summary() << std::endl;
+  CHECK(ir.is_immersion(), "certified immersion on the caller's mesh");
+  const PE::Embedding_report er = PE::check_embedding(m, uv);
+  if(expect_immersion)
+  {
+    CHECK(st.immersion && st.immersion_report.is_immersion() && !st.optimized, "reported as an immersion, not optimized");
+    CHECK(!er.border_simple, "an immersion of an overlapping border is not an embedding");
+  }
+  else
+  {
+    std::cout << "  " << er.summary() << std::endl;
+    CHECK(!st.immersion && er.is_valid() && er.flipped == 0 && er.degenerate == 0 && er.overlapping_pairs == 0,
+          "certified embedding on the caller's mesh");
+    CHECK(st.optimized && st.report.is_valid(), "optimized, certified");
+  }
+  return EXIT_SUCCESS;
+}
+
+// an L: the unit square without its upper right quarter; a comb with three teeth
+std::vector<P2> l_shape() { return { P2(0, 0), P2(1, 0), P2(1, 0.5), P2(0.5, 0.5), P2(0.5, 1), P2(0, 1) }; }
+std::vector<P2> comb()
+{
+  return { P2(0, 0), P2(5, 0), P2(5, 3), P2(4, 3), P2(4, 1), P2(3, 1), P2(3, 3), P2(2, 3), P2(2, 1), P2(1, 1), P2(1, 3), P2(0, 3) };
+}
+// a strip of width 1 along the square path (1,0) -> (4,0) -> (4,4) -> (0,4) -> (0,0) -> (3,0): it winds
+// 1.25 times and its last part lies on its first one (weakly self-overlapping, not simple)
+std::vector<P2> spiral_strip()
+{
+  return { P2(1, -0.5), P2(4.5, -0.5), P2(4.5, 4.5), P2(-0.5, 4.5), P2(-0.5, -0.5), P2(3, -0.5),
+           P2(3, 0.5), P2(0.5, 0.5), P2(0.5, 3.5), P2(3.5, 3.5), P2(3.5, 0.5), P2(1, 0.5) };
+}
+
+} // namespace
+
+PE_TEST_GROUP(constrained_embedding_non_convex)
+{
+  Surface_mesh grid;
+  PE::internal::make_grid_disk(20, grid);
+  Surface_mesh mushroom;
+  if(!read_mesh(data_dir + "/meshes/mushroom.off", mushroom)) return EXIT_FAILURE;
+  RUN(embed_on("grid 20x20 on an L", grid, l_shape(), {}, false));
+  RUN(embed_on("grid 20x20 on an L", grid, l_shape(), { P2(0.25, 0.25), P2(0.75, 0.25), P2(0.25, 0.75) }, false));
+  RUN(embed_on("mushroom on an L", mushroom, l_shape(), { P2(0.2, 0.2), P2(0.8, 0.3), P2(0.3, 0.8) }, false));
+  RUN(embed_on("mushroom on a comb", mushroom, comb(), {}, false));
+  RUN(embed_on("mushroom on a comb", mushroom, comb(), { P2(0.5, 2.5), P2(2.5, 0.5), P2(4.5, 2.5) }, false));
+  Polyhedron poly;
+  if(!read_mesh(data_dir + "/meshes/mushroom.off", poly)) return EXIT_FAILURE;
+  RUN(embed_on("mushroom (Polyhedron_3) on an L", poly, l_shape(), { P2(0.2, 0.2), P2(0.8, 0.3), P2(0.3, 0.8) }, false));
+  return EXIT_SUCCESS;
+}
+
+PE_TEST_GROUP(constrained_embedding_immersion)
+{
+  Surface_mesh mushroom;
+  if(!read_mesh(data_dir + "/meshes/mushroom.off", mushroom)) return EXIT_FAILURE;
+  RUN(embed_on("mushroom on a strip winding 1.25 times", mushroom, spiral_strip(), {}, true));
+  // errors: constraints on an overlapping border; a figure eight (no immersed disk); mesh and uv untouched
+  typedef boost::graph_traits<Surface_mesh>::vertex_descriptor VD;
+  auto expect = [&](const std::vector<P2>& Q, const std::vector<std::pair<VD, P2> >& C, PE::Error_code code, const char* what) -> int
+  {
+    Surface_mesh m = mushroom;
+    auto uv = make_uv_map(m, P2());
+    for(auto v : vertices(m)) put(uv, v, P2(0, 0));
+    CHECK(border_on_polygon(m, uv, Q), "border placed");
+    std::vector<P2> before;
+    for(auto v : vertices(m)) before.push_back(get(uv, v));
+    const std::size_t nv = m.number_of_vertices();
+    const PE::Error_code ec = PE::constrained_embedding(m, C, uv);
+    std::cout << what << ": " << PE::get_error_message(ec) << std::endl;
+    CHECK(ec == code, what);
+    CHECK(m.number_of_vertices() == nv, "mesh unchanged");
+    std::size_t i = 0;
+    for(auto v : vertices(m)) CHECK(get(uv, v) == before[i++], "uv unchanged");
+    return EXIT_SUCCESS;
+  };
+  VD inner = *vertices(mushroom).begin();
+  for(auto v : vertices(mushroom)) if(!CGAL::is_border(v, mushroom)) { inner = v; break; }
+  RUN(expect(spiral_strip(), { { inner, P2(2, 4) } }, PE::ERROR_CONSTRAINT_OUTSIDE_DOMAIN, "a constraint on an overlapping border"));
+  const std::vector<P2> eight = { P2(0, 0), P2(2, 2), P2(2, 0), P2(0, 2) }; // a bowtie: crosses itself
+  RUN(expect(eight, {}, PE::ERROR_NOT_SELF_OVERLAPPING, "a figure eight"));
+  return EXIT_SUCCESS;
+}

@@ -10,7 +10,7 @@
 # --benchmark  also runs pe_benchmark again on the failing corpus runs (study_tutte_failures.tsv)
 #              and the generated grids: progressive_embedding.{csv,md} and, with --optimize,
 #              progressive_embedding_optimized.{csv,md} (tens of minutes).
-# --constrained also runs constrained_benchmark again: constrained_embedding.{csv,md} (about an hour).
+# --constrained also runs constrained_benchmark again: constrained_embedding*.{csv,md} (about 15 minutes).
 # --build DIR  the CMake build directory (default: build); the drivers are built there.
 # --out DIR    the results folder (default: benchmark/results), e.g. a copy to compare with.
 #
@@ -60,8 +60,14 @@ if [ "$benchmark" = 1 ]; then
 fi
 if [ "$constrained" = 1 ]; then
   cmake --build "$build" --target constrained_benchmark
-  # exits 1 when a run did not end certified (the table lists those runs): keep the tables anyway
+  # exits 1 when a run did not end certified (the tables list those runs): keep the tables anyway
+  meshes=retinal.off,dino.off,homer.off,camel.off,bear_bis.off,man.off,diplodocus.off,mushroom.off,lion-head.off,mannequin-devil.off
   "$build/bin/constrained_benchmark" "$build/cgal_data/data" "$results/constrained_embedding" \
-    --min-vertices 1000 --optimize-seeds 1 --budget 120 || true
+    --meshes "$meshes" --seeds 10 --counts 3 --optimize-seeds 0 --budget 60 || true
+  "$build/bin/constrained_benchmark" "$build/cgal_data/data" "$results/constrained_embedding_many" \
+    --meshes "$meshes" --seeds 3 --counts 10,50 --optimize-seeds 0 --budget 60 || true
+  "$build/bin/constrained_benchmark" "$build/cgal_data/data" "$results/constrained_embedding_optimized" \
+    --meshes retinal.off,dino.off,homer.off,mushroom.off,lion-head.off --seeds 1 --counts 3,10 --targets layout \
+    --optimize-seeds 1 --budget 120 || true
 fi
 echo "$results regenerated"

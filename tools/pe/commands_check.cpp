@@ -14,6 +14,8 @@
 #include <cstring>
 #include <iostream>
 
+#include <CGAL/Progressive_embedding/check_immersion.h>
+
 namespace pe_tool {
 
 PE::Embedding_report certify(const Input& in) { return PE::check_embedding(in.mesh, in.uv); }
@@ -189,6 +191,11 @@ int cmd_check(const Arguments& a)
       return run.finish(EXIT_INVALID);
     }
   }
+  // a map that is not an embedding may still be an immersion (locally injective, overlapping itself)
+  const PE::Immersion_report immersion = PE::check_immersion(in.mesh, in.uv);
+  run.result.add("immersion", immersion.is_immersion());
+  if(!report.is_valid() && immersion.is_immersion())
+    run.summary << "; an immersion: locally injective, the border overlapping itself";
   run.result.add("ok", report.is_valid());
   return finish_with_map_status(run, in, report);
 }

@@ -7,6 +7,8 @@
 #include "cli.h"
 #include "pe.h"
 
+#include <CGAL/Progressive_embedding/check_immersion.h>
+
 #include <CGAL/Progressive_embedding/constrained_embedding.h>
 
 #include <cmath>
@@ -112,8 +114,18 @@ int cmd_constrain(const Arguments& a)
   picture.color_by_distortion = false;
   picture.title = in.filename + ": " + std::to_string(fixed.size()) + " constrained vertices, " + std::to_string(st.patches)
                 + " patches, " + std::to_string(st.steiner_vertices) + " Steiner vertices, "
-                + (st.report.is_valid() ? "valid" : "INVALID");
-  return write_and_finish(run, in, a.positional[1], st.report, a.get("--svg"), picture);
+                + (st.immersion ? (st.immersion_report.is_immersion() ? "immersion" : "NOT AN IMMERSION")
+                                : (st.report.is_valid() ? "valid" : "INVALID"));
+  run.result.add("immersion", st.immersion && st.immersion_report.is_immersion());
+  if(!st.immersion) return write_and_finish(run, in, a.positional[1], st.report, a.get("--svg"), picture);
+  // a weakly self-overlapping border: the map is an immersion, certified by check_immersion() on the map written
+  add_report(run.result, st.report);
+  const PE::Immersion_report ir = PE::check_immersion(in.mesh, in.uv);
+  const int w = write_outputs(run, in, a.positional[1], a.get("--svg"), picture);
+  if(w != EXIT_VALID) return w;
+  run.result.add("written", true);
+  run.summary << ir.summary() << " (the border overlaps itself: not an embedding)";
+  return run.finish(ir.is_immersion() ? EXIT_VALID : EXIT_INVALID);
 }
 
 } // namespace pe_tool

@@ -151,13 +151,15 @@ const std::vector<Command_spec>& command_table()
       { "--free-border", "--fix", "--iterations", "--tolerance", "--time-limit", "--no-progress" },
       "lower the symmetric Dirichlet distortion of the valid uv map of IN without leaving the valid maps;\n"
       "the border (unless --free-border) and the vertices of --fix are kept bit-exactly", cmd_optimize },
-    { "constrain", "IN OUT.obj --fix FILE", 2, 2, 1,
+    { "constrain", "IN OUT.obj", 2, 2, 1,
       { "--fix", "--border", "--weights", "--no-optimize", "--svg", "--time-limit", "--no-progress" },
       "a map in which the vertices of --fix land bit-exactly on their targets (MatchMaker++: the mesh is\n"
       "refined by Steiner vertices on its edges where needed, new vertices written after the input's),\n"
       "certified, then optimized (unless --no-optimize); the border from the vt of IN, or --border\n"
       "circle|square|triangle (needed without vt); --svg draws the patches, the paths between them and\n"
-      "the constrained vertices", cmd_constrain },
+      "the constrained vertices. Without --fix (or with an empty file) only the border is prescribed; a vt\n"
+      "border may be non-convex: simple (an embedding) or weakly self-overlapping (an immersion, certified\n"
+      "locally injective, border only, not optimized; JSON \"immersion\": true)", cmd_constrain },
     { "generate", "stacked DEPTH OUT.obj | grid N OUT.obj", 3, 3, 2, {},
       "test inputs: the deep stacked triangulation (DEPTH 0 to 100000; corners pinned as in the thingi\n"
       "protocol, interior at the first corner) or an N x N grid disk (N 2 to 4000; uv = xy)", cmd_generate },

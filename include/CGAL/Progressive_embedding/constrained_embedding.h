@@ -529,9 +529,9 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
   if(ec == ERROR_NON_CONVEX_BORDER && non_convex)
   {
     if(holes) return finish(ERROR_NOT_A_DISK); // an immersion with holes is not supported
-    if(!targets.empty()) return finish(ERROR_CONSTRAINT_OUTSIDE_DOMAIN);
     immersed = true;
-    ec = partition_immersed(B);
+    ec = partition_immersed(B); // ERROR_NOT_SELF_OVERLAPPING first: it says what is wrong with the border
+    if(ec == OK && !targets.empty()) return finish(ERROR_CONSTRAINT_OUTSIDE_DOMAIN);
   }
   if(ec == ERROR_NON_CONVEX_BORDER && shape != Border_shape::FIXED)
   {

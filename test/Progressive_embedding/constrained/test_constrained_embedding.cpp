@@ -391,13 +391,21 @@ PE_TEST_GROUP(constrained_embedding_errors)
   { auto c = C; c[1].second = Point_2(5, 5); RUN(expect(c, PE::ERROR_CONSTRAINT_OUTSIDE_DOMAIN, "target outside")); }
   { auto c = C; c[1].second = get(uv, bv); RUN(expect(c, PE::ERROR_CONSTRAINT_OUTSIDE_DOMAIN, "target on the border")); }
   {
-    // a non-convex fixed border
+    // a fixed border on a figure eight (turning number 0): it bounds no immersed disk (non-convex simple
+    // and weakly self-overlapping borders are accepted: test_non_convex_borders.cpp)
     auto uv2 = make_uv_map(m, Point_2());
     for(auto v : vertices(m)) put(uv2, v, get(uv, v));
-    put(uv2, bv, Point_2(0.5, 0.5));
+    PE::internal::Indexed_disk<Surface_mesh> disk;
+    CHECK(PE::internal::make_indexed_disk(m, boost::graph_traits<Surface_mesh>::null_halfedge(), disk) == PE::OK, "disk");
+    const double pi = std::acos(-1.0);
+    for(std::size_t k = 0; k < disk.border.size(); ++k)
+    {
+      const double t = 2 * pi * (double(k) + 0.5) / double(disk.border.size());
+      put(uv2, disk.vertices[disk.border[k]], Point_2(0.5 + 0.4 * std::sin(2 * t), 0.5 + 0.4 * std::sin(t)));
+    }
     const PE::Error_code ec = PE::constrained_embedding(m, C, uv2);
-    std::cout << "non-convex border: " << PE::get_error_message(ec) << std::endl;
-    CHECK(ec == PE::ERROR_NON_CONVEX_BORDER || ec == PE::ERROR_DEGENERATE_BORDER, "non-convex border refused");
+    std::cout << "figure-eight border: " << PE::get_error_message(ec) << std::endl;
+    CHECK(ec == PE::ERROR_NOT_SELF_OVERLAPPING, "a border bounding no immersed disk refused");
     CHECK(before.same_mesh(m), "mesh unchanged");
   }
   {

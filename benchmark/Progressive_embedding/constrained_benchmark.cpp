@@ -160,13 +160,12 @@ std::string fmt(double x, int prec = 3)
   return o.str();
 }
 
-// constrained_embedding() on a copy of `m`, border already in uv
-Row run(const SM& m0, UV_map uv0, const std::vector<std::pair<vertex_descriptor, K::Point_2> >& constraints,
+// constrained_embedding() on a copy of `m0`, whose "v:uv" property holds the border
+Row run(const SM& m0, const std::vector<std::pair<vertex_descriptor, K::Point_2> >& constraints,
         bool optimize, double budget, std::size_t max_steiner)
 {
   SM m = m0; // the property maps are copied with the mesh
   UV_map uv = m.property_map<vertex_descriptor, K::Point_2>("v:uv").first;
-  (void)uv0;
   PE::Constrained_embedding_statistics st;
   if(max_steiner == 0) max_steiner = 4 * m.number_of_edges() + 1000; // constrained_embedding()'s default
   reset_peak_rss();
@@ -287,7 +286,7 @@ int main(int argc, char** argv)
       double unconstrained = -1;
       if(optimize)
       {
-        const Row u = run(m, uv, {}, true, budget, max_steiner);
+        const Row u = run(m, {}, true, budget, max_steiner);
         if(u.status == "OK") unconstrained = u.mean_after;
       }
       for(std::size_t count : counts)
@@ -317,7 +316,7 @@ int main(int argc, char** argv)
           if(used.insert({t.x(), t.y()}).second) constraints.emplace_back(pick[j], t);
         }
         if(constraints.size() < count) continue;
-        Row r = run(m, uv, constraints, optimize, budget, max_steiner);
+        Row r = run(m, constraints, optimize, budget, max_steiner);
         r.kind = disk ? "disk" : "closed";
         r.targets = targets;
         r.mesh = name; r.seed = seed;

@@ -102,6 +102,73 @@ int direction_half(const Point_2& c, const Point_2& p)
   return CGAL::compare(p.x(), c.x()) == CGAL::LARGER ? 0 : 1;
 }
 
+
+// the certificate of check_immersion() on a disk already indexed (its border order is the one the
+// border-polygon overload compares with)
+template <class TriangleMesh, class VertexUVMap, class Orientation_2>
+Immersion_report check_immersion_of_disk(const Indexed_disk<TriangleMesh>& disk, VertexUVMap uvm,
+                                         const Orientation_2& orient)
+{
+  typedef typename Uv_map_types<VertexUVMap>::Point_2 Point_2;
+  Immersion_report r;
+  const std::size_t nv = disk.number_of_vertices(), nf = disk.number_of_faces();
+  r.faces = nf;
+  r.vertices = nv;
+  r.border_vertices = disk.border.size();
+
+  std::vector<Point_2> P(nv);
+  std::vector<char> finite(nv, 1);
+  for(std::size_t i = 0; i < nv; ++i)
+  {
+    P[i] = get(uvm, disk.vertices[i]);
+    if(!is_finite_ft(P[i].x()) || !is_finite_ft(P[i].y())) { finite[i] = 0; ++r.non_finite; }
+  }
+
+  // face orientations; the map's orientation is the majority one (a mirror image is an immersion too)
+  std::vector<signed char> sign(nf, 0);
+  std::size_t positive = 0, negative = 0;
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    const auto& t = disk.faces[f];
+    if(!finite[t[0]] || !finite[t[1]] || !finite[t[2]]) { sign[f] = 2; continue; } // not decided
+    const CGAL::Orientation o = orient(P[t[0]], P[t[1]], P[t[2]]);
+    sign[f] = static_cast<signed char>(o == CGAL::POSITIVE ? 1 : o == CGAL::NEGATIVE ? -1 : 0);
+    if(o == CGAL::POSITIVE) ++positive;
+    else if(o == CGAL::NEGATIVE) ++negative;
+    else ++r.degenerate;
+  }
+  r.clockwise = negative > positive;
+  const signed char good = r.clockwise ? -1 : 1;
+  r.flipped = r.clockwise ? positive : negative;
+
+  // winding of each interior one-ring: a correctly oriented face (c, a, b) turns the direction from c by an
+  // angle in (0, pi) counterclockwise (clockwise for a mirror image); the turn passes the direction (1, 0) iff
+  // it goes from the lower half-open half-plane to the upper one (the reverse for a mirror image)
+  std::vector<std::size_t> turns(nv, 0);
+  std::vector<char> bad(nv, 0);
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    const auto& t = disk.faces[f];
+    const bool ok = sign[f] == good;
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t c = t[k], a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+      if(disk.on_border[c]) continue;
+      if(!ok) { bad[c] = 1; continue; }
+      const int ha = direction_half(P[c], P[a]), hb = direction_half(P[c], P[b]);
+      if(r.clockwise ? (ha == 0 && hb == 1) : (ha == 1 && hb == 0)) ++turns[c];
+    }
+  }
+  for(std::size_t i = 0; i < nv; ++i)
+  {
+    if(disk.on_border[i]) continue;
+    if(bad[i]) { ++r.unchecked_vertices; continue; }
+    r.max_winding = (std::max)(r.max_winding, turns[i]);
+    if(turns[i] != 1) ++r.winding_errors;
+  }
+  return r;
+}
+
 } // namespace internal
 
 /// \ingroup PkgProgressiveEmbeddingMainFunctions
@@ -142,71 +209,15 @@ Immersion_report check_immersion(const TriangleMesh& tm, VertexUVMap uvm,
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef typename internal::Check_traits<VertexUVMap, CGAL_NP_CLASS>::type Traits;
-  typedef typename internal::Uv_map_types<VertexUVMap>::Point_2             Point_2;
   const Traits traits = choose_parameter<Traits>(get_parameter(np, CGAL::internal_np::geom_traits));
   const typename Traits::Exact_orientation_2 orient = traits.exact_orientation_2_object();
 
-  Immersion_report r;
   internal::Indexed_disk<TriangleMesh> disk;
-  r.status = internal::make_indexed_disk(tm, boost::graph_traits<TriangleMesh>::null_halfedge(), disk);
-  if(r.status != OK) return r;
-  const std::size_t nv = disk.number_of_vertices(), nf = disk.number_of_faces();
-  r.faces = nf;
-  r.vertices = nv;
-  r.border_vertices = disk.border.size();
-
-  std::vector<Point_2> P(nv);
-  std::vector<char> finite(nv, 1);
-  for(std::size_t i = 0; i < nv; ++i)
-  {
-    P[i] = get(uvm, disk.vertices[i]);
-    if(!internal::is_finite_ft(P[i].x()) || !internal::is_finite_ft(P[i].y())) { finite[i] = 0; ++r.non_finite; }
-  }
-
-  // face orientations; the map's orientation is the majority one (a mirror image is an immersion too)
-  std::vector<signed char> sign(nf, 0);
-  std::size_t positive = 0, negative = 0;
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    const auto& t = disk.faces[f];
-    if(!finite[t[0]] || !finite[t[1]] || !finite[t[2]]) { sign[f] = 2; continue; } // not decided
-    const CGAL::Orientation o = orient(P[t[0]], P[t[1]], P[t[2]]);
-    sign[f] = static_cast<signed char>(o == CGAL::POSITIVE ? 1 : o == CGAL::NEGATIVE ? -1 : 0);
-    if(o == CGAL::POSITIVE) ++positive;
-    else if(o == CGAL::NEGATIVE) ++negative;
-    else ++r.degenerate;
-  }
-  r.clockwise = negative > positive;
-  const signed char good = r.clockwise ? -1 : 1;
-  r.flipped = r.clockwise ? positive : negative;
-
-  // winding of each interior one-ring: a correctly oriented face (c, a, b) turns the direction from c by an
-  // angle in (0, pi) counterclockwise (clockwise for a mirror image); the turn passes the direction (1, 0) iff
-  // it goes from the lower half-open half-plane to the upper one (the reverse for a mirror image)
-  std::vector<std::size_t> turns(nv, 0);
-  std::vector<char> bad(nv, 0);
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    const auto& t = disk.faces[f];
-    const bool ok = sign[f] == good;
-    for(int k = 0; k < 3; ++k)
-    {
-      const std::size_t c = t[k], a = t[(k + 1) % 3], b = t[(k + 2) % 3];
-      if(disk.on_border[c]) continue;
-      if(!ok) { bad[c] = 1; continue; }
-      const int ha = internal::direction_half(P[c], P[a]), hb = internal::direction_half(P[c], P[b]);
-      if(r.clockwise ? (ha == 0 && hb == 1) : (ha == 1 && hb == 0)) ++turns[c];
-    }
-  }
-  for(std::size_t i = 0; i < nv; ++i)
-  {
-    if(disk.on_border[i]) continue;
-    if(bad[i]) { ++r.unchecked_vertices; continue; }
-    r.max_winding = (std::max)(r.max_winding, turns[i]);
-    if(turns[i] != 1) ++r.winding_errors;
-  }
-  return r;
+  const Error_code ec = internal::make_indexed_disk(tm, boost::graph_traits<TriangleMesh>::null_halfedge(), disk);
+  if(ec != OK) { Immersion_report r; r.status = ec; return r; }
+  return internal::check_immersion_of_disk(disk, uvm, orient);
 }
+
 
 /// \ingroup PkgProgressiveEmbeddingMainFunctions
 ///
@@ -226,10 +237,14 @@ Immersion_report check_immersion(const TriangleMesh& tm, VertexUVMap uvm,
                                  const PointRange& border,
                                  const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
-  Immersion_report r = check_immersion(tm, uvm, np);
-  if(r.status != OK) return r;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename internal::Check_traits<VertexUVMap, CGAL_NP_CLASS>::type Traits;
+  const Traits traits = choose_parameter<Traits>(get_parameter(np, CGAL::internal_np::geom_traits));
   internal::Indexed_disk<TriangleMesh> disk;
-  internal::make_indexed_disk(tm, boost::graph_traits<TriangleMesh>::null_halfedge(), disk);
+  const Error_code ec = internal::make_indexed_disk(tm, boost::graph_traits<TriangleMesh>::null_halfedge(), disk);
+  if(ec != OK) { Immersion_report r; r.status = ec; return r; }
+  Immersion_report r = internal::check_immersion_of_disk(disk, uvm, traits.exact_orientation_2_object());
   const std::size_t n = disk.border.size();
   if(static_cast<std::size_t>(std::distance(std::begin(border), std::end(border))) != n)
   {

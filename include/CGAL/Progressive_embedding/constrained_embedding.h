@@ -559,14 +559,8 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
   }
   stats.paths = partition.edges.size();
   if(verbose)
-  {
     std::cerr << "[constrained_embedding] partition: " << partition.edges.size() << " interior edges, "
               << partition.polygons.size() << " polygons" << (immersed ? " (immersed)" : "") << std::endl;
-    if(immersed)
-      for(const auto& e : partition.edges)
-        std::cerr << "  edge " << e[0] << " (" << CGAL::to_double(B[e[0]].x()) << ", " << CGAL::to_double(B[e[0]].y())
-                  << ") - " << e[1] << " (" << CGAL::to_double(B[e[1]].x()) << ", " << CGAL::to_double(B[e[1]].y()) << ")\n";
-  }
   stats.seconds_partition = timer.time() - stats.seconds_validation;
 
   // ---- 3. the working copy, path tracing, chord splits -------------------------------------

@@ -12,6 +12,7 @@
 //   commands_tutte.cpp     tutte, thingi, random-init (and the Tutte step of the others)
 //   commands_repair.cpp    untangle, embed, optimize (and the repair and optimization steps)
 //   commands_constrain.cpp constrain (maps with positional constraints)
+//   commands_polygon.cpp   polygon (simple and weakly self-overlapping polygons)
 //   commands_check.cpp     check, svg (and the certificate of every other command)
 //   commands_generate.cpp  generate
 //   commands_demo.cpp      demo
@@ -177,6 +178,7 @@ int cmd_untangle(const Arguments& a);
 int cmd_embed(const Arguments& a);
 int cmd_optimize(const Arguments& a);
 int cmd_constrain(const Arguments& a);
+int cmd_polygon(const Arguments& a);
 int cmd_generate(const Arguments& a);
 int cmd_demo(const Arguments& a);
 

@@ -249,27 +249,41 @@ int read_input(Run& run, const std::string& filename, Input& in, Uv_mode mode, S
   return check_mesh(run, what, in.mesh, shape);
 }
 
-int read_constraints(Run& run, const std::string& filename, Input& in, std::vector<vertex_descriptor>& fixed)
+// Reads the text file `filename` line by line for the small data files of the tool (--fix, polygons):
+// each non-empty line that is not a `#` comment is split into at most `max_tokens` whitespace-separated
+// tokens and passed to `line_fn(lineno, tokens)`, which returns EXIT_VALID to go on or a failure status.
+// `what` starts the failure reports (unreadable file, a line over 4096 characters).
+template <class Line_fn>
+int for_each_data_line(Run& run, const std::string& filename, const std::string& what, std::size_t max_tokens, Line_fn line_fn)
 {
-  const std::string what = "cannot use --fix '" + filename + "'";
   const std::string problem = input_file_problem(filename);
   if(!problem.empty()) return run.fail(PE::ERROR_CANNOT_READ_FILE, what, problem);
   std::ifstream f(filename, std::ios::binary);
   std::string line;
   bool too_long = false;
-  const std::size_t n = in.mesh.number_of_vertices();
   for(std::size_t lineno = 1; ; ++lineno)
   {
     if(!bounded_getline(f, line, 4096, too_long))
     {
       if(too_long) return run.fail(PE::ERROR_MALFORMED_FILE, what, "line " + std::to_string(lineno) + ": line too long");
-      break;
+      return EXIT_VALID;
     }
     if(!line.empty() && line.back() == '\r') line.pop_back();
     std::vector<std::string> tokens;
     std::istringstream ls(line);
-    for(std::string t; ls >> t && tokens.size() < 4; ) tokens.push_back(t);
+    for(std::string t; ls >> t && tokens.size() < max_tokens; ) tokens.push_back(t);
     if(tokens.empty() || tokens[0][0] == '#') continue;
+    const int status = line_fn(lineno, tokens);
+    if(status != EXIT_VALID) return status;
+  }
+}
+
+int read_constraints(Run& run, const std::string& filename, Input& in, std::vector<vertex_descriptor>& fixed)
+{
+  const std::string what = "cannot use --fix '" + filename + "'";
+  const std::size_t n = in.mesh.number_of_vertices();
+  return for_each_data_line(run, filename, what, 4, [&](std::size_t lineno, const std::vector<std::string>& tokens) -> int
+  {
     unsigned long long index = 0;
     std::string why;
     double u = 0, v = 0;
@@ -297,8 +311,33 @@ int read_constraints(Run& run, const std::string& filename, Input& in, std::vect
     const vertex_descriptor vd(static_cast<Mesh::size_type>(index));
     in.uv[vd] = Point_2(u, v);
     fixed.push_back(vd);
-  }
-  return EXIT_VALID;
+    return EXIT_VALID;
+  });
+}
+
+int read_polygon(Run& run, const std::string& filename, std::vector<Point_2>& points)
+{
+  const std::string what = "cannot read the polygon '" + filename + "'";
+  return for_each_data_line(run, filename, what, 3, [&](std::size_t lineno, const std::vector<std::string>& tokens) -> int
+  {
+    std::string why;
+    double xy[2] = { 0, 0 };
+    if(tokens.size() != 2) why = tokens.size() < 2 ? plural(tokens.size(), "field") : std::string("more than 2 fields");
+    for(int k = 0; k < 2 && why.empty(); ++k)
+    {
+      char* end = nullptr;
+      xy[k] = std::strtod(tokens[k].c_str(), &end);
+      if(end == tokens[k].c_str() || *end != '\0') why = std::string(k ? "y" : "x") + " '" + tokens[k] + "' is not a number";
+      else if(!std::isfinite(xy[k]))
+        return run.fail(PE::ERROR_NON_FINITE_COORDINATES, what, "line " + std::to_string(lineno) + ": " +
+                        (k ? "y" : "x") + " '" + tokens[k] + "' is not finite");
+    }
+    if(!why.empty())
+      return run.fail(PE::ERROR_MALFORMED_FILE, what, "line " + std::to_string(lineno) + ": " + why +
+                      " (expected one vertex per line: 'x y', finite numbers; '#' starts a comment)");
+    points.emplace_back(xy[0], xy[1]);
+    return EXIT_VALID;
+  });
 }
 
 int write_picture(Run& run, const Input& in, const std::string& svg, const Picture& picture)

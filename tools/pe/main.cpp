@@ -159,7 +159,12 @@ const std::vector<Command_spec>& command_table()
       "circle|square|triangle (needed without vt); --svg draws the patches, the paths between them and\n"
       "the constrained vertices. Without --fix (or with an empty file) only the border is prescribed; a vt\n"
       "border may be non-convex: simple (an embedding) or weakly self-overlapping (an immersion, certified\n"
-      "locally injective, border only, not optimized; JSON \"immersion\": true)", cmd_constrain },
+      "locally injective, border only, optimized as an immersion; JSON \"immersion\": true)", cmd_constrain },
+    { "polygon", "POLY.txt OUT.obj", 2, 2, 1, { "--svg", "--time-limit" },
+      "is the polygon of POLY.txt ('x y' lines, one vertex each, the last joined to the first) simple,\n"
+      "weakly self-overlapping (the border of an immersed disk) or neither (exit 3,\n"
+      "ERROR_NOT_SELF_OVERLAPPING); writes its triangulation with its own vertices (z = 0, uv = xy),\n"
+      "certified: an embedding if simple, else an immersion (JSON \"immersion\": true)", cmd_polygon },
     { "generate", "stacked DEPTH OUT.obj | grid N OUT.obj", 3, 3, 2, {},
       "test inputs: the deep stacked triangulation (DEPTH 0 to 100000; corners pinned as in the thingi\n"
       "protocol, interior at the first corner) or an N x N grid disk (N 2 to 4000; uv = xy)", cmd_generate },

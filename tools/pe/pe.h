@@ -59,6 +59,10 @@ int read_input(Run& run, const std::string& filename, Input& in, Uv_mode mode, S
 // Reads `vertex_index u v` lines (--fix) into `in.uv` and `fixed`; same return as read_input().
 int read_constraints(Run& run, const std::string& filename, Input& in, std::vector<vertex_descriptor>& fixed);
 
+// Reads a polygon given as `x y` lines (blank lines and `#` comments skipped) into `points`; same
+// return as read_input().
+int read_polygon(Run& run, const std::string& filename, std::vector<Point_2>& points);
+
 // What a picture shows.
 struct Picture
 {

@@ -277,8 +277,9 @@ void write_face_patch_map(const TriangleMesh& tm, const Work& work, const CopyTo
 /// self-overlapping (it bounds an immersed disk: `triangulate_self_overlapping_polygon_2()`) is cut along its
 /// Shor-Van Wyk triangulation, merged into convex pieces; the map is then an immersion (locally injective,
 /// overlapping itself), certified by `check_immersion()` with the border bit-exactly the given polygon
-/// (`Constrained_embedding_statistics::immersion` and `immersion_report`), and returned without optimization (the
-/// optimizer certifies embeddings). Constraints need a simple border (a target of an overlapping domain could lie
+/// (`Constrained_embedding_statistics::immersion` and `immersion_report`), then optimized as an immersion (border
+/// fixed, every step keeping every face positive, the output certified again by `check_immersion()`: see
+/// `optimize_distortion()`). Constraints need a simple border (a target of an overlapping domain could lie
 /// on several sheets): with a self-overlapping border they give `ERROR_CONSTRAINT_OUTSIDE_DOMAIN`; a border that is
 /// not even weakly self-overlapping gives `ERROR_NOT_SELF_OVERLAPPING`; holes need a simple outer border
 /// (`ERROR_NOT_A_DISK` otherwise).
@@ -749,8 +750,7 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     }
   }
   stats.report = stats.report_before_optimization;
-  // the optimizer certifies embeddings only: an immersion is returned as embedded
-  if(optimize && !immersed)
+  if(optimize)
   {
     const double t_opt = timer.time();
     std::vector<wvertex> fixed(nodes.begin() + nbn, nodes.end());
@@ -760,8 +760,16 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
                                        parameters::constrained_vertices(fixed).maximum_running_time(remaining())));
     stats.seconds_optimization = timer.time() - t_opt;
     // OK / ERROR_BUDGET_EXHAUSTED: a certified, improved map was written; otherwise nothing was
-    stats.report = check_embedding(work, wuv, parameters::multiply_connected(holes));
-    if(!stats.report.is_valid()) return finish(ERROR_INVALID_EMBEDDING);
+    stats.report = check_embedding(work, wuv, parameters::multiply_connected(holes, parameters::check_overlap(!immersed)));
+    if(immersed)
+    {
+      // the optimizer keeps immersions (border fixed): certified again here, with the border polygon
+      std::vector<Point_2> polygon(Bfull.begin(), Bfull.begin() + static_cast<std::ptrdiff_t>(nb));
+      stats.immersion_report = check_immersion(work, wuv, to_work.at(disk.vertices[disk.border[0]]), polygon);
+      if(!stats.immersion_report.is_immersion() || stats.immersion_report.border_mismatches != 0)
+        return finish(ERROR_INVALID_EMBEDDING);
+    }
+    else if(!stats.report.is_valid()) return finish(ERROR_INVALID_EMBEDDING);
   }
 
   // constraints and border, exactly (before mirroring back)

@@ -52,6 +52,13 @@ namespace Progressive_embedding {
 /// the multiply connected certificate. A mesh with several border cycles that is not connected or not of genus 0
 /// gives `ERROR_NOT_GENUS_ZERO`.
 ///
+/// <b>Immersions.</b> A map of a disk whose faces are all positive and whose border polygon overlaps itself (a map onto
+/// a weakly self-overlapping polygon, as `constrained_embedding()` computes) is not valid, but it may be an immersion
+/// (`check_immersion()`). Such a map is optimized as an immersion, with its border fixed: a step that keeps every
+/// face positive keeps the winding number of every one-ring (an integer that varies continuously), so every accepted
+/// step stays an immersion, and the output is certified by `check_immersion()` with its border compared bit-exactly
+/// with the input's (`Optimization_statistics::immersion` and `immersion_report`; `report` then holds the energies).
+///
 /// <b>Convergence criterion:</b> the function returns `OK` when two consecutive iterations each lower the mean
 /// energy by less than `convergence_tolerance` (relative). On the repaired Tutte maps of real meshes this happens
 /// after 100 to 500 iterations, at a point where ten times more iterations lower the energy by less than 5%.
@@ -133,12 +140,13 @@ namespace Progressive_embedding {
 /// \return `OK` when converged. `ERROR_BUDGET_EXHAUSTED` when a budget ran out first: the one status other than `OK`
 ///         with which a map is written, because it is certified valid and no worse than the input.
 ///         Nothing is written with any other status:
-///         `ERROR_INVALID_EMBEDDING` if the input map is not valid (its certificate is in the statistics);
+///         `ERROR_INVALID_EMBEDDING` if the input map is neither valid nor an immersion of a disk (its certificate is in
+///         the statistics);
 ///         `ERROR_NON_FINITE_COORDINATES` if a uv or 3D coordinate is NaN or infinite;
 ///         `ERROR_NO_FREE_VERTEX` if every vertex is fixed (border and constraints);
 ///         `ERROR_DEGENERATE_3D_FACE` if the 3D faces have no area at all (faces of zero 3D area among others get an
 ///         equilateral reference of the mean area);
-///         `ERROR_WRONG_PARAMETER` for a negative tolerance or time budget;
+///         `ERROR_WRONG_PARAMETER` for a negative tolerance or time budget, or `free_border` on an immersion;
 ///         `ERROR_NOT_GENUS_ZERO` for several border cycles on a mesh that is not a connected genus-0 surface;
 ///         the disk errors of `check_embedding()` (`ERROR_NOT_A_DISK`, `ERROR_NON_MANIFOLD`, ...).
 template <typename ConcurrencyTag = CGAL::Sequential_tag,
@@ -180,7 +188,13 @@ Error_code optimize_distortion(const TriangleMesh& tm, VertexUVMap uvm,
   // taken before anything is written
   stats.report = optimizer.certify();
   stats.energy_after = stats.report.mean_energy_3d;
-  if(!stats.report.is_valid()) return ERROR_INVALID_EMBEDDING;  // nothing written
+  if(optimizer.immersion())
+  {
+    stats.immersion_report = optimizer.certify_immersion();
+    if(!stats.immersion_report.is_immersion() || stats.immersion_report.border_mismatches != 0)
+      return ERROR_INVALID_EMBEDDING;                       // nothing written
+  }
+  else if(!stats.report.is_valid()) return ERROR_INVALID_EMBEDDING;  // nothing written
   optimizer.write();
   return result;
 }

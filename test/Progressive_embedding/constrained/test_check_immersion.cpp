@@ -8,6 +8,7 @@
 // exact rationals and MPFR at scales beyond double range; Polyhedron_3; the border-polygon overload.
 
 #include <CGAL/Progressive_embedding/check_immersion.h>
+#include <CGAL/Progressive_embedding/optimize_distortion.h>
 #include <CGAL/Progressive_embedding/check_embedding.h>
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
 
@@ -173,7 +174,77 @@ int cases(int e)
   return EXIT_SUCCESS;
 }
 
+// optimize_distortion() on an immersion: certified again as one, the border bit-exact, the energy lower;
+// free_border refused; a map that is not an immersion refused; the uv map untouched on every error
+template <class K, class Mesh>
+int optimize_cases()
+{
+  std::cout << "optimize_distortion on immersions: " << mesh_name<Mesh>() << ", " << nt_name<K>() << std::endl;
+  typedef typename K::Point_2 P;
+  auto snapshot = [](const Mesh& m, const auto& map) {
+    std::vector<P> pts;
+    for(auto v : vertices(m)) pts.push_back(get(map, v));
+    return pts;
+  };
+  {
+    Mesh m;
+    const auto uv = make_spiral_strip(m, 60, 1.5);
+    auto map = uv_map_of<K>(m, uv, 0);
+    const std::vector<P> before = snapshot(m, map);
+    PE::Optimization_statistics st;
+    const PE::Error_code ec = PE::optimize_distortion(m, map, PE::parameters::optimization_statistics(&st,
+                                CGAL::parameters::number_of_iterations(30)));
+    std::cout << "  spiral strip, 1.5 turns: " << PE::get_error_message(ec) << ", iterations " << st.iterations
+              << ", energy " << st.energy_before << " -> " << st.energy_after << "; " << st.immersion_report.summary() << std::endl;
+    CHECK(ec == PE::OK || ec == PE::ERROR_BUDGET_EXHAUSTED, "optimized");
+    CHECK(st.immersion && st.immersion_report.is_immersion() && st.immersion_report.border_mismatches == 0,
+          "optimized as an immersion, certified");
+    CHECK(st.energy_after < st.energy_before, "energy lowered");
+    const PE::Immersion_report r = PE::check_immersion(m, map);
+    CHECK(r.is_immersion() && r.faces == 240, "the map written is an immersion");
+    std::size_t i = 0, moved = 0;
+    for(auto v : vertices(m))
+    {
+      const P q = get(map, v);
+      if(CGAL::is_border(v, m)) CHECK(q == before[i], "border bit-exact");
+      else if(q != before[i]) ++moved;
+      ++i;
+    }
+    CHECK(moved > 0, "interior vertices moved");
+    // free border: refused (the border could stop being self-overlapping), nothing written
+    auto map2 = uv_map_of<K>(m, uv, 0);
+    const std::vector<P> before2 = snapshot(m, map2);
+    PE::Optimization_statistics st2;
+    CHECK(PE::optimize_distortion(m, map2, PE::parameters::free_border(true, PE::parameters::optimization_statistics(&st2)))
+            == PE::ERROR_WRONG_PARAMETER && st2.immersion, "free_border on an immersion refused");
+    CHECK(snapshot(m, map2) == before2, "uv unchanged");
+  }
+  {
+    // every face positive, but the one-ring winds twice: neither valid nor an immersion
+    Mesh m;
+    const auto uv = make_fan(m, 7, 2);
+    auto map = uv_map_of<K>(m, uv, 0);
+    const std::vector<P> before = snapshot(m, map);
+    PE::Optimization_statistics st;
+    const PE::Error_code ec = PE::optimize_distortion(m, map, PE::parameters::optimization_statistics(&st));
+    std::cout << "  fan winding twice: " << PE::get_error_message(ec) << "; " << st.immersion_report.summary() << std::endl;
+    CHECK(ec == PE::ERROR_INVALID_EMBEDDING && !st.immersion && st.immersion_report.winding_errors == 1, "refused");
+    CHECK(snapshot(m, map) == before, "uv unchanged");
+  }
+  return EXIT_SUCCESS;
+}
+
 } // namespace
+
+PE_TEST_GROUP(optimize_immersion)
+{
+  (void)data_dir;
+  RUN((optimize_cases<Epick, Surface_mesh>()));
+  RUN((optimize_cases<Epick, Polyhedron>()));
+  RUN((optimize_cases<Kq, Surface_mesh>()));
+  RUN((optimize_cases<Kfr, Surface_mesh>()));
+  return EXIT_SUCCESS;
+}
 
 PE_TEST_GROUP(check_immersion)
 {

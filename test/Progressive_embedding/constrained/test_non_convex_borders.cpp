@@ -103,7 +103,11 @@ int embed_on(const std::string& what, Mesh m, const std::vector<P2>& Q, const st
   const PE::Embedding_report er = PE::check_embedding(m, uv);
   if(expect_immersion)
   {
-    CHECK(st.immersion && st.immersion_report.is_immersion() && !st.optimized, "reported as an immersion, not optimized");
+    CHECK(st.immersion && st.immersion_report.is_immersion() && st.immersion_report.border_mismatches == 0,
+          "reported as a certified immersion");
+    CHECK(st.optimized && (st.optimization_status == PE::OK || st.optimization_status == PE::ERROR_BUDGET_EXHAUSTED)
+          && st.optimization.immersion && st.report.mean_energy_3d < st.report_before_optimization.mean_energy_3d,
+          "optimized as an immersion, energy lowered");
     CHECK(!er.border_simple, "an immersion of an overlapping border is not an embedding");
   }
   else

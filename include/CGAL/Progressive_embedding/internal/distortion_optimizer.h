@@ -27,6 +27,7 @@
 
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/check_embedding.h>
+#include <CGAL/Progressive_embedding/check_immersion.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 #include <CGAL/Progressive_embedding/internal/border_polygon.h>
 #include <CGAL/Progressive_embedding/internal/number_utils.h>
@@ -88,8 +89,15 @@ struct Optimization_statistics
   std::size_t global_steps = 0;
   /// per-vertex sweeps run
   std::size_t vertex_sweeps = 0;
-  /// certificate of the output (of the input when the input is refused)
+  /// certificate of the output (of the input when the input is refused); for an immersion, its energies
+  /// (its overlap test is skipped and it reports the border as not simple, by design)
   Embedding_report report;
+  /// `true` if the input map was an immersion whose border overlaps itself (a map onto a weakly self-overlapping
+  /// polygon, e.g. from `constrained_embedding()`): it was optimized as an immersion and certified by
+  /// `check_immersion()` (`immersion_report`)
+  bool immersion = false;
+  /// the immersion certificate of the output (of the input when refused), when `immersion` is `true`
+  Immersion_report immersion_report;
 };
 
 namespace internal {
@@ -207,7 +215,19 @@ public:
                                                 CGAL::parameters::vertex_point_map(vpm_).geom_traits(traits_)));
     if(stats.report.status != OK) return stats.report.status;
     if(stats.report.non_finite > 0) return ERROR_NON_FINITE_COORDINATES;
-    if(!stats.report.is_valid()) return ERROR_INVALID_EMBEDDING;
+    if(!stats.report.is_valid())
+    {
+      // A disk map whose faces are all positive but whose border overlaps itself may be an immersion
+      // (a weakly self-overlapping border): with the border fixed, steps that keep every face positive
+      // keep each one-ring's winding number (it varies continuously and is an integer), so the
+      // optimization stays among immersions; check_immersion() certifies the input and the output.
+      if(holes_ || stats.report.border_simple || stats.report.flipped != 0 || stats.report.degenerate != 0)
+        return ERROR_INVALID_EMBEDDING;
+      stats.immersion_report = check_immersion_of_disk(disk_, uvm_, orient_);
+      if(!stats.immersion_report.is_immersion()) return ERROR_INVALID_EMBEDDING;
+      stats.immersion = immersion_ = true;
+      if(s_.free_border) return ERROR_WRONG_PARAMETER; // a moving border could stop being self-overlapping
+    }
     if(holes_)
     {
       // the outer loop as the certificate chose it (largest exact uv area): the border
@@ -281,7 +301,27 @@ public:
     auto current = boost::make_function_property_map<vertex_descriptor, Point_2>(
       [&](vertex_descriptor v) -> Point_2 { return P[get(vid, v)]; });
     return check_embedding(tm_, current, parameters::multiply_connected(holes_,
-                                           CGAL::parameters::vertex_point_map(vpm_).geom_traits(traits_)));
+                                           parameters::check_overlap(!immersion_,
+                                             CGAL::parameters::vertex_point_map(vpm_).geom_traits(traits_))));
+  }
+
+  bool immersion() const { return immersion_; }
+
+  // with an immersion: its exact certificate for the current positions, the border compared
+  // bit-exactly with the input's (it is fixed)
+  Immersion_report certify_immersion() const
+  {
+    auto vid = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm_);
+    for(std::size_t i = 0; i < nv_; ++i) put(vid, disk_.vertices[i], i);
+    const std::vector<Point_2>& P = P_;
+    Immersion_report r = check_immersion_of_disk(disk_, boost::make_function_property_map<vertex_descriptor, Point_2>(
+      [&](vertex_descriptor v) -> Point_2 { return P[get(vid, v)]; }), orient_);
+    for(std::size_t b : disk_.border)
+    {
+      const Point_2 q = get(uvm_, disk_.vertices[b]);
+      if(!(q.x() == P_[b].x() && q.y() == P_[b].y())) ++r.border_mismatches;
+    }
+    return r;
   }
 
   void write() const
@@ -814,6 +854,7 @@ private:
   Indexed_domain<TriangleMesh> domain_;  // the loops of a multiply connected map (domain_.disk: faces, outer loop)
   Indexed_disk<TriangleMesh>& disk_;
   bool holes_ = false;                   // several border loops
+  bool immersion_ = false;               // the map is an immersion (border fixed, overlapping itself)
   std::vector<std::size_t> hole_free_;   // free vertices of the hole loops
   std::vector<std::size_t> hole_position_; // per hole vertex: its position in its loop
   std::size_t nv_ = 0, nf_ = 0;

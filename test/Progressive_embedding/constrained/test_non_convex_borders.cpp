@@ -4,8 +4,9 @@
 
 // constrained_embedding() onto fixed borders that are not convex: simple polygons (an L, a comb) give
 // certified embeddings, with and without constraints; a rectilinear strip winding 1.25 times around a
-// square (weakly self-overlapping) gives a certified immersion; constraints on it, and a polygon that
-// bounds no immersed disk, give clear errors with the mesh and uv untouched.
+// square (weakly self-overlapping) gives a certified immersion (a mushroom; 10x10 to 30x30 grids, whose
+// partition corners at paths must turn by a margin, see partition_corners_robust); constraints on it,
+// and a polygon that bounds no immersed disk, give clear errors with the mesh and uv untouched.
 
 #include <CGAL/Progressive_embedding/constrained_embedding.h>
 #include <CGAL/Progressive_embedding/check_embedding.h>
@@ -18,8 +19,11 @@
 
 #include <CGAL/boost/graph/helpers.h>
 
+#include <array>
 #include <cmath>
+#include <iterator>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace {
@@ -120,6 +124,47 @@ int embed_on(const std::string& what, Mesh m, const std::vector<P2>& Q, const st
   return EXIT_SUCCESS;
 }
 
+// The partition of the immersed domain bounded by Q (the border of m placed by border_on_polygon):
+// every polygon corner between a border side and an interior edge (a traced path) turns by a sine
+// above 2^-20 (in double: a margin, not a certificate).
+int partition_corners_robust(const Surface_mesh& m, const std::vector<P2>& Q)
+{
+  Surface_mesh copy = m;
+  auto cuv = make_uv_map(copy, P2());
+  CHECK(border_on_polygon(copy, cuv, Q), "border placed");
+  PE::internal::Indexed_disk<Surface_mesh> disk;
+  CHECK(PE::internal::make_indexed_disk(copy, boost::graph_traits<Surface_mesh>::null_halfedge(), disk) == PE::OK, "a disk");
+  std::vector<P2> B;
+  for(std::size_t k : disk.border) B.push_back(get(cuv, disk.vertices[k]));
+  std::vector<std::array<std::size_t, 3> > triangles;
+  CHECK(PE::triangulate_self_overlapping_polygon_2(B, std::back_inserter(triangles)) == PE::OK, "weakly self-overlapping");
+  PE::internal::Domain_partition partition;
+  PE::internal::Domain_partition_options options;
+  options.allow_flat_border_vertices = true;
+  CHECK(PE::internal::partition_immersed_domain(B, triangles, partition, options) == PE::OK, "immersed partition");
+  const auto sides = PE::internal::polygon_side_edges(partition);
+  std::size_t path_corners = 0;
+  for(std::size_t f = 0; f < partition.polygons.size(); ++f)
+  {
+    const std::vector<std::size_t>& P = partition.polygons[f];
+    for(std::size_t k = 0, n = P.size(); k < n; ++k)
+    {
+      const std::size_t km = (k + n - 1) % n;
+      if((sides[f][km] < 0) == (sides[f][k] < 0)) continue; // the border's own corner, or two paths
+      ++path_corners;
+      const P2 &a = B[P[km]], &u = B[P[k]], &b = B[P[(k + 1) % n]];
+      const double ax = u.x() - a.x(), ay = u.y() - a.y(), bx = b.x() - u.x(), by = b.y() - u.y();
+      const double sine = (ax * by - ay * bx) / (std::sqrt(ax * ax + ay * ay) * std::sqrt(bx * bx + by * by));
+      CHECK(sine > std::ldexp(1., -20), "a corner at a path turns by more than the margin");
+    }
+  }
+  std::cout << "  partition: " << partition.edges.size() << " interior edges, " << partition.polygons.size()
+            << " polygons, " << path_corners << " corners between a path and the border, all turning by a sine above 2^-20"
+            << std::endl;
+  CHECK(path_corners > 0, "corners at paths checked");
+  return EXIT_SUCCESS;
+}
+
 // an L: the unit square without its upper right quarter; a comb with three teeth
 std::vector<P2> l_shape() { return { P2(0, 0), P2(1, 0), P2(1, 0.5), P2(0.5, 0.5), P2(0.5, 1), P2(0, 1) }; }
 std::vector<P2> comb()
@@ -146,6 +191,7 @@ PE_TEST_GROUP(constrained_embedding_non_convex)
   RUN(embed_on("grid 20x20 on an L", grid, l_shape(), { P2(0.25, 0.25), P2(0.75, 0.25), P2(0.25, 0.75) }, false));
   RUN(embed_on("mushroom on an L", mushroom, l_shape(), { P2(0.2, 0.2), P2(0.8, 0.3), P2(0.3, 0.8) }, false));
   RUN(embed_on("mushroom on a comb", mushroom, comb(), {}, false));
+  RUN(embed_on("grid 20x20 on a comb", grid, comb(), {}, false));
   RUN(embed_on("mushroom on a comb", mushroom, comb(), { P2(0.5, 2.5), P2(2.5, 0.5), P2(4.5, 2.5) }, false));
   Polyhedron poly;
   if(!read_mesh(data_dir + "/meshes/mushroom.off", poly)) return EXIT_FAILURE;
@@ -158,6 +204,19 @@ PE_TEST_GROUP(constrained_embedding_immersion)
   Surface_mesh mushroom;
   if(!read_mesh(data_dir + "/meshes/mushroom.off", mushroom)) return EXIT_FAILURE;
   RUN(embed_on("mushroom on a strip winding 1.25 times", mushroom, spiral_strip(), {}, true));
+  // grids: with 20x20, the border point placed by arc length near (4.5, 0.5) on the outer side lands
+  // at y = 0.5 - 2^-52, below the line y = 0.5 of the inner side ending at (3.5, 0.5); the partition
+  // must not make that inner corner a corner of a piece convex by that much only (the path vertices
+  // along it, rounded onto y = 0.5, gave flat chords with the inner side's vertices: the patch map
+  // failed its certificate)
+  for(std::size_t n : { 10, 20, 30 })
+  {
+    Surface_mesh grid;
+    PE::internal::make_grid_disk(n, grid);
+    RUN(partition_corners_robust(grid, spiral_strip()));
+    RUN(embed_on("grid " + std::to_string(n) + "x" + std::to_string(n) + " on a strip winding 1.25 times", grid,
+                 spiral_strip(), {}, true));
+  }
   // errors: constraints on an overlapping border; a figure eight (no immersed disk); mesh and uv untouched
   typedef boost::graph_traits<Surface_mesh>::vertex_descriptor VD;
   auto expect = [&](const std::vector<P2>& Q, const std::vector<std::pair<VD, P2> >& C, PE::Error_code code, const char* what) -> int

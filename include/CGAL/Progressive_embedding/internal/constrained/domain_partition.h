@@ -19,7 +19,13 @@
 //            in the given order. Written only on success (left unchanged on error).
 //   Method: CGAL::Constrained_Delaunay_triangulation_2 of all nodes with the border edges as
 //   constraints, then a greedy merge of adjacent faces: an interior edge is dropped when the union
-//   of its two polygons stays strictly convex (orientation decided exactly, on the caller's points).
+//   of its two polygons stays strictly convex (orientation decided exactly, on the caller's points)
+//   and each new corner between a border edge and an interior edge turns by a margin: the sine of
+//   its turn above 2^-20 (in double, on coordinates scaled by a power of two). Path vertices are
+//   placed on their segments only up to one ulp in floating point (place_path_vertices): at a corner
+//   convex by less, they can fall on the line of the border side, and the mesh edges joining them to
+//   that side's vertices become flat chords of the patch, which no map keeps (e.g. a strip's inner
+//   corner whose union with the piece across would be flat but for the rounding of a border point).
 //   Polygons only grow, so the angles at an edge's ends only grow: an edge refused once stays
 //   refused, and one pass over the edges in a fixed order is the whole greedy algorithm.
 //   Order (options.order): LONGEST_FIRST (default). Measured on regular 4..2000-gons with 3, 10 and
@@ -28,8 +34,9 @@
 //   triangulation's order and 97.9 shortest first; 10 targets: 20.5 / 22.4 / 22.5. Dropping the edges
 //   between two border points first changes nothing: such an edge (a chord) is always dropped,
 //   whatever the order, because the union of its two polygons has, at each end, an angle inside the
-//   domain's angle there (below 180 degrees, or exactly 180 at a flat border vertex). Hence every
-//   interior edge of the result has a target as an endpoint.
+//   domain's angle there (below 180 degrees, or exactly 180 at a flat border vertex; the margin can
+//   keep a chord only at a border vertex that turns by less than it without being flat). Hence every
+//   interior edge of the result has a target as an endpoint (with that exception).
 //   Postconditions: every polygon is strictly convex and counterclockwise (with flat border vertices:
 //   convex, its 180 degree corners only at flat border nodes that have no interior edge); every
 //   target is a corner of at least 3 polygons (its angles are all below 180 degrees); every interior
@@ -91,8 +98,9 @@
 //   Method: the combinatorics come from the triangles only (the geometry overlaps, so no point
 //   location): half-edges glued by their index pairs, then the same greedy merge, decided locally:
 //   two adjacent strictly convex polygons are merged when the union's two new corners are strict
-//   left turns (exact). This is enough: the union is an immersed disk whose border turns once, so a
-//   locally strictly convex union is an embedded convex polygon; the corners are sums of corners
+//   left turns (exact; with the margin above at a corner between a border edge and an interior
+//   edge). This is enough: the union is an immersed disk whose border turns once, so a locally
+//   strictly convex union is an embedded convex polygon; the corners are sums of corners
 //   below 180 degrees, so the orientation decides exactly whether the sum stays below 180.
 //   Flat vertices (with allow_flat_border_vertices): a collinear border vertex whose total angle is
 //   exactly 180 degrees (every fan neighbour strictly left of u -> next) is flat as above; a collinear
@@ -325,10 +333,11 @@ Error_code merge_into_convex_polygons(const Points& point, std::size_t nb, std::
   candidates.reserve(nh / 2);
   for(std::size_t h = 0; h < nh; ++h)
     if(twin[h] != none && h < twin[h]) candidates.push_back(h);
+  // approximate coordinates: for the merge order and the margin of corners next to paths (below)
+  const std::vector<std::array<double, 2> > c = domain_detail::scaled_coordinates<Point_2>(point, nn);
   if(options.order != Domain_merge_order::TRIANGULATION_ORDER)
   {
     // lengths for ordering only (an approximation is fine: the order is a heuristic)
-    const std::vector<std::array<double, 2> > c = domain_detail::scaled_coordinates<Point_2>(point, nn);
     std::vector<double> len(nh, 0);
     for(std::size_t h : candidates)
     {
@@ -340,10 +349,26 @@ Error_code merge_into_convex_polygons(const Points& point, std::size_t nb, std::
       return longest ? len[a] > len[b] : len[a] < len[b]; });
   }
 
-  // strictly convex at node u between incoming p->u and outgoing u->q; flat allowed at flat border nodes
-  auto convex_corner = [&](std::size_t p, std::size_t u, std::size_t q) {
+  // strictly convex at node u between incoming p->u and outgoing u->q; flat allowed at flat border nodes.
+  // A corner between a border edge and an interior edge (`at_path`: the edge is traced, its vertices
+  // placed on the segment only up to one ulp in floating point) must moreover turn by more than the
+  // margin: a corner convex by less, e.g. an inner corner of a strip with a border point of the
+  // opposite side almost on the line of its other side, lets the rounded path vertices fall on (or
+  // beyond) the line of the border side, and the mesh edges between them and that side's vertices
+  // become flat chords of the patch (no valid map). Refusing the merge keeps the two pieces, whose corners there are far from
+  // 180 degrees. In double on the scaled coordinates: a heuristic choice of merges only; convexity is
+  // still decided by the exact orientation. Between two interior edges no margin: such a corner
+  // nearly flat comes with a sliver (e.g. a target within rounding of the border), whose refusal
+  // would only keep shorter edges.
+  const double margin = std::ldexp(1., -20); // sine of the smallest turn at a corner with a path
+  auto robust_turn = [&](std::size_t p, std::size_t u, std::size_t q) {
+    const double ax = c[u][0] - c[p][0], ay = c[u][1] - c[p][1], bx = c[q][0] - c[u][0], by = c[q][1] - c[u][1];
+    return ax * by - ay * bx > margin * std::sqrt(ax * ax + ay * ay) * std::sqrt(bx * bx + by * by);
+  };
+  auto convex_corner = [&](std::size_t p, std::size_t u, std::size_t q, bool at_path) {
     const CGAL::Orientation o = exact_orientation(point(p), point(u), point(q));
-    return o == CGAL::LEFT_TURN || (o == CGAL::COLLINEAR && u < nb && flat[u] && p != q);
+    if(o == CGAL::LEFT_TURN) return !at_path || robust_turn(p, u, q);
+    return o == CGAL::COLLINEAR && u < nb && flat[u] && p != q && !at_path;
   };
   domain_detail::Union_find faces(nf);
   std::vector<char> alive(nh, 1);
@@ -354,8 +379,8 @@ Error_code merge_into_convex_polygons(const Points& point, std::size_t nb, std::
     if(A == B) continue; // cannot happen for convex polygons; never merge a polygon with itself
     const std::size_t u = from[h], v = to[h];
     // h = u->v in A, t = v->u in B; the union turns at u from prev(h) to next(t), at v from prev(t) to next(h)
-    if(!convex_corner(from[prev[h]], u, to[next[t]])) continue;
-    if(!convex_corner(from[prev[t]], v, to[next[h]])) continue;
+    if(!convex_corner(from[prev[h]], u, to[next[t]], (twin[prev[h]] == none) != (twin[next[t]] == none))) continue;
+    if(!convex_corner(from[prev[t]], v, to[next[h]], (twin[prev[t]] == none) != (twin[next[h]] == none))) continue;
     next[prev[h]] = next[t]; prev[next[t]] = prev[h];
     next[prev[t]] = next[h]; prev[next[h]] = prev[t];
     alive[h] = alive[t] = 0;

@@ -2,10 +2,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 // Author(s) : Progressive_embedding contributors
 
-// constrained_embedding() onto fixed borders that are not convex: simple polygons (an L, a comb) give
+// constrained_embedding() onto fixed borders that are not convex: simple polygons (an L, a comb, a star) give
 // certified embeddings, with and without constraints; a rectilinear strip winding 1.25 times around a
 // square (weakly self-overlapping) gives a certified immersion (a mushroom; 10x10 to 30x30 grids, whose
-// partition corners at paths must turn by a margin, see partition_corners_robust); constraints on it,
+// partition corners at paths must turn by a margin, see partition_corners_robust), and so does a spiral
+// strip winding twice; constraints on it,
 // and a polygon that bounds no immersed disk, give clear errors with the mesh and uv untouched.
 
 #include <CGAL/Progressive_embedding/constrained_embedding.h>
@@ -179,6 +180,38 @@ std::vector<P2> spiral_strip()
            P2(3, 0.5), P2(0.5, 0.5), P2(0.5, 3.5), P2(3.5, 3.5), P2(3.5, 0.5), P2(1, 0.5) };
 }
 
+// a star with 8 tips (radii 1 and 0.4): simple, not convex, no side axis-parallel
+std::vector<P2> star8()
+{
+  std::vector<P2> Q;
+  const double pi = std::acos(-1.);
+  for(int k = 0; k < 16; ++k)
+  {
+    const double r = (k % 2) ? 0.4 : 1.0;
+    Q.push_back(P2(r * std::cos(pi * k / 8), r * std::sin(pi * k / 8)));
+  }
+  return Q;
+}
+// a strip of width 0.6 along the spiral r = 1 + 0.3 t / (2 pi), t in [0, 4 pi], 12 vertices per side:
+// it winds twice and each turn overlaps the previous one (weakly self-overlapping, not simple)
+std::vector<P2> spiral_twice()
+{
+  std::vector<P2> Q;
+  const double two_pi = 2 * std::acos(-1.);
+  const int m = 12;
+  for(int k = 0; k < m; ++k)
+  {
+    const double t = 2 * two_pi * k / (m - 1);
+    Q.push_back(P2((1.6 + 0.3 * t / two_pi) * std::cos(t), (1.6 + 0.3 * t / two_pi) * std::sin(t)));
+  }
+  for(int k = m; k-- > 0; )
+  {
+    const double t = 2 * two_pi * k / (m - 1);
+    Q.push_back(P2((1 + 0.3 * t / two_pi) * std::cos(t), (1 + 0.3 * t / two_pi) * std::sin(t)));
+  }
+  return Q;
+}
+
 } // namespace
 
 PE_TEST_GROUP(constrained_embedding_non_convex)
@@ -192,6 +225,7 @@ PE_TEST_GROUP(constrained_embedding_non_convex)
   RUN(embed_on("mushroom on an L", mushroom, l_shape(), { P2(0.2, 0.2), P2(0.8, 0.3), P2(0.3, 0.8) }, false));
   RUN(embed_on("mushroom on a comb", mushroom, comb(), {}, false));
   RUN(embed_on("grid 20x20 on a comb", grid, comb(), {}, false));
+  RUN(embed_on("mushroom on a star", mushroom, star8(), { P2(0.2, 0), P2(-0.1, 0.15), P2(0, -0.25) }, false));
   RUN(embed_on("mushroom on a comb", mushroom, comb(), { P2(0.5, 2.5), P2(2.5, 0.5), P2(4.5, 2.5) }, false));
   Polyhedron poly;
   if(!read_mesh(data_dir + "/meshes/mushroom.off", poly)) return EXIT_FAILURE;
@@ -204,6 +238,7 @@ PE_TEST_GROUP(constrained_embedding_immersion)
   Surface_mesh mushroom;
   if(!read_mesh(data_dir + "/meshes/mushroom.off", mushroom)) return EXIT_FAILURE;
   RUN(embed_on("mushroom on a strip winding 1.25 times", mushroom, spiral_strip(), {}, true));
+  RUN(embed_on("mushroom on a spiral strip winding twice", mushroom, spiral_twice(), {}, true));
   // grids: with 20x20, the border point placed by arc length near (4.5, 0.5) on the outer side lands
   // at y = 0.5 - 2^-52, below the line y = 0.5 of the inner side ending at (3.5, 0.5); the partition
   // must not make that inner corner a corner of a piece convex by that much only (the path vertices

@@ -2,6 +2,7 @@
 # Regenerates the tables and pictures of benchmark/results (see benchmark/results/README.md).
 #
 #   benchmark/regenerate_results.sh [--build DIR] [--out DIR] [--study] [--benchmark] [--constrained]
+#                                   [--polygons [--polygon-obj FILE.obj]]
 #
 # (default)    from the committed comparison-study run (study_runs.csv.gz, study_gallery.csv): the
 #              study's tables, plot and gallery; the driver only draws the gallery runs again (under
@@ -11,6 +12,9 @@
 #              and the generated grids: progressive_embedding.{csv,md} and, with --optimize,
 #              progressive_embedding_optimized.{csv,md} (tens of minutes).
 # --constrained also runs constrained_benchmark again: constrained_embedding*.{csv,md} (about 15 minutes).
+# --polygons   also runs polygon_benchmark (polygon_triangulation.{csv,md}, about 2 minutes) and
+#              polygon_map_benchmark (polygon_maps.{csv,md}: maps onto Hilbert, star and spiral borders,
+#              about 15 minutes); --polygon-obj adds an OBJ disk with texture coordinates (repeatable).
 # --build DIR  the CMake build directory (default: build); the drivers are built there.
 # --out DIR    the results folder (default: benchmark/results), e.g. a copy to compare with.
 #
@@ -24,6 +28,8 @@ results="$repo/benchmark/results"
 study=0
 benchmark=0
 constrained=0
+polygons=0
+polygon_objs=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --build) [ $# -ge 2 ] || { echo "--build needs a directory" >&2; exit 2; }; build=$2; shift 2 ;;
@@ -31,7 +37,10 @@ while [ $# -gt 0 ]; do
     --study) study=1; shift ;;
     --benchmark) benchmark=1; shift ;;
     --constrained) constrained=1; shift ;;
-    -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
+    --polygons) polygons=1; shift ;;
+    --polygon-obj) [ $# -ge 2 ] || { echo "--polygon-obj needs a file" >&2; exit 2; }
+                   polygon_objs="$polygon_objs --obj $(cd "$(dirname "$2")" && pwd)/$(basename "$2")"; shift 2 ;;
+    -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
     *) echo "unknown option $1 (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -69,5 +78,11 @@ if [ "$constrained" = 1 ]; then
   "$build/bin/constrained_benchmark" "$build/cgal_data/data" "$results/constrained_embedding_optimized" \
     --meshes retinal.off,dino.off,homer.off,mushroom.off,lion-head.off --seeds 1 --counts 3,10 --targets layout \
     --optimize-seeds 1 --budget 120 || true
+fi
+if [ "$polygons" = 1 ]; then
+  cmake --build "$build" --target polygon_benchmark polygon_map_benchmark
+  "$build/bin/polygon_benchmark" "$results/polygon_triangulation" --budget 300
+  # shellcheck disable=SC2086 # polygon_objs is a list of options
+  "$build/bin/polygon_map_benchmark" "$build/cgal_data/data" "$results/polygon_maps" --seeds 2 --budget 20 $polygon_objs
 fi
 echo "$results regenerated"

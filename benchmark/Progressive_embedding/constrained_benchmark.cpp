@@ -37,6 +37,7 @@
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 #include "protocols.h" // test fixtures: test/Progressive_embedding/
+#include "process_memory.h"
 
 #include <dirent.h>
 #include <unistd.h>
@@ -65,20 +66,8 @@ typedef SM::Property_map<vertex_descriptor, K::Point_2>       UV_map;
 
 namespace {
 
-// peak resident memory since the last reset (Linux: clear_refs 5 resets VmHWM)
-void reset_peak_rss()
-{
-  std::ofstream f("/proc/self/clear_refs");
-  f << "5";
-}
-double peak_rss_mb()
-{
-  std::ifstream f("/proc/self/status");
-  std::string line;
-  while(std::getline(f, line))
-    if(line.compare(0, 6, "VmHWM:") == 0) return std::atof(line.c_str() + 6) / 1024.;
-  return 0;
-}
+using pe_bench::reset_peak_rss;
+using pe_bench::peak_rss_mb;
 
 bool is_disk(const SM& m)
 {

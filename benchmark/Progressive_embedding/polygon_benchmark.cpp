@@ -24,6 +24,8 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Progressive_embedding/triangulate_self_overlapping_polygon_2.h>
+#include "polygon_shapes.h"
+#include "process_memory.h"
 
 #include <sys/resource.h>
 #include <sys/types.h>
@@ -46,108 +48,7 @@ namespace PE = CGAL::Progressive_embedding;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_2 Point;
 
-static const double two_pi = 6.283185307179586;
-
-std::vector<Point> convex(std::size_t n)
-{
-  std::vector<Point> P;
-  for(std::size_t k = 0; k < n; ++k) P.push_back(Point(std::cos(two_pi * k / n), std::sin(two_pi * k / n)));
-  return P;
-}
-
-std::vector<Point> star(std::size_t n)
-{
-  std::vector<Point> P;
-  for(std::size_t k = 0; k < n; ++k)
-  {
-    const double r = (k % 2) ? 0.4 : 1.0;
-    P.push_back(Point(r * std::cos(two_pi * k / n), r * std::sin(two_pi * k / n)));
-  }
-  return P;
-}
-
-std::vector<Point> spiral(std::size_t n)
-{
-  const std::size_t m = n / 2;
-  std::vector<Point> P;
-  for(std::size_t k = 0; k < m; ++k)
-  {
-    const double t = 2 * two_pi * double(k) / double(m - 1), r = 1 + 0.3 * t / two_pi + 0.6;
-    P.push_back(Point(r * std::cos(t), r * std::sin(t)));
-  }
-  for(std::size_t k = m; k-- > 0; )
-  {
-    const double t = 2 * two_pi * double(k) / double(m - 1), r = 1 + 0.3 * t / two_pi;
-    P.push_back(Point(r * std::cos(t), r * std::sin(t)));
-  }
-  return P;
-}
-
-// Hilbert curve of order `order`: cell d -> (x, y) (the classical iterative conversion)
-static void hilbert_d2xy(int side, int d, int& x, int& y)
-{
-  x = y = 0;
-  for(int s = 1, t = d; s < side; s *= 2, t /= 4)
-  {
-    const int rx = 1 & (t / 2), ry = 1 & (t ^ rx);
-    if(ry == 0)
-    {
-      if(rx == 1) { x = s - 1 - x; y = s - 1 - y; }
-      std::swap(x, y);
-    }
-    x += s * rx; y += s * ry;
-  }
-}
-
-// the outline of the thickened Hilbert curve, counterclockwise, a vertex at every unit step
-std::vector<Point> hilbert(int order)
-{
-  const int side = 1 << order, S = 2 * side + 1;
-  std::vector<char> g(std::size_t(S) * S, 0);
-  auto at = [&](int x, int y) -> char& { return g[std::size_t(y) * S + x]; };
-  int px = 0, py = 0;
-  for(int d = 0; d < side * side; ++d)
-  {
-    int x, y;
-    hilbert_d2xy(side, d, x, y);
-    at(2 * x + 1, 2 * y + 1) = 1;
-    if(d > 0) at(x + px + 1, y + py + 1) = 1; // the connector between two consecutive cells
-    px = x; py = y;
-  }
-  std::map<std::pair<int, int>, std::pair<int, int> > next;
-  for(int y = 1; y < S - 1; ++y)
-    for(int x = 1; x < S - 1; ++x)
-    {
-      if(!at(x, y)) continue;
-      if(!at(x, y - 1)) next[{ x, y }] = { x + 1, y };
-      if(!at(x + 1, y)) next[{ x + 1, y }] = { x + 1, y + 1 };
-      if(!at(x, y + 1)) next[{ x + 1, y + 1 }] = { x, y + 1 };
-      if(!at(x - 1, y)) next[{ x, y + 1 }] = { x, y };
-    }
-  std::vector<Point> P;
-  const std::pair<int, int> start = next.begin()->first;
-  std::pair<int, int> v = start;
-  do { P.push_back(Point(v.first, v.second)); v = next[v]; } while(v != start && P.size() <= next.size());
-  return P;
-}
-
-static double vm_hwm_mb()
-{
-  std::ifstream in("/proc/self/status");
-  std::string line;
-  while(std::getline(in, line))
-    if(line.compare(0, 6, "VmHWM:") == 0) return std::atof(line.c_str() + 6) / 1024.0;
-  struct rusage ru; getrusage(RUSAGE_SELF, &ru);
-  return ru.ru_maxrss / 1024.0;
-}
-static double vm_rss_mb()
-{
-  std::ifstream in("/proc/self/status");
-  std::string line;
-  while(std::getline(in, line))
-    if(line.compare(0, 6, "VmRSS:") == 0) return std::atof(line.c_str() + 6) / 1024.0;
-  return 0;
-}
+typedef pe_bench::Shapes<Point> Shapes;
 
 struct Row
 {
@@ -160,15 +61,15 @@ struct Row
 // in the child: generate, triangulate, check; one line on `fd`
 static void run_child(const std::string& shape, std::size_t size, double budget, int fd)
 {
-  std::vector<Point> P = shape == "convex" ? convex(size) : shape == "star" ? star(size)
-                       : shape == "spiral" ? spiral(size) : hilbert(int(size));
-  std::ofstream("/proc/self/clear_refs") << "5" << std::flush; // reset the peak to the current size
-  const double base = vm_rss_mb();
+  std::vector<Point> P = shape == "convex" ? Shapes::convex(size) : shape == "star" ? Shapes::star(size)
+                       : shape == "spiral" ? Shapes::spiral(size) : Shapes::hilbert(int(size));
+  pe_bench::reset_peak_rss(); // the peak from the current size on
+  const double base = pe_bench::current_rss_mb();
   std::vector<std::array<std::size_t, 3> > T;
   PE::Polygon_triangulation_report r;
   const PE::Error_code ec = PE::triangulate_self_overlapping_polygon_2(P, std::back_inserter(T),
                               PE::parameters::polygon_report(&r).maximum_running_time(budget));
-  const double peak = vm_hwm_mb();
+  const double peak = pe_bench::peak_rss_mb();
   // exact check: n - 2 strictly positive triangles, each polygon edge (in its direction) in exactly one
   bool ok = (ec == PE::OK && T.size() + 2 == P.size());
   std::vector<int> edge_use(P.size(), 0);

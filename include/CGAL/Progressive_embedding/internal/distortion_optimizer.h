@@ -295,27 +295,34 @@ public:
   // exact certificate of the current positions, without writing them
   Embedding_report certify() const
   {
-    auto vid = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm_);
-    for(std::size_t i = 0; i < nv_; ++i) put(vid, disk_.vertices[i], i);
-    const std::vector<Point_2>& P = P_;
-    auto current = boost::make_function_property_map<vertex_descriptor, Point_2>(
-      [&](vertex_descriptor v) -> Point_2 { return P[get(vid, v)]; });
-    return check_embedding(tm_, current, parameters::multiply_connected(holes_,
+    const auto vid = vertex_indices();
+    return check_embedding(tm_, current_uv(vid), parameters::multiply_connected(holes_,
                                            parameters::check_overlap(!immersion_,
                                              CGAL::parameters::vertex_point_map(vpm_).geom_traits(traits_))));
   }
 
   bool immersion() const { return immersion_; }
 
+  // the index of each vertex in disk_, and the current positions as a uv map (for the certificates)
+  auto vertex_indices() const
+  {
+    auto vid = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm_);
+    for(std::size_t i = 0; i < nv_; ++i) put(vid, disk_.vertices[i], i);
+    return vid;
+  }
+  template <class VertexIndexMap>
+  auto current_uv(const VertexIndexMap& vid) const
+  {
+    return boost::make_function_property_map<vertex_descriptor, Point_2>(
+      [this, &vid](vertex_descriptor v) -> Point_2 { return P_[get(vid, v)]; });
+  }
+
   // with an immersion: its exact certificate for the current positions, the border compared
   // bit-exactly with the input's (it is fixed)
   Immersion_report certify_immersion() const
   {
-    auto vid = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm_);
-    for(std::size_t i = 0; i < nv_; ++i) put(vid, disk_.vertices[i], i);
-    const std::vector<Point_2>& P = P_;
-    Immersion_report r = check_immersion_of_disk(disk_, boost::make_function_property_map<vertex_descriptor, Point_2>(
-      [&](vertex_descriptor v) -> Point_2 { return P[get(vid, v)]; }), orient_);
+    const auto vid = vertex_indices();
+    Immersion_report r = check_immersion_of_disk(disk_, current_uv(vid), orient_);
     for(std::size_t b : disk_.border)
     {
       const Point_2 q = get(uvm_, disk_.vertices[b]);

@@ -156,12 +156,13 @@ Row run(const SM& m0, const std::vector<std::pair<vertex_descriptor, K::Point_2>
   SM m = m0; // the property maps are copied with the mesh
   UV_map uv = m.property_map<vertex_descriptor, K::Point_2>("v:uv").first;
   PE::Constrained_embedding_statistics st;
-  if(max_steiner == 0) max_steiner = 4 * m.number_of_edges() + 1000; // constrained_embedding()'s default
   reset_peak_rss();
-  const PE::Error_code ec = PE::constrained_embedding(
-      m, constraints, uv,
-      PE::parameters::optimize(optimize, PE::parameters::statistics(&st, PE::parameters::maximum_steiner_vertices(max_steiner,
-                                     CGAL::parameters::maximum_running_time(budget)))));
+  // max_steiner 0: constrained_embedding()'s default budgets
+  // PE_VERBOSE=1 in the environment: constrained_embedding() reports its phases on std::cerr
+  const bool verbose = std::getenv("PE_VERBOSE") != nullptr;
+  const auto np = PE::parameters::optimize(optimize, PE::parameters::statistics(&st, CGAL::parameters::maximum_running_time(budget).verbose(verbose)));
+  const PE::Error_code ec = max_steiner ? PE::constrained_embedding(m, constraints, uv, PE::parameters::maximum_steiner_vertices(max_steiner, np))
+                                        : PE::constrained_embedding(m, constraints, uv, np);
   Row r;
   r.peak_mb = peak_rss_mb();
   r.status = PE::get_error_name(ec);

@@ -20,7 +20,7 @@
 // symmetric Dirichlet energy before and after the optimization are recorded.
 //
 //   polygon_map_benchmark DATA_DIR OUT_PREFIX [--meshes a.off,b.off] [--obj FILE.obj]... [--seeds S]
-//        [--shapes hilbert,star,spiral,own] [--min-vertices N] [--budget SECONDS]
+//        [--shapes hilbert,star,spiral,own] [--min-vertices N] [--budget SECONDS] [--no-optimize] [--max-steiner N]
 //
 // Writes OUT_PREFIX.csv (one row per run) and OUT_PREFIX.md.
 
@@ -133,7 +133,7 @@ struct Row
 };
 
 // the run, in the child process; the result as one line on `fd`
-void run_child(const Input& in, const std::string& shape, unsigned seed, double budget, int fd)
+void run_child(const Input& in, const std::string& shape, unsigned seed, double budget, bool optimize, std::size_t max_steiner, int fd)
 {
   Row r;
   SM m = in.mesh;
@@ -185,8 +185,9 @@ void run_child(const Input& in, const std::string& shape, unsigned seed, double 
     r.constraints = C.size();
     r.v_in = m.number_of_vertices();
     PE::Constrained_embedding_statistics st;
-    const PE::Error_code ec = PE::constrained_embedding(m, C, uv, PE::parameters::statistics(&st,
-                                CGAL::parameters::maximum_running_time(budget)));
+    const auto np = PE::parameters::optimize(optimize, PE::parameters::statistics(&st, CGAL::parameters::maximum_running_time(budget)));
+    const PE::Error_code ec = max_steiner ? PE::constrained_embedding(m, C, uv, PE::parameters::maximum_steiner_vertices(max_steiner, np))
+                                          : PE::constrained_embedding(m, C, uv, np);
     r.peak_mb = pe_bench::peak_rss_mb();
     r.status = PE::get_error_name(ec);
     r.v_out = m.number_of_vertices();
@@ -219,7 +220,7 @@ void run_child(const Input& in, const std::string& shape, unsigned seed, double 
 }
 
 // forks, runs, kills the child after `wall` seconds
-Row run_one(const Input& in, const std::string& shape, unsigned seed, double budget, double wall)
+Row run_one(const Input& in, const std::string& shape, unsigned seed, double budget, bool optimize, std::size_t max_steiner, double wall)
 {
   Row r;
   r.mesh = in.name; r.shape = shape; r.seed = seed;
@@ -231,7 +232,7 @@ Row run_one(const Input& in, const std::string& shape, unsigned seed, double bud
   if(pid == 0)
   {
     close(fds[0]);
-    run_child(in, shape, seed, budget, fds[1]);
+    run_child(in, shape, seed, budget, optimize, max_steiner, fds[1]);
     close(fds[1]);
     _exit(0);
   }
@@ -285,7 +286,7 @@ int main(int argc, char** argv)
   if(argc < 3)
   {
     std::cerr << "usage: " << argv[0] << " DATA_DIR OUT_PREFIX [--meshes a.off,b.off] [--obj FILE.obj]... [--seeds S]\n"
-                 "       [--shapes hilbert,star,spiral,own] [--min-vertices N] [--budget SECONDS]" << std::endl;
+                 "       [--shapes hilbert,star,spiral,own] [--min-vertices N] [--budget SECONDS] [--no-optimize] [--max-steiner N]" << std::endl;
     return 2;
   }
   const std::string data = argv[1], out = argv[2];
@@ -293,6 +294,8 @@ int main(int argc, char** argv)
   unsigned seeds = 3;
   std::size_t min_vertices = 300;
   double budget = 60;
+  bool optimize = true;
+  std::size_t max_steiner = 0; // 0: constrained_embedding's default
   for(int i = 3; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -303,6 +306,8 @@ int main(int argc, char** argv)
     else if(a == "--shapes" && has) shapes = split(argv[++i], ',');
     else if(a == "--min-vertices" && has) min_vertices = std::stoul(argv[++i]);
     else if(a == "--budget" && has) budget = std::atof(argv[++i]);
+    else if(a == "--no-optimize") optimize = false;
+    else if(a == "--max-steiner" && has) max_steiner = std::stoul(argv[++i]);
     else { std::cerr << "unknown argument " << a << std::endl; return 2; }
   }
 
@@ -345,7 +350,7 @@ int main(int argc, char** argv)
       if(shape == "own" && !in.has_uv) continue;
       for(unsigned seed = 0; seed < (shape == "spiral" ? 1u : seeds); ++seed)
       {
-        Row r = run_one(in, shape, seed, budget, 3 * budget + 30);
+        Row r = run_one(in, shape, seed, budget, optimize, max_steiner, 3 * budget + 30);
         std::cout << r.mesh << " " << r.shape << (r.order ? " order " + std::to_string(r.order) : std::string()) << " seed " << seed
                   << ": " << r.status << ", " << r.certificate << ", vertices " << r.v_in << " -> " << r.v_out << " (border "
                   << r.border << ", corners " << r.corners << ", constraints " << r.constraints << "), certified map "

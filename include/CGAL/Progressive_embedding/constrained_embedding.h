@@ -83,6 +83,11 @@ struct Constrained_embedding_statistics
   std::size_t steiner_vertices = 0;
   /// of which added to split chords along one path or border side after tracing
   std::size_t chord_splits = 0;
+  /// whether the paths were traced a second time, guided by a drawing of the partition (after shortest
+  /// paths ran out of their Steiner budget or added more than a tenth of the vertices)
+  bool guided_tracing = false;
+  /// whether the guided tracing's paths were kept (it succeeded with fewer Steiner vertices)
+  bool guided_tracing_kept = false;
   /// paths traced (interior edges of the partition of the domain)
   std::size_t paths = 0;
   /// patches (convex polygons of the partition), each embedded separately
@@ -323,9 +328,13 @@ void write_face_patch_map(const TriangleMesh& tm, const Work& work, const CopyTo
 ///     \cgalParamDefault{no limit}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_steiner_vertices}
-///     \cgalParamDescription{the largest number of vertices path tracing may add}
+///     \cgalParamDescription{the largest number of vertices path tracing may add. The paths are traced as
+///                           shortest paths first; when these exceed their budget or add more than a tenth of the
+///                           vertices, they are traced again, guided by a drawing of the partition, and the result with
+///                           fewer Steiner vertices is kept. A value given here bounds both tracings}
 ///     \cgalParamType{`std::size_t`}
-///     \cgalParamDefault{4 times the number of edges plus 1000}
+///     \cgalParamDefault{shortest paths: 4 times the number of edges plus 1000; guided paths: 32 times the number of
+///                       edges plus 10000}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{optimize}
 ///     \cgalParamDescription{whether to optimize the distortion of the certified map (border and constraints fixed)}
@@ -602,10 +611,46 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
   if(!(remaining() > 0)) return finish(ERROR_BUDGET_EXHAUSTED);
   if(!partition.edges.empty())
   {
-    const std::size_t max_steiner = choose_parameter(get_parameter(np, internal_np::maximum_steiner_vertices),
-                                                     4 * static_cast<std::size_t>(num_edges(work)) + 1000);
+    // Two tracings at most. Shortest paths first: on most inputs they add few vertices. When they run
+    // out of their budget or add many vertices (nested partition edges squeezed into corridors, as
+    // on space-filling-curve borders), the paths are traced again on a copy of the mesh as it was,
+    // guided by a drawing of the partition (guide_map.h), and the result with fewer Steiner vertices
+    // is kept. A budget given by the caller bounds both tracings.
+    const std::size_t unset = std::size_t(-1);
+    const std::size_t user_max = choose_parameter(get_parameter(np, internal_np::maximum_steiner_vertices), unset);
+    const std::size_t ne = static_cast<std::size_t>(num_edges(work));
+    const std::size_t first_max = user_max != unset ? user_max : 4 * ne + 1000;
+    const std::size_t guided_max = user_max != unset ? user_max : 32 * ne + 10000;
+    const Work before_tracing = work;
     ec = internal::trace_paths(work, wvpm, nodes, partition.edges, partition.rotation, paths, steiner,
-                               parameters::maximum_steiner_vertices(max_steiner).maximum_running_time(remaining()));
+                               parameters::maximum_steiner_vertices(first_max).maximum_running_time(remaining()));
+    const std::size_t many = num_vertices(before_tracing) / 10 + 10;
+    if((ec == ERROR_BUDGET_EXHAUSTED || (ec == OK && steiner.size() > many)) && remaining() > 0)
+    {
+      Work first_work;
+      std::vector<std::vector<wvertex> > first_paths;
+      std::vector<internal::Steiner_vertex<Work> > first_steiner;
+      const Error_code first_ec = ec;
+      if(first_ec == OK) { first_work = std::move(work); first_paths.swap(paths); first_steiner.swap(steiner); }
+      work = before_tracing;
+      wvpm = get(CGAL::vertex_point, work); // the copy's own point array
+      paths.clear();
+      steiner.clear();
+      const std::size_t second_max = first_ec == OK ? first_steiner.size() - 1 : guided_max;
+      ec = internal::trace_paths(work, wvpm, nodes, partition.edges, partition.rotation, paths, steiner,
+                                 internal::guide_weight(1., parameters::maximum_steiner_vertices(second_max)
+                                                              .maximum_running_time(remaining())));
+      stats.guided_tracing = true;
+      if(ec == OK) stats.guided_tracing_kept = true;
+      else if(first_ec == OK)
+      {
+        ec = OK;
+        work = std::move(first_work);
+        wvpm = get(CGAL::vertex_point, work);
+        paths.swap(first_paths);
+        steiner.swap(first_steiner);
+      }
+    }
     stats.steiner_vertices = steiner.size();
     if(ec != OK)
     {

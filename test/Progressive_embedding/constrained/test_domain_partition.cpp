@@ -14,6 +14,7 @@
 #include <CGAL/Polygon_2_algorithms.h>
 
 #include "registry.h"
+#include "polygon_fixtures.h"
 #include "../test_util.h"
 
 #include <algorithm>
@@ -24,6 +25,7 @@
 namespace {
 
 namespace I = CGAL::Progressive_embedding::internal;
+using pe_test::hilbert_outline;
 
 template <class P>
 Kq::Point_2 qp(const P& p) { return Kq::Point_2(exact_rational(p.x()), exact_rational(p.y())); }
@@ -652,54 +654,6 @@ std::vector<typename K::Point_2> comb(int k)
   return B;
 }
 
-// The outline of the Hilbert curve of the given order thickened into cells (a curve point every
-// second cell, a connecting cell between consecutive points), counterclockwise, a vertex at every
-// unit step: many flat vertices.
-std::vector<Epick::Point_2> hilbert_outline(int order)
-{
-  const int n = 1 << order, S = 2 * n + 1;
-  std::vector<char> cell(S * S, 0);
-  auto at = [&](int x, int y) -> char& { return cell[(y + 1) * S + x + 1]; };
-  auto d2xy = [&](int d, int& x, int& y) {
-    x = y = 0;
-    for(int s = 1, t = d; s < n; s *= 2, t /= 4)
-    {
-      const int rx = 1 & (t / 2), ry = 1 & (t ^ rx);
-      if(ry == 0) { if(rx == 1) { x = s - 1 - x; y = s - 1 - y; } std::swap(x, y); }
-      x += s * rx; y += s * ry;
-      }
-  };
-  int px = 0, py = 0;
-  for(int d = 0; d < n * n; ++d)
-  {
-    int x, y;
-    d2xy(d, x, y);
-    at(2 * x, 2 * y) = 1;
-    if(d > 0) at(x + px, y + py) = 1; // the cell between (2 px, 2 py) and (2 x, 2 y)
-    px = x; py = y;
-  }
-  auto filled = [&](int x, int y) { return x >= 0 && y >= 0 && x < S - 2 && y < S - 2 && at(x, y); };
-  // directed unit border edges with the filled cell on their left
-  std::map<std::pair<int, int>, std::pair<int, int> > next;
-  for(int y = 0; y < S - 2; ++y)
-    for(int x = 0; x < S - 2; ++x)
-    {
-      if(!filled(x, y)) continue;
-      if(!filled(x, y - 1)) next[std::make_pair(x, y)] = std::make_pair(x + 1, y);
-      if(!filled(x + 1, y)) next[std::make_pair(x + 1, y)] = std::make_pair(x + 1, y + 1);
-      if(!filled(x, y + 1)) next[std::make_pair(x + 1, y + 1)] = std::make_pair(x, y + 1);
-      if(!filled(x - 1, y)) next[std::make_pair(x, y + 1)] = std::make_pair(x, y);
-    }
-  std::vector<Epick::Point_2> P;
-  std::pair<int, int> v = next.begin()->first;
-  for(std::size_t guard = 0; guard <= next.size(); ++guard)
-  {
-    P.push_back(Epick::Point_2(v.first, v.second));
-    v = next[v];
-    if(v == next.begin()->first) break;
-  }
-  return P;
-}
 
 // a strip around the spiral r = 1 + pitch t / (2 pi), t in [0, turns 2 pi], of width w > pitch: it
 // overlaps itself; counterclockwise

@@ -15,6 +15,7 @@
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 
 #include "registry.h"
+#include "polygon_fixtures.h"
 #include "../test_util.h"
 #include "../protocols.h"
 
@@ -212,7 +213,54 @@ std::vector<P2> spiral_twice()
   return Q;
 }
 
+// The paper's stress test: a disk onto the outline of the Hilbert curve of order 3 (104 corners), with
+// constraints or not. Nested partition edges squeeze shortest paths into corridors; the guided second tracing
+// (`guided_tracing` in the statistics) helps. Not optimized (the test is about the map).
+int hilbert_map(const std::string& what, Surface_mesh m, const std::vector<P2>& targets, bool* guided)
+{
+  typedef boost::graph_traits<Surface_mesh>::vertex_descriptor VD;
+  auto uv = make_uv_map(m, P2());
+  for(auto v : vertices(m)) put(uv, v, P2(0, 0));
+  const std::vector<P2> Q = pe_test::hilbert_corners(3);
+  CHECK(Q.size() == 104, "Hilbert outline of order 3: 104 corners");
+  CHECK(border_on_polygon(m, uv, Q), "border placed on the Hilbert outline");
+  std::vector<std::pair<VD, P2> > C;
+  std::vector<VD> interior;
+  for(auto v : vertices(m)) if(!CGAL::is_border(v, m)) interior.push_back(v);
+  std::mt19937 rng(11);
+  std::shuffle(interior.begin(), interior.end(), rng);
+  for(std::size_t i = 0; i < targets.size(); ++i) C.emplace_back(interior[i], targets[i]);
+  std::vector<std::pair<VD, P2> > border;
+  for(auto v : vertices(m)) if(CGAL::is_border(v, m)) border.emplace_back(v, get(uv, v));
+  PE::Constrained_embedding_statistics st;
+  const PE::Error_code ec = PE::constrained_embedding(m, C, uv, PE::parameters::optimize(false, PE::parameters::statistics(&st)));
+  std::cout << what << ": " << PE::get_error_message(ec) << ", vertices " << st.input_vertices << " -> " << st.output_vertices
+            << ", Steiner " << st.steiner_vertices << ", paths " << st.paths << ", patches " << st.patches
+            << ", guided tracing " << st.guided_tracing << " (kept " << st.guided_tracing_kept << "), seconds " << st.seconds_total << std::endl;
+  CHECK(ec == PE::OK, "constrained_embedding OK");
+  for(const auto& b : border) CHECK(get(uv, b.first) == b.second, "border bit-exact");
+  for(const auto& c : C) CHECK(get(uv, c.first) == c.second, "constraint bit-exact");
+  const PE::Embedding_report er = PE::check_embedding(m, uv);
+  std::cout << "  " << er.summary() << std::endl;
+  CHECK(er.is_valid() && er.flipped == 0 && er.degenerate == 0 && er.overlapping_pairs == 0, "certified embedding");
+  CHECK(st.output_vertices == st.input_vertices + st.steiner_vertices, "Steiner vertices counted");
+  *guided = st.guided_tracing;
+  return EXIT_SUCCESS;
+}
+
 } // namespace
+
+PE_TEST_GROUP(constrained_embedding_hilbert)
+{
+  // 93 nested partition edges: shortest paths run out of their budget (or add more than a tenth of the
+  // vertices), the guided tracing gives the certified map
+  Surface_mesh grid;
+  PE::internal::make_grid_disk(60, grid);
+  bool guided = false;
+  RUN(hilbert_map("grid 60x60 on the Hilbert outline of order 3", grid, {}, &guided));
+  CHECK(guided, "traced a second time, guided");
+  return EXIT_SUCCESS;
+}
 
 PE_TEST_GROUP(constrained_embedding_non_convex)
 {

@@ -290,8 +290,8 @@ int trace_and_verify(Mesh& m, const Partition<Mesh>& P, Counts& c, const char* w
   return EXIT_SUCCESS;
 }
 
-// 3, 10, 50 interior nodes on disks of several sizes: the default (3D length, proximity penalty) and
-// plain hop-count shortest paths (no proximity penalty), whose chords the authors' protocol splits all
+// 3, 10, 50 interior nodes on disks of several sizes: the default (3D length, proximity penalty), guided
+// by the partition's drawing, and plain hop-count shortest paths (no proximity penalty), whose chords the authors' protocol splits all
 template <class Mesh>
 int sizes_case(const std::string& file, const std::vector<std::size_t>& counts, unsigned seeds, std::size_t& total_ours, std::size_t& total_plain)
 {
@@ -309,6 +309,9 @@ int sizes_case(const std::string& file, const std::vector<std::size_t>& counts, 
       { Mesh m = m0; RUN(trace_and_verify(m, P, ch, (what + " hops").c_str(), PE::parameters::path_metric(PE::Path_metric::HOP_COUNT))); }
       { Mesh m = m0; RUN(trace_and_verify(m, P, cp, (what + " plain hops").c_str(),
                                           PE::parameters::proximity_penalty(0., PE::parameters::path_metric(PE::Path_metric::HOP_COUNT)))); }
+      // guided by the partition's drawing (the second tracing of constrained_embedding()): also traced, every postcondition verified
+      { Mesh m = m0; Counts cg; RUN(trace_and_verify(m, P, cg, (what + " guided").c_str(),
+                                                     PE::internal::guide_weight(1., CGAL::parameters::default_values()))); }
       total_ours += c.steiner + c.chords_same_side;
       total_plain += cp.chords_all;
       CHECK(2 * (c.steiner + c.chords_same_side) <= cp.chords_all, "at most half the Steiner vertices of splitting every chord");
@@ -342,6 +345,12 @@ PE_TEST_GROUP(trace_paths_polyhedron)
     const auto P = delaunay_partition(mm, uvm, 8, random_interior(mm, uvm, n, 7), false);
     Counts c;
     RUN(trace_and_verify(mm, P, c, ("Polyhedron_3 n=" + std::to_string(n)).c_str()));
+    Polyhedron mg = mm; // a copy for the guided tracing: its own handles, so its own partition
+    auto uvg = circle_tutte(mg);
+    const auto Pg = delaunay_partition(mg, uvg, 8, random_interior(mg, uvg, n, 7), false);
+    Counts cg;
+    RUN(trace_and_verify(mg, Pg, cg, ("Polyhedron_3 guided n=" + std::to_string(n)).c_str(),
+                         PE::internal::guide_weight(1., CGAL::parameters::default_values())));
   }
   (void)uv;
   return EXIT_SUCCESS;
@@ -691,6 +700,7 @@ PE_TEST_GROUP(trace_paths_errors)
     CHECK(run(m, P, CGAL::parameters::maximum_running_time(-1.)) == PE::ERROR_WRONG_PARAMETER, "negative time");
     CHECK(run(m, P, PE::parameters::split_penalty(-1.)) == PE::ERROR_WRONG_PARAMETER, "negative split penalty");
     CHECK(run(m, P, PE::parameters::proximity_penalty(std::nan(""))) == PE::ERROR_WRONG_PARAMETER, "NaN proximity penalty");
+    CHECK(run(m, P, PE::internal::guide_weight(-1., CGAL::parameters::default_values())) == PE::ERROR_WRONG_PARAMETER, "negative guide weight");
     CHECK(count_vertices(m) == nv0, "mesh unchanged");
   }
   {

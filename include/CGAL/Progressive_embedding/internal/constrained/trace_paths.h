@@ -41,7 +41,11 @@
 //                 to avoid one split), proximity_penalty (double, same unit, default 1: each vertex
 //                 of a path costs this much divided by its hop distance to the traced network, so
 //                 that paths keep apart and leave free vertices for the later ones; 0 gives plain
-//                 shortest paths). A negative or non-finite value gives ERROR_WRONG_PARAMETER.
+//                 shortest paths), guide_weight (double, same unit, default 0: off; guide_map.h: each
+//                 vertex of a path costs this much per local unit of guide distance to the straight
+//                 segment of its partition edge, so that the paths spread as the partition's edges do;
+//                 on a mesh with several border cycles the guide is not computed and this is ignored).
+//                 A negative or non-finite value gives ERROR_WRONG_PARAMETER.
 //     Preconditions checked (ERROR_* and the mesh unchanged): triangle mesh (ERROR_NON_TRIANGULAR_MESH,
 //     ERROR_EMPTY_MESH); connected, no isolated vertex, at least one border cycle, Euler characteristic
 //     2 - number of border cycles (ERROR_NOT_A_DISK with one border cycle or none, ERROR_NOT_GENUS_ZERO
@@ -99,6 +103,7 @@
 
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/internal/constrained/refinement.h>
+#include <CGAL/Progressive_embedding/internal/constrained/guide_map.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -712,12 +717,20 @@ public:
       if(item >= 0)
       {
         if(proximity_ > 0) d += proximity_ / double((std::max)(1, dnet_[static_cast<std::size_t>(item)]));
+        if(guided_) d += guide_cost(guide_[static_cast<std::size_t>(item)], gscale_[static_cast<std::size_t>(item)]);
         if(vstamp_[item] == stamp_ && dist_[item] <= d) return;
         vstamp_[item] = stamp_; dist_[item] = d; pred_[item] = from;
       }
       else
       {
         const std::size_t k = static_cast<std::size_t>(-1 - item);
+        if(guided_)
+        {
+          const Midpoint& M = mids_[k];
+          const std::size_t a = static_cast<std::size_t>(M.a), b = static_cast<std::size_t>(M.b);
+          d += guide_cost(Guide_point{ { 0.5 * (guide_[a][0] + guide_[b][0]), 0.5 * (guide_[a][1] + guide_[b][1]) } },
+                          0.5 * (std::min)(gscale_[a], gscale_[b]));
+        }
         if(mdist_[k] <= d) return;
         mdist_[k] = d; mpred_[k] = from;
       }
@@ -814,6 +827,12 @@ public:
       const vertex_descriptor m = split_at_midpoint(halfedge(net_.vd[M.a], net_.vd[M.b], tm_).first, tm_, vpm_, steiner);
       it = net_.add_vertex(m);
       pos_.push_back(point(m));
+      if(guided_)
+      {
+        const std::size_t a = static_cast<std::size_t>(M.a), b = static_cast<std::size_t>(M.b);
+        guide_.push_back(Guide_point{ { 0.5 * (guide_[a][0] + guide_[b][0]), 0.5 * (guide_[a][1] + guide_[b][1]) } });
+        gscale_.push_back(0.5 * (std::min)(gscale_[a], gscale_[b]));
+      }
       if(proximity_ > 0)
       {
         // the new vertex is next to the split edge's (blocked) endpoints; its new edges may shorten distances
@@ -886,7 +905,21 @@ public:
     for(std::size_t i = 0; i < net_.vd.size(); ++i) if(net_.blocked(static_cast<int>(i))) s.push_back(static_cast<int>(i));
     update_distances(s);
   }
+  // the guide (guide_map.h): positions of the vertices in the unit disk, their local scale, and the
+  // segment of the edge being traced; `weight` is in units of the path cost
+  void set_guide(std::vector<Guide_point> guide, std::vector<double> scale, double weight)
+  {
+    guide_ = std::move(guide); gscale_ = std::move(scale); gweight_ = weight;
+    guided_ = gweight_ > 0 && guide_.size() == net_.vd.size();
+  }
+  void set_segment(const Guide_point& a, const Guide_point& b) { seg_a_ = a; seg_b_ = b; }
+  bool guided() const { return guided_; }
 private:
+  double guide_cost(const Guide_point& p, double scale) const
+  {
+    // linear in the distance: measured against its square on Hilbert-curve borders, no better
+    return gweight_ * guide_segment_distance(p, seg_a_, seg_b_) / scale;
+  }
   int midpoint(halfedge_descriptor h)
   {
     const int a = net_.id(source(h, tm_)), b = net_.id(target(h, tm_));
@@ -910,6 +943,11 @@ public:
   double proximity_ = 0;
 private:
   std::vector<std::array<double, 3> > pos_;
+  std::vector<Guide_point> guide_;
+  std::vector<double> gscale_;
+  Guide_point seg_a_{ { 0., 0. } }, seg_b_{ { 0., 0. } };
+  double gweight_ = 0;
+  bool guided_ = false;
   std::vector<int> dnet_;
   static constexpr int far_ = (std::numeric_limits<int>::max)() / 4; // "unreached": no overflow in far_ + 1
   std::vector<unsigned> mark_s_, mark_c_, vstamp_;
@@ -945,8 +983,10 @@ Error_code trace_paths(TriangleMesh& tm, VertexPointMap vpm,
   const Path_metric metric = choose_parameter(get_parameter(np, internal_np::path_metric), Path_metric::EDGE_LENGTH);
   const double penalty_units = choose_parameter(get_parameter(np, internal_np::split_penalty), 4.);
   const double proximity_units = choose_parameter(get_parameter(np, internal_np::proximity_penalty), 1.);
+  const double guide_units = choose_parameter(get_parameter(np, internal_np::guide_weight), 0.);
   if(!(max_seconds >= 0) || !(penalty_units >= 0) || !std::isfinite(penalty_units) ||
-     !(proximity_units >= 0) || !std::isfinite(proximity_units)) return ERROR_WRONG_PARAMETER;
+     !(proximity_units >= 0) || !std::isfinite(proximity_units) ||
+     !(guide_units >= 0) || !std::isfinite(guide_units)) return ERROR_WRONG_PARAMETER;
   CGAL::Real_timer timer;
   timer.start();
 
@@ -1021,6 +1061,15 @@ Error_code trace_paths(TriangleMesh& tm, VertexPointMap vpm,
   const double penalty = penalty_units * unit;
   tracer.proximity_ = proximity_units * unit;
   if(tracer.proximity_ > 0) tracer.init_distances();
+  std::vector<Guide_point> node_guide;
+  if(guide_units > 0)
+  {
+    std::vector<Guide_point> vg;
+    std::vector<double> vs;
+    if(compute_guide_map(tm, vpm, [&](vertex_descriptor v) { return static_cast<std::size_t>(net.id(v)); }, net.vd.size(),
+                         nodes, edges, node_guide, vg, vs))
+      tracer.set_guide(std::move(vg), std::move(vs), guide_units * unit);
+  }
   std::vector<char> traced(E, 0);
   const std::size_t first_steiner = steiner.size();
 
@@ -1076,6 +1125,7 @@ Error_code trace_paths(TriangleMesh& tm, VertexPointMap vpm,
   {
     const std::size_t a = edges[e][0], b = edges[e][1];
     const int ia = net.id(nodes[a]), ib = net.id(nodes[b]);
+    if(tracer.guided()) tracer.set_segment(node_guide[a], node_guide[b]);
     std::size_t rounds = 0;
     for(;;)
     {

@@ -96,10 +96,14 @@ public:
       for(face_descriptor f : stuck)
         if(!m.is_removed(f) && ftag[f] && face_invalid(f)) bad.push_back(f);
       stuck.clear();
+      // a face can be queued once per neighbour: without this, each round multiplied the copies
+      // (about 19 times), and a patch whose faces stayed stuck for a few rounds filled gigabytes
+      remove_duplicates(bad);
       if(bad.empty()) break;
       if(++counters.expansion_rounds > expansion_budget) return ERROR_BUDGET_EXHAUSTED;
       const std::size_t collapses_before = counters.collapses;
       const bool grew = expand(bad, queue);
+      remove_duplicates(queue);
       if(!grew && collapses_before == last_collapse_count)
       {
         // Nothing left to collapse around these faces: their interior vertices have only
@@ -160,6 +164,21 @@ public:
   }
 
 private:
+  // keeps the first copy of each face, in order
+  void remove_duplicates(std::vector<face_descriptor>& faces) const
+  {
+    std::vector<char> seen(m.num_faces(), 0);
+    std::size_t k = 0;
+    for(face_descriptor f : faces)
+    {
+      const std::size_t i = static_cast<std::size_t>(f);
+      if(i < seen.size() && seen[i]) continue;
+      if(i < seen.size()) seen[i] = 1;
+      faces[k++] = f;
+    }
+    faces.resize(k);
+  }
+
   // Sweeps of independent collapses (no two in one sweep touch the same vertex star) build a
   // balanced hierarchy, like a progressive mesh: insertion then refines coarse-to-fine instead
   // of peeling one huge star vertex by vertex. Faces with no collapsible edge go to `stuck`.

@@ -642,7 +642,8 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
                                                               .maximum_running_time(remaining())));
       stats.guided_tracing = true;
       if(ec == OK) stats.guided_tracing_kept = true;
-      else if(first_ec == OK)
+      else if(first_ec != OK) ec = first_ec; // both failed: the shortest paths' reason (the guided search may give up)
+      else
       {
         ec = OK;
         work = std::move(first_work);

@@ -54,6 +54,12 @@
 #include <vector>
 
 #include <sys/stat.h>
+#include <unordered_map>
+#include <boost/functional/hash.hpp>
+
+namespace CGAL {
+template <class TM, class SEM, class SVM> class Seam_mesh;
+} // namespace CGAL
 
 namespace CGAL {
 namespace Progressive_embedding {
@@ -355,6 +361,10 @@ struct Obj_has_clear_keeping_maps : std::false_type {};
 template <class Mesh>
 struct Obj_has_clear_keeping_maps<Mesh, std::void_t<decltype(std::declval<Mesh&>().clear_without_removing_property_maps())> >
   : std::true_type {};
+
+// A Seam_mesh: its vertices are the sides of the seams of an underlying mesh, whose vertices are the 3D ones.
+template <class Mesh> struct Obj_is_seam_mesh : std::false_type {};
+template <class TM, class SEM, class SVM> struct Obj_is_seam_mesh<CGAL::Seam_mesh<TM, SEM, SVM> > : std::true_type {};
 
 template <class Mesh>
 void obj_clear_mesh(Mesh& tm)
@@ -698,6 +708,9 @@ read_OBJ_with_uv(const std::string& filename, TriangleMesh& tm, VertexUVMap uvm,
 ///         `ERROR_NON_FINITE_COORDINATES` if a coordinate to be written is not finite;
 ///         `ERROR_CANNOT_WRITE_FILE` if the stream fails
 ///
+/// On a `CGAL::Seam_mesh` (without `vt_to_v`), each vertex of the underlying mesh is written once as a `v`
+/// line, shared by the sides of the seams through it, each of which gets its own `vt` line.
+///
 /// \sa `read_OBJ_with_uv()`
 template <class TriangleMesh, class VertexUVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Error_code
@@ -733,7 +746,32 @@ write_OBJ_with_uv(std::ostream& out, const TriangleMesh& tm, VertexUVMap uvm,
     std::vector<std::array<double, 3> > vlist;
     std::vector<std::size_t> v_of(nv);
     auto to3 = [](const auto& p) { return std::array<double, 3>{ CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) }; };
-    if(vt_to_v == nullptr)
+    if constexpr(internal::Obj_is_seam_mesh<TriangleMesh>::value)
+    {
+      if(vt_to_v == nullptr)
+      {
+        // one `v` per vertex of the underlying mesh, shared by the seam sides (one `vt` each)
+        typedef typename std::remove_cv<typename std::remove_reference<decltype(tm.mesh())>::type>::type TM;
+        typedef typename boost::graph_traits<TM>::vertex_descriptor TM_vertex;
+        std::unordered_map<TM_vertex, std::size_t, boost::hash<TM_vertex> > v_index;
+        for(vertex_descriptor vd : vertices(tm))
+        {
+          const TM_vertex u = target(vd.hd.tmhd, tm.mesh());
+          auto it = v_index.find(u);
+          if(it == v_index.end())
+          {
+            it = v_index.emplace(u, vlist.size()).first;
+            vlist.push_back(to3(get(vpm, vd)));
+          }
+          v_of[get(vid, vd)] = it->second;
+        }
+      }
+    }
+    if(vt_to_v == nullptr && internal::Obj_is_seam_mesh<TriangleMesh>::value)
+    {
+      // done above
+    }
+    else if(vt_to_v == nullptr)
     {
       vlist.reserve(nv);
       for(vertex_descriptor vd : vertices(tm))

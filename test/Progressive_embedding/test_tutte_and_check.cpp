@@ -10,6 +10,8 @@
 
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
 #include <CGAL/Progressive_embedding/check_embedding.h>
+#include <CGAL/Progressive_embedding/progressive_embedding.h>
+#include <CGAL/Progressive_embedding/optimize_distortion.h>
 #include <CGAL/Progressive_embedding/IO/OBJ_with_uv.h>
 #include "protocols.h" // test fixtures: test/Progressive_embedding/
 
@@ -680,6 +682,58 @@ int test_traits()
   return EXIT_SUCCESS;
 }
 
+// ---- named parameters chained in any order -------------------------------------------------------
+
+template <class Mesh>
+int test_named_parameters()
+{
+  std::cout << "[" << mesh_name<Mesh>() << "] named parameters chained in any order" << std::endl;
+  typedef decltype(PE::parameters::weights(PE::Weights::UNIFORM).vertex_point_map(0)) Chain;
+  static_assert(std::is_base_of<typename Chain::Cgal_pack, Chain>::value, "the package's pack is a CGAL pack");
+
+  // Tutte: the same parameters in three orders, one started by CGAL's own pack, give the same bits; the
+  // weights took effect (the uniform map differs)
+  Mesh m;
+  PE::internal::make_grid_disk(8, m);
+  const auto vpm = get(CGAL::vertex_point, m);
+  auto a = make_uv_map(m, Epick::Point_2()), b = make_uv_map(m, Epick::Point_2()),
+       c = make_uv_map(m, Epick::Point_2()), u = make_uv_map(m, Epick::Point_2());
+  const PE::Border_shape circle = PE::Border_shape::CIRCLE;
+  const PE::Weights mv = PE::Weights::MEAN_VALUE;
+  CHECK(PE::tutte_embedding(m, null_h<Mesh>(), a, PE::parameters::border_shape(circle).weights(mv).vertex_point_map(vpm)) == PE::OK, "ours, then CGAL's");
+  CHECK(PE::tutte_embedding(m, null_h<Mesh>(), b, PE::parameters::vertex_point_map(vpm).weights(mv).border_shape(circle)) == PE::OK, "CGAL's, then ours");
+  CHECK(PE::tutte_embedding(m, null_h<Mesh>(), c, PE::parameters::weights(mv, CGAL::parameters::vertex_point_map(vpm)).border_shape(circle)) == PE::OK, "appended to CGAL's pack");
+  CHECK(PE::tutte_embedding(m, null_h<Mesh>(), u, PE::parameters::default_values().border_shape(circle)) == PE::OK, "uniform");
+  std::size_t differ = 0;
+  for(auto v : vertices(m))
+  {
+    CHECK(get(a, v) == get(b, v) && get(a, v) == get(c, v), "the order of the parameters does not matter");
+    if(get(a, v) != get(u, v)) ++differ;
+  }
+  std::cout << "  mean value map differs from the uniform one at " << differ << " vertices" << std::endl;
+  CHECK(differ > 0 && PE::check_embedding(m, a).is_valid(), "mean value weights applied, map valid");
+
+  // progressive embedding and optimization (of the uniform map of the grid): the package's parameters
+  // are read before and after CGAL's
+  Mesh s;
+  const auto corners = PE::internal::make_stacked_triangulation(40, s);
+  auto uv = make_uv_map(s, Epick::Point_2());
+  pin_corners<Epick>(uv, corners);
+  CHECK(PE::tutte_embedding(s, null_h<Mesh>(), uv, fixed_border()) == PE::OK && !PE::check_embedding(s, uv).is_valid(), "double Tutte fails");
+  PE::Progressive_embedding_statistics st;
+  CHECK(PE::progressive_embedding(s, uv, PE::parameters::default_values().vertex_point_map(get(CGAL::vertex_point, s))
+                                             .statistics(&st).invalid_energy_threshold(1e20)) == PE::OK, "repaired");
+  CHECK(st.report.is_valid() && st.invalid_faces_before > 0 && st.insertions > 0, "statistics filled through the chain");
+  PE::Optimization_statistics os;
+  const PE::Error_code oec = PE::optimize_distortion(m, u, PE::parameters::optimization_statistics(&os)
+                                                          .number_of_iterations(3).convergence_tolerance(0.));
+  // tolerance 0 never converges: the budget of 3 iterations runs out, with a valid map written
+  CHECK(oec == PE::ERROR_BUDGET_EXHAUSTED, "optimized until the budget: " << PE::get_error_name(oec));
+  std::cout << "  optimization: " << os.iterations << " iterations (budget 3 given by CGAL's parameter)" << std::endl;
+  CHECK(os.iterations == 3 && os.report.is_valid() && os.energy_after <= os.energy_before, "CGAL's number_of_iterations read after ours");
+  return EXIT_SUCCESS;
+}
+
 // ---- internal helpers, each alone ----------------------------------------------------------------
 
 template <class Mesh>
@@ -810,6 +864,7 @@ int run_group(const std::string& group, const std::string& data)
   if(group == "budget") return test_budget<Mesh>();
   if(group == "traits") return test_traits<Mesh>();
   if(group == "helpers") return test_helpers<Mesh>();
+  if(group == "named_parameters") return test_named_parameters<Mesh>();
   if(group == "bad_inputs")
   {
     RUN(test_bad_inputs<Mesh>());
@@ -822,7 +877,8 @@ int run_group(const std::string& group, const std::string& data)
 } // namespace
 
 // Usage: test_tutte_and_check DATA_DIR [GROUP [surface_mesh|polyhedron]]
-// GROUP: stacked, bull, disks, bad_inputs, exact_scales, zero_length_border, budget, traits, helpers
+// GROUP: stacked, bull, disks, bad_inputs, exact_scales, zero_length_border, budget, traits, helpers,
+// named_parameters
 // (default: all, on both mesh types)
 int main(int argc, char** argv)
 {
@@ -834,7 +890,7 @@ int main(int argc, char** argv)
   const std::string data = argv[1];
   const std::string group = (argc > 2) ? argv[2] : "all", mesh = (argc > 3) ? argv[3] : "all";
   const std::vector<std::string> groups = { "stacked", "bull", "disks", "bad_inputs", "exact_scales", "zero_length_border",
-                                            "budget", "traits", "helpers" };
+                                            "budget", "traits", "helpers", "named_parameters" };
   bool ran = false;
   for(const std::string& g : groups)
   {

@@ -7,10 +7,11 @@
 
 /// \file parameters.h
 /// Named parameters specific to this package. CGAL 5.5's list of named parameters is
-/// closed, so each one is a free function `CGAL::Progressive_embedding::parameters::name(value)`
-/// returning a `CGAL::Named_function_parameters` pack, with an overload `name(value, pack)`
-/// that appends to an existing pack. CGAL's own parameters chain after it:
-/// `PE::parameters::invalid_energy_threshold(1e20).verbose(true)`.
+/// closed, so each one is a function `CGAL::Progressive_embedding::parameters::name(value)`
+/// starting a `CGAL::Progressive_embedding::Named_function_parameters` pack (a CGAL pack whose
+/// members chain this package's parameters and CGAL's in any order:
+/// `PE::parameters::border_shape(s).weights(w).verbose(true)`), with an overload `name(value, pack)`
+/// that appends to any pack, CGAL's own included.
 
 #include <CGAL/Named_function_parameters.h>
 
@@ -44,81 +45,109 @@ enum class Weights
 };
 
 #ifndef DOXYGEN_RUNNING
+// The package's parameters, as an X-macro list: one entry generates the tag above, the member function of
+// the pack and the free functions below.
+#define CGAL_PE_NAMED_PARAMETER_LIST(X) \
+  X(border_shape) \
+  X(triangle_corners) \
+  X(triangle_corner_points) \
+  X(weights) \
+  X(invalid_energy_threshold) \
+  X(smoothing_iterations) \
+  X(retry_smoothing_iterations) \
+  X(line_search_factor) \
+  X(line_search_steps) \
+  X(insertion_retries) \
+  X(collapse_budget) \
+  X(check_overlap) \
+  X(statistics) \
+  X(convergence_tolerance) \
+  X(minimum_area_ratio) \
+  X(free_border) \
+  X(constrained_vertices) \
+  X(distortion_energy) \
+  X(optimization_statistics) \
+  X(optimize) \
+  X(multiply_connected) \
+  X(maximum_steiner_vertices) \
+  X(split_penalty) \
+  X(path_metric) \
+  X(proximity_penalty) \
+  X(steiner_points) \
+  X(face_patch_map) \
+
 namespace internal_np {
 #define CGAL_PE_ADD_NAMED_PARAMETER(NAME) enum NAME##_t { NAME };
-CGAL_PE_ADD_NAMED_PARAMETER(border_shape)
-CGAL_PE_ADD_NAMED_PARAMETER(triangle_corners)
-CGAL_PE_ADD_NAMED_PARAMETER(triangle_corner_points)
-CGAL_PE_ADD_NAMED_PARAMETER(weights)
-CGAL_PE_ADD_NAMED_PARAMETER(invalid_energy_threshold)
-CGAL_PE_ADD_NAMED_PARAMETER(smoothing_iterations)
-CGAL_PE_ADD_NAMED_PARAMETER(retry_smoothing_iterations)
-CGAL_PE_ADD_NAMED_PARAMETER(line_search_factor)
-CGAL_PE_ADD_NAMED_PARAMETER(line_search_steps)
-CGAL_PE_ADD_NAMED_PARAMETER(insertion_retries)
-CGAL_PE_ADD_NAMED_PARAMETER(collapse_budget)
-CGAL_PE_ADD_NAMED_PARAMETER(check_overlap)
-CGAL_PE_ADD_NAMED_PARAMETER(statistics)
-CGAL_PE_ADD_NAMED_PARAMETER(convergence_tolerance)
-CGAL_PE_ADD_NAMED_PARAMETER(minimum_area_ratio)
-CGAL_PE_ADD_NAMED_PARAMETER(free_border)
-CGAL_PE_ADD_NAMED_PARAMETER(constrained_vertices)
-CGAL_PE_ADD_NAMED_PARAMETER(distortion_energy)
-CGAL_PE_ADD_NAMED_PARAMETER(optimization_statistics)
-CGAL_PE_ADD_NAMED_PARAMETER(optimize)
-CGAL_PE_ADD_NAMED_PARAMETER(multiply_connected)
-CGAL_PE_ADD_NAMED_PARAMETER(maximum_steiner_vertices)
-CGAL_PE_ADD_NAMED_PARAMETER(split_penalty)
-CGAL_PE_ADD_NAMED_PARAMETER(path_metric)
-CGAL_PE_ADD_NAMED_PARAMETER(proximity_penalty)
-CGAL_PE_ADD_NAMED_PARAMETER(steiner_points)
-CGAL_PE_ADD_NAMED_PARAMETER(face_patch_map)
+CGAL_PE_NAMED_PARAMETER_LIST(CGAL_PE_ADD_NAMED_PARAMETER)
 #undef CGAL_PE_ADD_NAMED_PARAMETER
 } // namespace internal_np
 #endif
 
-namespace parameters {
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// The named-parameter pack of this package. It is a `CGAL::Named_function_parameters` (every function of this
+/// package and of CGAL that takes CGAL's pack takes it) whose member functions append any parameter, this package's
+/// as well as CGAL's, so that a chain may name them in any order:
+/// `PE::parameters::border_shape(s).weights(w).vertex_point_map(vpm).statistics(&st)`.
+/// The functions of `CGAL::Progressive_embedding::parameters` start such a chain; CGAL's own
+/// `CGAL::parameters::` functions start a `CGAL::Named_function_parameters`, to which a parameter of this package is
+/// appended by its two-argument form, e.g. `PE::parameters::weights(w, CGAL::parameters::vertex_point_map(vpm))`.
+template <typename T, typename Tag, typename Base = CGAL::internal_np::No_property>
+struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base>
+{
+  /// the CGAL pack this pack is
+  typedef CGAL::Named_function_parameters<T, Tag, Base> Cgal_pack;
+
+  Named_function_parameters() {}
+  explicit Named_function_parameters(const T& v) : Cgal_pack(v) {}
+  Named_function_parameters(const T& v, const Base& b) : Cgal_pack(v, b) {}
 
 #ifndef DOXYGEN_RUNNING
+  // CGAL's parameters (the list CGAL's own pack is generated from), returning this package's pack
+#define CGAL_add_named_parameter(X, Y, Z)                                                      \
+  template <typename K>                                                                        \
+  Named_function_parameters<K, CGAL::internal_np::X, Cgal_pack> Z(const K& k) const             \
+  { return Named_function_parameters<K, CGAL::internal_np::X, Cgal_pack>(k, *this); }
+#include <CGAL/STL_Extension/internal/parameters_interface.h>
+#undef CGAL_add_named_parameter
+
+#define CGAL_PE_NAMED_PARAMETER_MEMBER(NAME)                                                   \
+  template <typename K>                                                                        \
+  Named_function_parameters<K, internal_np::NAME##_t, Cgal_pack> NAME(const K& k) const         \
+  { return Named_function_parameters<K, internal_np::NAME##_t, Cgal_pack>(k, *this); }
+  CGAL_PE_NAMED_PARAMETER_LIST(CGAL_PE_NAMED_PARAMETER_MEMBER)
+#undef CGAL_PE_NAMED_PARAMETER_MEMBER
+#endif
+};
+
+namespace parameters {
+
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// an empty pack of this package, to start a chain: `PE::parameters::default_values().weights(w)`
+inline Named_function_parameters<bool, CGAL::internal_np::all_default_t> default_values()
+{ return Named_function_parameters<bool, CGAL::internal_np::all_default_t>(); }
+
+#ifndef DOXYGEN_RUNNING
+// CGAL's parameters start a chain of this package's pack too: PE::parameters::vertex_point_map(vpm).weights(w)
+#define CGAL_add_named_parameter(X, Y, Z)                                                      \
+  template <typename K>                                                                        \
+  Named_function_parameters<K, CGAL::internal_np::X> Z(const K& k)                              \
+  { return Named_function_parameters<K, CGAL::internal_np::X>(k); }
+#include <CGAL/STL_Extension/internal/parameters_interface.h>
+#undef CGAL_add_named_parameter
+
+// NAME(t) starts a chain; NAME(t, pack) appends to any pack (CGAL's or this package's).
 #define CGAL_PE_NAMED_PARAMETER_FUNCTIONS(NAME)                                             \
   template <typename T>                                                                     \
-  CGAL::Named_function_parameters<T, internal_np::NAME##_t>                                 \
+  Named_function_parameters<T, internal_np::NAME##_t>                                       \
   NAME(const T& t)                                                                          \
-  { return CGAL::Named_function_parameters<T, internal_np::NAME##_t>(t); }                  \
+  { return Named_function_parameters<T, internal_np::NAME##_t>(t); }                        \
   template <typename T, typename NP_T, typename NP_Tag, typename NP_Base>                   \
-  CGAL::Named_function_parameters<T, internal_np::NAME##_t,                                 \
-                                  CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base> >   \
+  Named_function_parameters<T, internal_np::NAME##_t,                                       \
+                            CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base> >         \
   NAME(const T& t, const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& np)        \
-  { return CGAL::Named_function_parameters<T, internal_np::NAME##_t,                        \
+  { return Named_function_parameters<T, internal_np::NAME##_t,                              \
              CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base> >(t, np); }
-
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(border_shape)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(triangle_corners)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(triangle_corner_points)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(weights)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(invalid_energy_threshold)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(smoothing_iterations)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(retry_smoothing_iterations)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(line_search_factor)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(line_search_steps)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(insertion_retries)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(collapse_budget)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(check_overlap)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(statistics)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(convergence_tolerance)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(minimum_area_ratio)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(free_border)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(constrained_vertices)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(distortion_energy)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(optimization_statistics)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(optimize)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(multiply_connected)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(maximum_steiner_vertices)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(split_penalty)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(path_metric)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(proximity_penalty)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(steiner_points)
-CGAL_PE_NAMED_PARAMETER_FUNCTIONS(face_patch_map)
+CGAL_PE_NAMED_PARAMETER_LIST(CGAL_PE_NAMED_PARAMETER_FUNCTIONS)
 #undef CGAL_PE_NAMED_PARAMETER_FUNCTIONS
 #else
 /// \ingroup PkgProgressiveEmbeddingNamedParameters

@@ -97,8 +97,11 @@ struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   /// the CGAL pack this pack is
   typedef CGAL::Named_function_parameters<T, Tag, Base> Cgal_pack;
 
+  /// an empty pack (with the default `T` and `Tag`)
   Named_function_parameters() {}
+  /// the pack of the one parameter `Tag` with value `v`
   explicit Named_function_parameters(const T& v) : Cgal_pack(v) {}
+  /// the parameter `Tag` with value `v` appended to the pack `b`
   Named_function_parameters(const T& v, const Base& b) : Cgal_pack(v, b) {}
 
 #ifndef DOXYGEN_RUNNING

@@ -4,11 +4,12 @@
 
 // Certified_parameterizer_3 around CGAL's fixed-border parameterizers: the user's map is kept when it
 // is certified (bit for bit), repaired when it is not, and only the component of the border halfedge
-// is mapped (charts of one mesh, Seam_mesh); components with holes are refused with their count.
+// is mapped (charts of one mesh, Seam_mesh); components with holes get a certified multiply connected map.
 //
 // Usage: test_cgal_dropin data_dir   (data_dir contains libcgal-demo's meshes/)
 
 #include <CGAL/Progressive_embedding/Certified_parameterizer_3.h>
+#include <CGAL/Progressive_embedding/Progressive_embedding_parameterizer_3.h>
 #include <CGAL/Progressive_embedding/check_embedding.h>
 #include <CGAL/Progressive_embedding/IO/OBJ_with_uv.h>
 
@@ -29,6 +30,7 @@
 
 #include <boost/property_map/property_map.hpp>
 
+#include <set>
 #include <sstream>
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
@@ -157,34 +159,84 @@ int test_two_charts(const std::string& dir)
   }
   CHECK(untouched_after_first == num_vertices(one), untouched_after_first);
   std::cout << "two charts mapped one at a time, " << untouched_after_first << " vertices untouched by the first" << std::endl;
+  // the package's own parameterizer maps one chart at a time too
+  auto uv2 = two.add_property_map<Surface_mesh::Vertex_index, Point_2>("v:uv2", Point_2(7, 7)).first;
+  PE::Progressive_embedding_parameterizer_3<Surface_mesh> q;
+  for(std::size_t c = 0; c < 2; ++c)
+  {
+    CHECK(SMP::parameterize(two, q, borders[c], uv2) == SMP::OK, "Progressive_embedding_parameterizer_3, chart " << c);
+    CHECK(q.statistics().report.is_valid() && q.statistics().report.faces == count_faces(one), "chart certified");
+    std::size_t untouched = 0;
+    for(auto v : vertices(two)) if(get(uv2, v) == Point_2(7, 7)) ++untouched;
+    CHECK(untouched == (c == 0 ? num_vertices(one) : 0), "only the chart of the border halfedge is written");
+  }
   return EXIT_SUCCESS;
 }
 
-// a component with a hole is refused before anything is written
+// a component with holes: a certified multiply connected map, CGAL's folded map repaired
 int test_holes(const std::string& dir)
 {
   typedef SMP::Mean_value_coordinates_parameterizer_3<Surface_mesh> Param;
   Surface_mesh m;
-  CHECK(CGAL::IO::read_polygon_mesh(dir + "/meshes/mushroom.off", m), "mushroom");
-  Surface_mesh::Face_index interior;
-  bool found = false;
+  // bull cut open (CGAL's maps of it fold), with two more holes: interior faces far from the border and
+  // from each other
+  CHECK(read_cut(dir + "/meshes/bull.off", m), "bull");
+  const auto bhd = CGAL::Polygon_mesh_processing::longest_border(m).first; // the cut: the outer border
+  std::vector<Surface_mesh::Face_index> removed;
+  std::set<Surface_mesh::Vertex_index> used;
   for(auto f : faces(m))
   {
-    bool inner = true;
-    for(auto h : halfedges_around_face(halfedge(f, m), m))
-      if(is_border(target(h, m), m)) inner = false;
-    if(inner) { interior = f; found = true; break; }
+    if(removed.size() == 2) break;
+    if(std::size_t(f) % 4000 != 2000) continue;
+    bool ok = true;
+    for(auto v : vertices_around_face(halfedge(f, m), m))
+    {
+      if(is_border(v, m) || used.count(v)) ok = false;
+      for(auto w : vertices_around_target(halfedge(v, m), m)) if(is_border(w, m) || used.count(w)) ok = false;
+    }
+    if(!ok) continue;
+    removed.push_back(f);
+    for(auto v : vertices_around_face(halfedge(f, m), m))
+      for(auto w : vertices_around_target(halfedge(v, m), m)) used.insert(w);
   }
-  CHECK(found, "an interior face");
-  CGAL::Euler::remove_face(halfedge(interior, m), m);
-  const auto bhd = CGAL::Polygon_mesh_processing::longest_border(m).first;
-  auto uv = m.add_property_map<Surface_mesh::Vertex_index, Point_2>("v:uv", Point_2(3, 3)).first;
+  CHECK(removed.size() == 2, "two interior faces");
+  for(auto f : removed) CGAL::Euler::remove_face(halfedge(f, m), m);
+  const std::size_t n0 = m.number_of_vertices();
+
+  // CGAL's own map treats the hole vertices as interior ones
+  auto cgal_uv = m.add_property_map<Surface_mesh::Vertex_index, Point_2>("v:cgal_uv").first;
+  CHECK(SMP::parameterize(m, Param(), bhd, cgal_uv) == SMP::OK, "CGAL's map");
+  const PE::Embedding_report rc = PE::check_embedding(m, cgal_uv, PE::parameters::multiply_connected(true));
+  std::cout << "bull cut open with 2 holes, CGAL's mean value map: " << rc.summary() << std::endl;
+
+  auto uv = m.add_property_map<Surface_mesh::Vertex_index, Point_2>("v:uv").first;
   PE::Certified_parameterizer_3<Surface_mesh, Param> p;
-  CHECK(SMP::parameterize(m, p, bhd, uv) == SMP::ERROR_NO_TOPOLOGICAL_DISC, "holes refused");
-  CHECK(p.error_code() == PE::ERROR_NOT_A_DISK, "ERROR_NOT_A_DISK");
-  CHECK(p.number_of_border_cycles() == 2, p.number_of_border_cycles());
-  for(auto v : vertices(m)) CHECK(get(uv, v) == Point_2(3, 3), "uv untouched");
-  std::cout << "mesh with a hole: ERROR_NOT_A_DISK, 2 border cycles" << std::endl;
+  const SMP::Error_code e = SMP::parameterize(m, p, bhd, uv);
+  const PE::Embedding_report r = PE::check_embedding(m, uv, PE::parameters::multiply_connected(true));
+  std::cout << "wrapped: " << SMP::get_error_message(e) << (p.repaired() ? " (repaired)" : " (kept)") << ", "
+            << p.number_of_border_cycles() << " border cycles, " << r.summary() << std::endl;
+  CHECK(e == SMP::OK && p.error_code() == PE::OK && p.number_of_border_cycles() == 3, "mapped, 3 border cycles");
+  CHECK(r.status == PE::OK && r.is_valid() && r.border_cycles == 3 && r.flipped == 0 && r.degenerate == 0, "certified with holes");
+  CHECK(p.repaired() == !rc.is_valid(), "repaired iff CGAL's map is not valid");
+  for(auto h : halfedges_around_face(bhd, m))
+    CHECK(get(uv, target(h, m)) == get(cgal_uv, target(h, m)), "outer border as CGAL computed it");
+  CHECK(m.number_of_vertices() == n0, "no vertex added");
+  // the package's own parameterizer too
+  auto uv2 = m.add_property_map<Surface_mesh::Vertex_index, Point_2>("v:uv2").first;
+  PE::Progressive_embedding_parameterizer_3<Surface_mesh> q;
+  CHECK(SMP::parameterize(m, q, bhd, uv2) == SMP::OK, "Progressive_embedding_parameterizer_3 with holes");
+  const PE::Embedding_report r2 = PE::check_embedding(m, uv2, PE::parameters::multiply_connected(true));
+  std::cout << "Progressive_embedding_parameterizer_3: " << r2.summary() << std::endl;
+  CHECK(r2.is_valid() && r2.border_cycles == 3, "certified with holes");
+
+  // a closed component has no border to map
+  Surface_mesh closed;
+  CHECK(CGAL::IO::read_polygon_mesh(dir + "/meshes/bull.off", closed), "bull");
+  auto cuv = closed.add_property_map<Surface_mesh::Vertex_index, Point_2>("v:uv", Point_2(3, 3)).first;
+  PE::Certified_parameterizer_3<Surface_mesh, Param> pc;
+  CHECK(SMP::parameterize(closed, pc, *halfedges(closed).begin(), cuv) == SMP::ERROR_NO_TOPOLOGICAL_DISC, "closed refused");
+  CHECK(pc.error_code() == PE::ERROR_NOT_A_DISK && pc.number_of_border_cycles() == 0, "ERROR_NOT_A_DISK");
+  for(auto v : vertices(closed)) CHECK(get(cuv, v) == Point_2(3, 3), "uv untouched");
   return EXIT_SUCCESS;
 }
 

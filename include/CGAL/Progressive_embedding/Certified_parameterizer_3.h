@@ -14,6 +14,7 @@
 #include <CGAL/Progressive_embedding/progressive_embedding.h>
 #include <CGAL/Progressive_embedding/optimize_distortion.h>
 #include <CGAL/Progressive_embedding/Progressive_embedding_statistics.h>
+#include <CGAL/Progressive_embedding/internal/constrained/holes.h>
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh.h>
@@ -45,10 +46,17 @@ namespace Progressive_embedding {
 /// Only the connected component of the border halfedge `bhd` is mapped, checked and repaired (CGAL's
 /// contract): the uv coordinates of the other components are left untouched, so that the charts of an
 /// atlas (several components of one mesh, or the charts of a `Seam_mesh`) are mapped one call each.
-/// The component must be a topological disk: a component with several border cycles (holes) is refused
-/// before anything is written, with `ERROR_NO_TOPOLOGICAL_DISC`, `error_code() == ERROR_NOT_A_DISK` and
-/// the count in `number_of_border_cycles()`; the uv map is then left unchanged, so a program that ignores
-/// the returned status must not use it.
+/// The component is a topological disk, or a connected genus-0 surface with several border cycles (holes):
+/// the border cycle of `bhd` is then the outer border, and the map is certified as a multiply connected map
+/// (`check_embedding()` with `multiply_connected(true)`: every hole an empty region inside the outer border).
+/// The wrapped parameterizer treats the vertices of the holes as interior vertices, which in general folds
+/// the holes; its map is then replaced by the map of the disk whose holes are closed by fans around one new
+/// vertex each (Tutte, repaired by progressive embedding if needed), from which the fans are removed: no
+/// vertex is added to the mesh, and the outer border keeps the wrapped parameterizer's positions.
+/// A component that is neither (closed, or of higher genus) is refused before the uv map is read back,
+/// with `ERROR_NO_TOPOLOGICAL_DISC` and `error_code()` (`ERROR_NOT_A_DISK`, `ERROR_NOT_GENUS_ZERO`);
+/// `number_of_border_cycles()` gives the count. On any error the uv of the original vertices is not written
+/// by the repair: a program that ignores the returned status must not use it.
 ///
 /// The repair starts from the wrapped parameterizer's map: the border it computed stays fixed, and the
 /// interior is repaired on a copy of the component (a `Surface_mesh`), then written back.
@@ -104,9 +112,10 @@ public:
   /// returns `true` if the last call ran `optimize_distortion()`
   bool optimized() const { return m_state->optimized; }
   /// returns the package's error code of the last call (`OK` on success; `ERROR_NOT_A_DISK` when the component
-  /// of `bhd` has several border cycles or is not a disk)
+  /// of `bhd` has no border; `ERROR_NOT_GENUS_ZERO` when it has several border cycles but is not of genus 0)
   Error_code error_code() const { return m_state->error; }
-  /// returns the number of border cycles of the component of `bhd` in the last call (1 for a disk)
+  /// returns the number of border cycles of the component of `bhd` in the last call (1 for a disk, 1 + the
+  /// number of holes otherwise)
   std::size_t number_of_border_cycles() const { return m_state->border_cycles; }
   /// returns the number of faces of the component of `bhd` in the last call
   std::size_t number_of_faces() const { return m_state->faces; }
@@ -127,7 +136,8 @@ public:
   /// \param vimap the vertex index map \param vpmap marks the parameterized vertices
   /// \param extra forwarded to the wrapped parameterizer
   /// \return `OK` only if the component's map is certified; the wrapped parameterizer's error if it failed;
-  ///         `ERROR_NO_TOPOLOGICAL_DISC` (holes or not a disk), `ERROR_NON_TRIANGULAR_MESH`, `ERROR_EMPTY_MESH`;
+  ///         `ERROR_NO_TOPOLOGICAL_DISC` (neither a disk nor a genus-0 surface with holes),
+  ///         `ERROR_NON_TRIANGULAR_MESH`, `ERROR_EMPTY_MESH`;
   ///         `ERROR_NO_1_TO_1_MAPPING` if the repair failed (see `error_code()`)
   template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap, typename... Extra>
   CGAL::Surface_mesh_parameterization::Error_code
@@ -175,14 +185,25 @@ public:
       if(copy.add_face(fv) == Copy::null_face()) { s.error = ERROR_NOT_A_DISK; return SMP::ERROR_NO_TOPOLOGICAL_DISC; }
     }
 
-    s.input_report = check_embedding(copy, cuv);
+    const bool holes = s.border_cycles > 1;
+    s.input_report = check_embedding(copy, cuv, parameters::multiply_connected(holes));
     s.stats.report = s.input_report;
     if(s.input_report.status != OK) { s.error = s.input_report.status; return SMP::ERROR_NO_TOPOLOGICAL_DISC; }
     if(!s.input_report.is_valid())
     {
       s.repaired = true;
-      // the border computed by the wrapped parameterizer is kept; only the interior moves
-      Error_code ec = progressive_embedding(copy, cuv, parameters::statistics(&s.stats));
+      Error_code ec = OK;
+      if(holes)
+      {
+        // the holes closed by fans, a disk map with the outer border kept, the fans removed (see the class)
+        if(!is_border(bhd, mesh)) bhd = opposite(bhd, mesh);
+        const auto outer = halfedge(to_copy[source(bhd, mesh)], to_copy[target(bhd, mesh)], copy);
+        CGAL_assertion(outer.second && is_border(outer.first, copy));
+        ec = internal::embed_with_holes(copy, outer.first, cuv, parameters::border_shape(Border_shape::FIXED),
+                                        &s.stats.report);
+      }
+      else // the border computed by the wrapped parameterizer is kept; only the interior moves
+        ec = progressive_embedding(copy, cuv, parameters::statistics(&s.stats));
       if(ec != OK || !s.stats.report.is_valid())
       {
         s.error = (ec != OK ? ec : ERROR_INVALID_EMBEDDING);
@@ -266,8 +287,7 @@ private:
       halfedge_descriptor c = h;
       for(std::size_t k = 0; k <= border.size() && walked.insert(c).second; ++k) c = next(c, mesh);
     }
-    s.border_cycles = cycles;
-    if(cycles != 1) { s.error = ERROR_NOT_A_DISK; return SMP::ERROR_NO_TOPOLOGICAL_DISC; }
+    s.border_cycles = cycles; // several: holes, checked by the multiply connected certificate
     return SMP::OK;
   }
 

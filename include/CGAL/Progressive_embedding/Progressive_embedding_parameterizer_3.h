@@ -13,9 +13,11 @@
 #include <CGAL/Progressive_embedding/check_embedding.h>
 #include <CGAL/Progressive_embedding/progressive_embedding.h>
 #include <CGAL/Progressive_embedding/optimize_distortion.h>
+#include <CGAL/Progressive_embedding/Certified_parameterizer_3.h>
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Barycentric_mapping_parameterizer_3.h>
 #include <CGAL/Default.h>
 
 #include <memory>
@@ -33,6 +35,11 @@ namespace Progressive_embedding {
 /// `CGAL::Surface_mesh_parameterization::OK` only with a map certified valid by `check_embedding()`,
 /// and `CGAL::Surface_mesh_parameterization::ERROR_NO_1_TO_1_MAPPING` otherwise (CGAL's own
 /// `Barycentric_mapping_parameterizer_3` returns `OK` on broken maps).
+///
+/// When the mesh is not one disk, only the connected component of `bhd` is mapped (CGAL's contract: the charts
+/// of an atlas, the components of one file); a component with holes gets a multiply connected map (see
+/// `Certified_parameterizer_3`, which this class then uses around CGAL's `Barycentric_mapping_parameterizer_3`
+/// with the same border parameterizer and the same `Optimization`).
 ///
 /// \tparam TriangleMesh_ a model of `FaceGraph`
 /// \tparam BorderParameterizer_ a model of `Parameterizer_3` that places a convex border;
@@ -102,6 +109,8 @@ public:
     SMP::Error_code status = m_border.parameterize(mesh, bhd, uvmap, vimap, vpmap);
     if(status != SMP::OK) return status;
     Error_code ec = tutte_embedding(mesh, bhd, uvmap);
+    if(ec == ERROR_NOT_A_DISK && bhd != boost::graph_traits<TriangleMesh>::null_halfedge())
+      return parameterize_component(mesh, bhd, uvmap, vimap, vpmap);
     if(ec == ERROR_NON_CONVEX_BORDER || ec == ERROR_DEGENERATE_BORDER) return SMP::ERROR_NON_CONVEX_BORDER;
     if(ec == ERROR_NOT_A_DISK) return SMP::ERROR_NO_TOPOLOGICAL_DISC;
     if(ec == ERROR_NON_TRIANGULAR_MESH) return SMP::ERROR_NON_TRIANGULAR_MESH;
@@ -125,6 +134,27 @@ public:
   }
 
 private:
+  // several components or holes: the component of bhd, through Certified_parameterizer_3 around CGAL's
+  // barycentric mapping (which reads the mesh only: the non-const reference is CGAL's signature)
+  template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap>
+  CGAL::Surface_mesh_parameterization::Error_code
+  parameterize_component(const TriangleMesh& mesh, halfedge_descriptor bhd, VertexUVmap uvmap,
+                         VertexIndexMap vimap, VertexParameterizedMap vpmap)
+  {
+    typedef CGAL::Surface_mesh_parameterization::Barycentric_mapping_parameterizer_3<TriangleMesh, Border_parameterizer> Tutte;
+    typedef Certified_parameterizer_3<TriangleMesh, Tutte> Wrapper;
+    typename Wrapper::Optimization o = m_optimization == Optimization::NEVER ? Wrapper::Optimization::NEVER
+                                     : m_optimization == Optimization::ALWAYS ? Wrapper::Optimization::ALWAYS
+                                                                              : Wrapper::Optimization::WHEN_REPAIRED;
+    Wrapper w(Tutte(m_border), o);
+    const auto status = w.parameterize(const_cast<TriangleMesh&>(mesh), bhd, uvmap, vimap, vpmap);
+    m_state->repaired = w.repaired();
+    m_state->optimized = w.optimized();
+    m_state->stats = w.statistics();
+    m_state->optimization = w.optimization_statistics();
+    return status;
+  }
+
   struct State
   {
     Progressive_embedding_statistics stats;

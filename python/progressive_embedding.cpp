@@ -1,0 +1,751 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+// The Python module `progressive_embedding` (pybind11, NumPy): the package's functions on a disk given
+// as NumPy arrays V (n x 3), F (m x 3) and UV (n x 2), in the style of libigl's Python bindings.
+//
+// Every function copies its arrays out of NumPy, validates them (ValueError), then releases the GIL
+// while it builds a Surface_mesh (Epick) and runs the algorithm; a failure of the algorithm or of
+// the data raises progressive_embedding.Error, whose `code` is the name of the Error_code.
+// One translation unit: each algorithm template is instantiated once, at one call site.
+
+#include <pybind11/pybind11.h>
+#include <pybind11/numpy.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Real_timer.h>
+
+#include <CGAL/Progressive_embedding/Error_code.h>
+#include <CGAL/Progressive_embedding/parameters.h>
+#include <CGAL/Progressive_embedding/tutte_embedding.h>
+#include <CGAL/Progressive_embedding/check_embedding.h>
+#include <CGAL/Progressive_embedding/check_immersion.h>
+#include <CGAL/Progressive_embedding/progressive_embedding.h>
+#include <CGAL/Progressive_embedding/optimize_distortion.h>
+#include <CGAL/Progressive_embedding/distortion.h>
+#include <CGAL/Progressive_embedding/constrained_embedding.h>
+
+#include <cmath>
+#include <cstring>
+#include <exception>
+#include <string>
+#include <utility>
+#include <vector>
+
+#ifndef PE_PYTHON_VERSION
+#define PE_PYTHON_VERSION "0.0.0"
+#endif
+
+namespace py = pybind11;
+namespace PE = CGAL::Progressive_embedding;
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_2                                          Point_2;
+typedef K::Point_3                                          Point_3;
+typedef CGAL::Surface_mesh<Point_3>                         Mesh;
+typedef Mesh::Vertex_index                                  vertex_descriptor;
+typedef Mesh::Face_index                                    face_descriptor;
+typedef Mesh::Property_map<vertex_descriptor, Point_2>      UV_map;
+
+// ---- errors -------------------------------------------------------------------------------
+
+// An algorithm or data failure; translated into progressive_embedding.Error (with `code`).
+struct Pe_failure : std::exception
+{
+  PE::Error_code code;
+  std::string message;
+  Pe_failure(PE::Error_code c, const std::string& context)
+    : code(c), message(std::string(PE::get_error_name(c)) + ": " + PE::get_error_message(c) +
+                       (context.empty() ? std::string() : " (" + context + ")")) {}
+  const char* what() const noexcept override { return message.c_str(); }
+};
+
+PyObject* error_type = nullptr; // progressive_embedding.Error, created at import, never released
+
+void fail_if(PE::Error_code ec, const std::string& context)
+{
+  if(ec != PE::OK) throw Pe_failure(ec, context);
+}
+
+// ---- timing (for benchmarks: the C++ part of the last call in this thread) -----------------
+
+struct Timing
+{
+  double native_seconds = 0;    // everything done without the GIL: mesh, algorithm, output copy
+  double algorithm_seconds = 0; // the library calls only
+};
+thread_local Timing last_timing;
+
+// ---- inputs, copied out of NumPy ----------------------------------------------------------
+
+struct Disk_input
+{
+  std::size_t n = 0, m = 0;
+  std::vector<double> V;       // 3n
+  std::vector<std::size_t> F;  // 3m
+};
+
+py::array as_array(const py::handle& obj, const char* name)
+{
+  py::array a = py::array::ensure(obj);
+  if(!a) throw py::value_error(std::string(name) + " must be a NumPy array or convertible to one");
+  return a;
+}
+
+// a 2D array of `cols` columns of a real (float or integer) dtype, converted to float64
+std::vector<double> real_matrix(const py::handle& obj, const char* name, py::ssize_t cols, std::size_t& rows)
+{
+  const py::array a = as_array(obj, name);
+  const char kind = a.dtype().kind();
+  if(kind != 'f' && kind != 'i' && kind != 'u')
+    throw py::value_error(std::string(name) + " must have a real dtype (float64 expected), not " +
+                          std::string(py::str(a.dtype())));
+  if(a.ndim() != 2 || a.shape(1) != cols)
+  {
+    std::string shape = "(";
+    for(py::ssize_t k = 0; k < a.ndim(); ++k) shape += (k ? ", " : "") + std::to_string(a.shape(k));
+    throw py::value_error(std::string(name) + " must have shape (n, " + std::to_string(cols) + "), not " + shape + ")");
+  }
+  const auto d = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+  if(!d) throw py::value_error(std::string(name) + " cannot be converted to float64");
+  rows = static_cast<std::size_t>(d.shape(0));
+  return std::vector<double>(d.data(), d.data() + d.size());
+}
+
+// an integer array (any integer dtype) of the given dimension, each value in [0, bound)
+std::vector<std::size_t> index_array(const py::handle& obj, const char* name, int ndim, py::ssize_t cols,
+                                     std::size_t bound, std::size_t& rows)
+{
+  const py::array a = as_array(obj, name);
+  const char kind = a.dtype().kind();
+  if(kind != 'i' && kind != 'u')
+    throw py::value_error(std::string(name) + " must have an integer dtype, not " + std::string(py::str(a.dtype())));
+  if(a.ndim() != ndim || (ndim == 2 && a.shape(1) != cols))
+    throw py::value_error(std::string(name) + (ndim == 2 ? " must have shape (m, " + std::to_string(cols) + ")"
+                                                         : std::string(" must be one-dimensional")));
+  // unsigned values beyond int64 become negative here, and are refused with the others
+  const auto d = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(a);
+  if(!d) throw py::value_error(std::string(name) + " cannot be converted to int64");
+  std::vector<std::size_t> out(static_cast<std::size_t>(d.size()));
+  for(std::size_t k = 0; k < out.size(); ++k)
+  {
+    const long long i = d.data()[k];
+    if(i < 0 || static_cast<unsigned long long>(i) >= bound)
+      throw py::value_error(std::string(name) + " holds the index " + std::to_string(i) + ", out of range for " +
+                            std::to_string(bound) + " vertices");
+    out[k] = static_cast<std::size_t>(i);
+  }
+  rows = static_cast<std::size_t>(d.shape(0));
+  return out;
+}
+
+Disk_input read_disk(const py::handle& V, const py::handle& F)
+{
+  Disk_input in;
+  in.V = real_matrix(V, "V", 3, in.n);
+  in.F = index_array(F, "F", 2, 3, in.n, in.m);
+  // the 3D points enter the border lengths and the distortion: NaN would go through silently
+  for(std::size_t i = 0; i < in.n; ++i)
+    for(int c = 0; c < 3; ++c)
+      if(!std::isfinite(in.V[3 * i + c]))
+        throw Pe_failure(PE::ERROR_NON_FINITE_COORDINATES, "V[" + std::to_string(i) + "] is not finite");
+  return in;
+}
+
+std::vector<double> read_uv(const py::handle& UV, std::size_t n, const char* name = "UV")
+{
+  std::size_t rows = 0;
+  std::vector<double> uv = real_matrix(UV, name, 2, rows);
+  if(rows != n)
+    throw py::value_error(std::string(name) + " must have one row per vertex: " + std::to_string(rows) + " rows for " +
+                          std::to_string(n) + " vertices");
+  return uv;
+}
+
+PE::Border_shape parse_shape(const std::string& s)
+{
+  if(s == "circle") return PE::Border_shape::CIRCLE;
+  if(s == "square") return PE::Border_shape::SQUARE;
+  if(s == "triangle") return PE::Border_shape::TRIANGLE;
+  throw py::value_error("border must be 'circle', 'square', 'triangle' or an (n, 2) array, not '" + s + "'");
+}
+
+// `border`: a shape name, or an (n, 2) array whose border rows are the fixed border
+struct Border_choice
+{
+  PE::Border_shape shape = PE::Border_shape::CIRCLE;
+  std::vector<double> uv; // with Border_shape::FIXED
+};
+
+Border_choice parse_border(const py::object& border, std::size_t n)
+{
+  Border_choice b;
+  if(py::isinstance<py::str>(border)) b.shape = parse_shape(border.cast<std::string>());
+  else
+  {
+    b.shape = PE::Border_shape::FIXED;
+    b.uv = read_uv(border, n, "border");
+  }
+  return b;
+}
+
+PE::Weights parse_weights(const std::string& w)
+{
+  if(w == "uniform") return PE::Weights::UNIFORM;
+  if(w == "mean_value" || w == "mean-value") return PE::Weights::MEAN_VALUE;
+  throw py::value_error("weights must be 'uniform' or 'mean_value', not '" + w + "'");
+}
+
+// ---- the mesh (built without the GIL) -----------------------------------------------------
+
+struct Work
+{
+  Mesh mesh;
+  UV_map uv;
+  std::vector<vertex_descriptor> vd;
+
+  explicit Work(const Disk_input& in)
+  {
+    mesh.reserve(static_cast<Mesh::size_type>(in.n), static_cast<Mesh::size_type>(3 * in.m / 2 + 3),
+                 static_cast<Mesh::size_type>(in.m));
+    vd.reserve(in.n);
+    for(std::size_t i = 0; i < in.n; ++i)
+      vd.push_back(mesh.add_vertex(Point_3(in.V[3 * i], in.V[3 * i + 1], in.V[3 * i + 2])));
+    for(std::size_t j = 0; j < in.m; ++j)
+    {
+      const std::size_t a = in.F[3 * j], b = in.F[3 * j + 1], c = in.F[3 * j + 2];
+      // Euler::add_face, as the package's readers: it refuses non-manifold and misoriented faces
+      const std::array<vertex_descriptor, 3> t = {{ vd[a], vd[b], vd[c] }};
+      if(a == b || b == c || c == a)
+        throw Pe_failure(PE::ERROR_NON_MANIFOLD, face_name(j, a, b, c) + " repeats a vertex");
+      if(CGAL::Euler::add_face(t, mesh) == Mesh::null_face())
+        throw Pe_failure(PE::ERROR_NON_MANIFOLD, face_name(j, a, b, c) + " cannot be added: non-manifold or inconsistently oriented");
+    }
+    uv = mesh.add_property_map<vertex_descriptor, Point_2>("v:uv", Point_2(0, 0)).first;
+  }
+
+  static std::string face_name(std::size_t j, std::size_t a, std::size_t b, std::size_t c)
+  {
+    return "F[" + std::to_string(j) + "] = (" + std::to_string(a) + ", " + std::to_string(b) + ", " + std::to_string(c) + ")";
+  }
+
+  void set_uv(const std::vector<double>& u, bool border_only = false)
+  {
+    for(std::size_t i = 0; i < vd.size(); ++i)
+      uv[vd[i]] = (!border_only || CGAL::is_border(vd[i], mesh)) ? Point_2(u[2 * i], u[2 * i + 1]) : Point_2(0, 0);
+  }
+
+  std::vector<double> get_uv() const
+  {
+    std::vector<double> u;
+    u.reserve(2 * vd.size());
+    for(vertex_descriptor v : vd) { u.push_back(uv[v].x()); u.push_back(uv[v].y()); }
+    return u;
+  }
+};
+
+py::array_t<double> uv_array(const std::vector<double>& u)
+{
+  const py::ssize_t n = static_cast<py::ssize_t>(u.size() / 2);
+  py::array_t<double> out({ n, py::ssize_t(2) });
+  if(!u.empty()) std::memcpy(out.mutable_data(), u.data(), u.size() * sizeof(double));
+  return out;
+}
+
+// ---- the algorithm steps (one call site per template) -------------------------------------
+
+struct Stopwatch
+{
+  CGAL::Real_timer t;
+  double& into;
+  explicit Stopwatch(double& d) : into(d) { t.start(); }
+  ~Stopwatch() { into += t.time(); }
+};
+
+PE::Error_code run_tutte(Work& w, PE::Border_shape shape, PE::Weights weights)
+{
+  Stopwatch s(last_timing.algorithm_seconds);
+  return PE::tutte_embedding(w.mesh, Mesh::null_halfedge(), w.uv,
+                             PE::parameters::weights(weights, PE::parameters::border_shape(shape)));
+}
+
+PE::Embedding_report run_check(const Work& w)
+{
+  Stopwatch s(last_timing.algorithm_seconds);
+  return PE::check_embedding(w.mesh, w.uv);
+}
+
+bool run_immersion_check(const Work& w)
+{
+  Stopwatch s(last_timing.algorithm_seconds);
+  return PE::check_immersion(w.mesh, w.uv).is_immersion();
+}
+
+// the repair, with the parameters of `pe untangle`: before an optimization, faces below 1e-3 times
+// the mean area are collapsed and re-inserted too (the optimizer cannot grow 1e-20-area faces back
+// in a useful number of iterations); without one, the library's default for double
+PE::Error_code run_repair(Work& w, bool will_optimize, PE::Progressive_embedding_statistics& st)
+{
+  Stopwatch s(last_timing.algorithm_seconds);
+  return PE::progressive_embedding(w.mesh, w.uv,
+    PE::parameters::minimum_area_ratio(will_optimize ? 1e-3 : 1e-12, PE::parameters::statistics(&st)));
+}
+
+struct Optimize_settings
+{
+  bool free_border = false;
+  std::vector<vertex_descriptor> fixed;
+  std::size_t iterations = 1000;
+  double tolerance = 1e-5;
+};
+
+PE::Error_code run_optimize(Work& w, const Optimize_settings& o, PE::Optimization_statistics& os)
+{
+  Stopwatch s(last_timing.algorithm_seconds);
+  return PE::optimize_distortion(w.mesh, w.uv,
+    PE::parameters::free_border(o.free_border,
+    PE::parameters::constrained_vertices(o.fixed,
+    PE::parameters::convergence_tolerance(o.tolerance,
+    PE::parameters::optimization_statistics(&os,
+    CGAL::parameters::number_of_iterations(o.iterations))))));
+}
+
+// the optimization that follows a repair (untangle, embed), as in `pe`: a map that cannot be optimized
+// (no free vertex, zero-area 3D faces) keeps its certified repaired map; a budget that runs out keeps
+// the valid, improved map
+void optimize_after_repair(Work& w, const Optimize_settings& o)
+{
+  PE::Optimization_statistics os;
+  const PE::Error_code ec = run_optimize(w, o, os);
+  if(ec == PE::OK || ec == PE::ERROR_BUDGET_EXHAUSTED || ec == PE::ERROR_NO_FREE_VERTEX ||
+     ec == PE::ERROR_DEGENERATE_3D_FACE)
+    return;
+  fail_if(ec, "optimize_distortion after the repair");
+}
+
+void check_optimize_settings(long long iterations, double tolerance)
+{
+  if(iterations < 0) throw py::value_error("iterations must be non-negative, not " + std::to_string(iterations));
+  if(!(tolerance >= 0)) throw py::value_error("tolerance must be a non-negative number");
+}
+
+// ---- reports as dicts ---------------------------------------------------------------------
+
+// the keys of `pe check --json` (add_report in tools/pe), and a few more fields of the certificate
+py::dict report_dict(const PE::Embedding_report& rep)
+{
+  py::dict d;
+  d["status"] = PE::get_error_name(rep.status);
+  d["valid"] = rep.is_valid();
+  d["flipped"] = rep.flipped;
+  d["degenerate"] = rep.degenerate;
+  d["faces"] = rep.faces;
+  d["vertices"] = rep.vertices;
+  d["border_vertices"] = rep.border_vertices;
+  d["non_finite"] = rep.non_finite;
+  d["border_simple"] = rep.border_simple;
+  d["border_intersections"] = rep.border_intersections;
+  d["overlapping_pairs"] = rep.overlapping_pairs;
+  d["overlap_checked"] = rep.overlap_checked;
+  d["clockwise"] = rep.clockwise;
+  d["min_signed_area"] = rep.min_signed_area;
+  d["max_signed_area"] = rep.max_signed_area;
+  d["border_area"] = rep.border_area;
+  d["max_energy_3d"] = rep.max_energy_3d;
+  d["mean_energy_3d"] = rep.mean_energy_3d;
+  d["high_energy_faces"] = rep.high_energy_faces;
+  d["has_3d_energy"] = rep.has_3d_energy;
+  return d;
+}
+
+// ---- the functions ------------------------------------------------------------------------
+
+py::array_t<double> py_tutte(const py::object& V, const py::object& F, const py::object& border,
+                             const std::string& weights)
+{
+  const Disk_input in = read_disk(V, F);
+  const Border_choice b = parse_border(border, in.n);
+  const PE::Weights wts = parse_weights(weights);
+  std::vector<double> uv;
+  last_timing = Timing();
+  {
+    py::gil_scoped_release release;
+    Stopwatch s(last_timing.native_seconds);
+    Work w(in);
+    if(b.shape == PE::Border_shape::FIXED) w.set_uv(b.uv);
+    fail_if(run_tutte(w, b.shape, wts), "tutte_embedding");
+    uv = w.get_uv();
+  }
+  return uv_array(uv);
+}
+
+py::dict py_check(const py::object& V, const py::object& F, const py::object& UV)
+{
+  const Disk_input in = read_disk(V, F);
+  const std::vector<double> u = read_uv(UV, in.n);
+  PE::Embedding_report rep;
+  bool immersion = false;
+  last_timing = Timing();
+  {
+    py::gil_scoped_release release;
+    Stopwatch s(last_timing.native_seconds);
+    Work w(in);
+    w.set_uv(u);
+    rep = run_check(w);
+    fail_if(rep.status, "check_embedding");
+    // a map that is not an embedding may still be an immersion (locally injective, overlapping itself)
+    immersion = run_immersion_check(w);
+  }
+  py::dict d = report_dict(rep);
+  d["immersion"] = immersion;
+  return d;
+}
+
+py::array_t<double> py_untangle(const py::object& V, const py::object& F, const py::object& UV, bool optimize,
+                                long long iterations, double tolerance)
+{
+  const Disk_input in = read_disk(V, F);
+  const std::vector<double> u = read_uv(UV, in.n);
+  check_optimize_settings(iterations, tolerance);
+  Optimize_settings o;
+  o.iterations = static_cast<std::size_t>(iterations);
+  o.tolerance = tolerance;
+  std::vector<double> out;
+  last_timing = Timing();
+  {
+    py::gil_scoped_release release;
+    Stopwatch s(last_timing.native_seconds);
+    Work w(in);
+    w.set_uv(u);
+    PE::Progressive_embedding_statistics st;
+    fail_if(run_repair(w, optimize, st), "progressive_embedding");
+    if(optimize) optimize_after_repair(w, o);
+    out = w.get_uv();
+  }
+  return uv_array(out);
+}
+
+py::array_t<double> py_embed(const py::object& V, const py::object& F, const py::object& border,
+                             const std::string& weights, bool optimize, long long iterations, double tolerance)
+{
+  const Disk_input in = read_disk(V, F);
+  const Border_choice b = parse_border(border, in.n);
+  const PE::Weights wts = parse_weights(weights);
+  check_optimize_settings(iterations, tolerance);
+  Optimize_settings o;
+  o.iterations = static_cast<std::size_t>(iterations);
+  o.tolerance = tolerance;
+  std::vector<double> out;
+  last_timing = Timing();
+  {
+    py::gil_scoped_release release;
+    Stopwatch s(last_timing.native_seconds);
+    Work w(in);
+    if(b.shape == PE::Border_shape::FIXED) w.set_uv(b.uv);
+    fail_if(run_tutte(w, b.shape, wts), "tutte_embedding");
+    const PE::Embedding_report tutte = run_check(w);
+    fail_if(tutte.status, "check_embedding");
+    if(!tutte.is_valid())
+    {
+      PE::Progressive_embedding_statistics st;
+      fail_if(run_repair(w, optimize, st), "progressive_embedding");
+    }
+    if(optimize) optimize_after_repair(w, o);
+    out = w.get_uv();
+  }
+  return uv_array(out);
+}
+
+py::array_t<double> py_optimize(const py::object& V, const py::object& F, const py::object& UV,
+                                const py::object& fixed, bool free_border, long long iterations, double tolerance)
+{
+  const Disk_input in = read_disk(V, F);
+  const std::vector<double> u = read_uv(UV, in.n);
+  check_optimize_settings(iterations, tolerance);
+  std::vector<std::size_t> fixed_idx;
+  if(!fixed.is_none())
+  {
+    std::size_t k = 0;
+    fixed_idx = index_array(fixed, "fixed", 1, 0, in.n, k);
+  }
+  std::vector<double> out;
+  last_timing = Timing();
+  {
+    py::gil_scoped_release release;
+    Stopwatch s(last_timing.native_seconds);
+    Work w(in);
+    w.set_uv(u);
+    Optimize_settings o;
+    o.free_border = free_border;
+    o.iterations = static_cast<std::size_t>(iterations);
+    o.tolerance = tolerance;
+    for(std::size_t i : fixed_idx) o.fixed.push_back(w.vd[i]);
+    PE::Optimization_statistics os;
+    const PE::Error_code ec = run_optimize(w, o, os);
+    // a budget that runs out still leaves a valid, improved map
+    if(ec != PE::ERROR_BUDGET_EXHAUSTED)
+      fail_if(ec, ec == PE::ERROR_INVALID_EMBEDDING ? "optimize_distortion needs a valid map: run untangle() first"
+                                                     : "optimize_distortion");
+    out = w.get_uv();
+  }
+  return uv_array(out);
+}
+
+py::dict py_measure(const py::object& V, const py::object& F, const py::object& UV)
+{
+  const Disk_input in = read_disk(V, F);
+  const std::vector<double> u = read_uv(UV, in.n);
+  PE::Distortion_report r;
+  last_timing = Timing();
+  {
+    py::gil_scoped_release release;
+    Stopwatch s(last_timing.native_seconds);
+    Work w(in);
+    w.set_uv(u);
+    {
+      Stopwatch a(last_timing.algorithm_seconds);
+      r = PE::measure_distortion(w.mesh, w.uv);
+    }
+    fail_if(r.status, "measure_distortion");
+  }
+  py::dict d;
+  d["status"] = PE::get_error_name(r.status);
+  d["faces"] = r.faces;
+  d["max_symmetric_dirichlet"] = r.max_symmetric_dirichlet;
+  d["mean_symmetric_dirichlet"] = r.mean_symmetric_dirichlet;
+  d["symmetric_dirichlet_median"] = r.symmetric_dirichlet_quantiles[0];
+  d["symmetric_dirichlet_p90"] = r.symmetric_dirichlet_quantiles[1];
+  d["symmetric_dirichlet_p99"] = r.symmetric_dirichlet_quantiles[2];
+  d["max_conformal"] = r.max_conformal;
+  d["mean_conformal"] = r.mean_conformal;
+  d["max_area"] = r.max_area;
+  d["mean_area"] = r.mean_area;
+  // the names `pe --json` gives the symmetric Dirichlet energy
+  d["max_energy_3d"] = r.max_symmetric_dirichlet;
+  d["mean_energy_3d"] = r.mean_symmetric_dirichlet;
+  return d;
+}
+
+py::tuple py_constrain(const py::object& V, const py::object& F, const py::object& UV, const py::object& border,
+                       const py::object& constraints, const std::string& weights, bool optimize)
+{
+  const Disk_input in = read_disk(V, F);
+  // the targets are points of the domain: its border must be given, not guessed (as in `pe constrain`)
+  if(UV.is_none() == border.is_none())
+    throw py::value_error("constrain needs exactly one of UV (the fixed border) and border ('circle', 'square', 'triangle')");
+  PE::Border_shape shape = PE::Border_shape::FIXED;
+  std::vector<double> u;
+  if(!UV.is_none()) u = read_uv(UV, in.n);
+  else
+  {
+    if(!py::isinstance<py::str>(border)) throw py::value_error("border must be 'circle', 'square' or 'triangle' (a fixed border is given as UV)");
+    shape = parse_shape(border.cast<std::string>());
+  }
+  const PE::Weights wts = parse_weights(weights);
+  std::vector<std::size_t> idx;
+  std::vector<double> targets;
+  if(!constraints.is_none())
+  {
+    if(!py::isinstance<py::sequence>(constraints) || py::len(constraints) != 2)
+      throw py::value_error("constraints must be a pair (indices, targets): an integer array of k vertices and a (k, 2) array");
+    const py::sequence c = constraints.cast<py::sequence>();
+    std::size_t k = 0, kt = 0;
+    idx = index_array(c[0], "constraints[0] (indices)", 1, 0, in.n, k);
+    targets = real_matrix(c[1], "constraints[1] (targets)", 2, kt);
+    if(k != kt)
+      throw py::value_error("constraints: " + std::to_string(k) + " indices but " + std::to_string(kt) + " targets");
+  }
+
+  std::vector<double> V2, U2;
+  std::vector<long long> F2, s_index, s_corner;
+  std::vector<double> s_weight;
+  PE::Constrained_embedding_statistics st;
+  double error = 0;
+  bool exact = true;
+  last_timing = Timing();
+  {
+    py::gil_scoped_release release;
+    Stopwatch s(last_timing.native_seconds);
+    Work w(in);
+    if(shape == PE::Border_shape::FIXED) w.set_uv(u, true); // interior values are ignored
+    std::vector<std::pair<vertex_descriptor, Point_2> > cons;
+    for(std::size_t k = 0; k < idx.size(); ++k)
+      cons.emplace_back(w.vd[idx[k]], Point_2(targets[2 * k], targets[2 * k + 1]));
+    std::vector<PE::Steiner_point<vertex_descriptor> > steiner;
+    PE::Error_code ec;
+    {
+      Stopwatch a(last_timing.algorithm_seconds);
+      ec = PE::constrained_embedding(w.mesh, cons, w.uv,
+        PE::parameters::border_shape(shape,
+        PE::parameters::weights(wts,
+        PE::parameters::optimize(optimize,
+        PE::parameters::statistics(&st,
+        PE::parameters::steiner_points(&steiner))))));
+    }
+    fail_if(ec, "constrained_embedding");
+    // the refined mesh: input vertices first, in their order, then the Steiner vertices
+    auto index = w.mesh.add_property_map<vertex_descriptor, long long>("v:py_index", -1).first;
+    long long next = 0;
+    for(vertex_descriptor v : w.mesh.vertices())
+    {
+      index[v] = next++;
+      const Point_3& p = w.mesh.point(v);
+      V2.insert(V2.end(), { p.x(), p.y(), p.z() });
+      U2.insert(U2.end(), { w.uv[v].x(), w.uv[v].y() });
+    }
+    for(face_descriptor f : w.mesh.faces())
+      for(vertex_descriptor v : CGAL::vertices_around_face(w.mesh.halfedge(f), w.mesh)) F2.push_back(index[v]);
+    for(const auto& sp : steiner)
+    {
+      s_index.push_back(index[sp.vertex]);
+      for(std::size_t k = 0; k < 3; ++k)
+      {
+        s_corner.push_back(k < sp.size ? index[sp.corners[k]] : -1);
+        s_weight.push_back(k < sp.size ? sp.weights[k] : 0.);
+      }
+    }
+    for(const auto& c : cons)
+    {
+      const Point_2 p = w.uv[c.first];
+      if(p.x() != c.second.x() || p.y() != c.second.y()) exact = false;
+      error = (std::max)(error, std::hypot(p.x() - c.second.x(), p.y() - c.second.y()));
+    }
+  }
+  const py::ssize_t nv = static_cast<py::ssize_t>(V2.size() / 3), nf = static_cast<py::ssize_t>(F2.size() / 3),
+                    ns = static_cast<py::ssize_t>(s_index.size());
+  py::array_t<double> V2a({ nv, py::ssize_t(3) });
+  if(nv) std::memcpy(V2a.mutable_data(), V2.data(), V2.size() * sizeof(double));
+  py::array_t<long long> F2a({ nf, py::ssize_t(3) });
+  if(nf) std::memcpy(F2a.mutable_data(), F2.data(), F2.size() * sizeof(long long));
+  py::array_t<long long> si(ns), sc({ ns, py::ssize_t(3) });
+  py::array_t<double> sw({ ns, py::ssize_t(3) });
+  if(ns)
+  {
+    std::memcpy(si.mutable_data(), s_index.data(), s_index.size() * sizeof(long long));
+    std::memcpy(sc.mutable_data(), s_corner.data(), s_corner.size() * sizeof(long long));
+    std::memcpy(sw.mutable_data(), s_weight.data(), s_weight.size() * sizeof(double));
+  }
+  py::dict info = report_dict(st.report);
+  info["steiner_vertices"] = st.steiner_vertices;
+  info["paths"] = st.paths;
+  info["patches"] = st.patches;
+  info["repaired_patches"] = st.repaired_patches;
+  info["optimized"] = st.optimized;
+  info["optimization_status"] = PE::get_error_name(st.optimization_status);
+  info["immersion"] = st.immersion && st.immersion_report.is_immersion();
+  info["constraint_error"] = error;
+  info["constraints_exact"] = exact;
+  info["steiner_indices"] = si;
+  info["steiner_corners"] = sc;
+  info["steiner_weights"] = sw;
+  return py::make_tuple(V2a, F2a, uv_array(U2), info);
+}
+
+py::dict py_last_timing()
+{
+  py::dict d;
+  d["native_seconds"] = last_timing.native_seconds;
+  d["algorithm_seconds"] = last_timing.algorithm_seconds;
+  return d;
+}
+
+} // namespace
+
+PYBIND11_MODULE(progressive_embedding, m)
+{
+  m.doc() =
+    "Planar parametrizations of triangulated disks that are valid in floating point.\n\n"
+    "Bindings of the C++ package Progressive_embedding (CGAL style). A mesh is a topological disk given\n"
+    "by V (n x 3 float64 vertex positions) and F (m x 3 integer faces indexing V, no seams); a map is UV\n"
+    "(n x 2 float64, one row per vertex). Wrong shapes, dtypes or indices raise ValueError; a failure of\n"
+    "the algorithm or of the data raises progressive_embedding.Error, whose attribute `code` is the name\n"
+    "of the package's Error_code (e.g. 'ERROR_NOT_A_DISK'). The GIL is released during the computation.";
+  m.attr("__version__") = PE_PYTHON_VERSION;
+
+  error_type = PyErr_NewExceptionWithDoc(
+    "progressive_embedding.Error",
+    "A failure of an algorithm or of the input data (not a disk, non-manifold, NaN coordinates, a map that\n"
+    "cannot be repaired, ...). `code` is the name of the Error_code, e.g. 'ERROR_NOT_A_DISK'; the message\n"
+    "starts with it.", PyExc_RuntimeError, nullptr);
+  if(!error_type) throw py::error_already_set();
+  py::handle(error_type).attr("code") = py::none();
+  m.add_object("Error", py::handle(error_type));
+  py::register_exception_translator([](std::exception_ptr p) {
+    try { if(p) std::rethrow_exception(p); }
+    catch(const Pe_failure& e)
+    {
+      py::object type = py::reinterpret_borrow<py::object>(error_type);
+      py::object instance = type(py::str(e.message));
+      instance.attr("code") = py::str(PE::get_error_name(e.code));
+      PyErr_SetObject(error_type, instance.ptr());
+    }
+  });
+
+  m.def("tutte", &py_tutte, py::arg("V"), py::arg("F"), py::arg("border") = "circle", py::arg("weights") = "uniform",
+    "tutte(V, F, border='circle', weights='uniform') -> UV\n\n"
+    "Tutte's barycentric map (weights='uniform') or Floater's mean value map (weights='mean_value') of the\n"
+    "disk (V, F), solved in double precision. border: 'circle', 'square' or 'triangle' (placed by 3D arc\n"
+    "length), or an (n, 2) array whose border rows give a fixed convex border (its interior rows are\n"
+    "ignored). The map is not certified: in double it may have flipped faces (see check(), untangle()).\n"
+    "Returns UV, an (n, 2) float64 array.");
+  m.def("check", &py_check, py::arg("V"), py::arg("F"), py::arg("UV"),
+    "check(V, F, UV) -> dict\n\n"
+    "The exact certificate of the map UV of the disk (V, F), with the keys of `pe check --json`: 'valid',\n"
+    "'flipped', 'degenerate', 'faces', 'vertices', 'border_vertices', 'non_finite', 'border_simple',\n"
+    "'overlapping_pairs', 'clockwise', 'min_signed_area', 'max_energy_3d', 'mean_energy_3d', 'immersion',\n"
+    "and 'status', 'border_intersections', 'overlap_checked', 'max_signed_area', 'border_area',\n"
+    "'high_energy_faces', 'has_3d_energy'. Every sign is decided exactly; 'valid' is True iff no face is\n"
+    "flipped or degenerate, no coordinate is NaN, the border is simple and no two faces overlap.");
+  m.def("untangle", &py_untangle, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("optimize") = true,
+    py::arg("iterations") = 1000, py::arg("tolerance") = 1e-5,
+    "untangle(V, F, UV, optimize=True, iterations=1000, tolerance=1e-5) -> UV\n\n"
+    "Repairs the map UV by progressive embedding (Shen et al. 2019): its border (convex) is kept\n"
+    "bit-exactly, its interior may be anything. The result is certified valid; then, unless\n"
+    "optimize=False, its symmetric Dirichlet distortion is lowered by optimize() (border fixed), as\n"
+    "`pe untangle` does. Raises Error if the map cannot be repaired (e.g. ERROR_NON_CONVEX_BORDER).");
+  m.def("embed", &py_embed, py::arg("V"), py::arg("F"), py::arg("border") = "circle", py::arg("weights") = "uniform",
+    py::arg("optimize") = true, py::arg("iterations") = 1000, py::arg("tolerance") = 1e-5,
+    "embed(V, F, border='circle', weights='uniform', optimize=True, iterations=1000, tolerance=1e-5) -> UV\n\n"
+    "A certified map of the disk (V, F), as `pe embed`: Tutte's map (border as in tutte()), repaired by\n"
+    "progressive embedding only if it is invalid, then (unless optimize=False) optimized.");
+  m.def("optimize", &py_optimize, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("fixed") = py::none(),
+    py::arg("free_border") = false, py::arg("iterations") = 1000, py::arg("tolerance") = 1e-5,
+    "optimize(V, F, UV, fixed=None, free_border=False, iterations=1000, tolerance=1e-5) -> UV\n\n"
+    "Lowers the symmetric Dirichlet distortion of the valid map UV without ever leaving the valid maps\n"
+    "(every step certified). The vertices of `fixed` (an integer array of vertex indices) and, unless\n"
+    "free_border=True, the border vertices keep their uv bit-exactly. Stops when two consecutive\n"
+    "iterations each gain less than `tolerance` (relative) or after `iterations` iterations (the map is\n"
+    "then still valid and improved). Raises Error ERROR_INVALID_EMBEDDING if UV is not a valid map.");
+  m.def("measure", &py_measure, py::arg("V"), py::arg("F"), py::arg("UV"),
+    "measure(V, F, UV) -> dict\n\n"
+    "The distortion of the map UV against the 3D triangles (scaled to the uv area): 'faces',\n"
+    "'max_symmetric_dirichlet', 'mean_symmetric_dirichlet' (area-weighted; 4 for an isometry),\n"
+    "'symmetric_dirichlet_median', '_p90', '_p99', 'max_conformal', 'mean_conformal', 'max_area',\n"
+    "'mean_area', and 'max_energy_3d', 'mean_energy_3d' (the names `pe --json` gives the symmetric\n"
+    "Dirichlet energy). Flipped or degenerate faces have infinite distortion.");
+  m.def("constrain", &py_constrain, py::arg("V"), py::arg("F"), py::arg("UV") = py::none(),
+    py::arg("border") = py::none(), py::arg("constraints") = py::none(), py::arg("weights") = "uniform",
+    py::arg("optimize") = true,
+    "constrain(V, F, UV=None, border=None, constraints=None, weights='uniform', optimize=True)\n"
+    "    -> (V2, F2, UV2, info)\n\n"
+    "A map with hard positional constraints (MatchMaker++): constraints=(idx, targets), idx an integer\n"
+    "array of k interior vertices and targets a (k, 2) array; each vertex lands bit-exactly on its target.\n"
+    "The border is the one of UV (its border rows; interior rows are ignored) or border='circle', 'square'\n"
+    "or 'triangle' (exactly one of the two). The mesh is refined by Steiner vertices on its edges where\n"
+    "needed, so new arrays are returned: V2, F2 (int64) and UV2 with the original vertices first, in their\n"
+    "order. info holds the certificate (the keys of check()), 'steiner_vertices', 'paths', 'patches',\n"
+    "'repaired_patches', 'optimized', 'optimization_status', 'immersion', 'constraint_error',\n"
+    "'constraints_exact', and where each Steiner vertex lies on the input surface: 'steiner_indices' (rows\n"
+    "of V2), 'steiner_corners' (s x 3 input vertex indices, -1 unused) and 'steiner_weights' (s x 3).");
+  m.def("last_timing", &py_last_timing,
+    "last_timing() -> dict\n\n"
+    "Seconds spent in C++ by the last call of this thread: 'native_seconds' (everything done without the\n"
+    "GIL: building the mesh, the algorithm, copying the result) and 'algorithm_seconds' (the package's\n"
+    "functions alone). For benchmarks: the difference to the call's wall time is the Python overhead.");
+}

@@ -49,6 +49,7 @@
 #include <cstdio>
 #include <cstring>
 #include <ctime>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -185,7 +186,9 @@ void run_child(const Input& in, const std::string& shape, unsigned seed, double 
     r.constraints = C.size();
     r.v_in = m.number_of_vertices();
     PE::Constrained_embedding_statistics st;
-    const auto np = PE::parameters::optimize(optimize, PE::parameters::statistics(&st, CGAL::parameters::maximum_running_time(budget)));
+    // PE_VERBOSE=1 in the environment: constrained_embedding() reports its phases on std::cerr
+    const bool verbose = std::getenv("PE_VERBOSE") != nullptr;
+    const auto np = PE::parameters::statistics(&st).optimize(optimize).maximum_running_time(budget).verbose(verbose);
     const PE::Error_code ec = max_steiner ? PE::constrained_embedding(m, C, uv, PE::parameters::maximum_steiner_vertices(max_steiner, np))
                                           : PE::constrained_embedding(m, C, uv, np);
     r.peak_mb = pe_bench::peak_rss_mb();

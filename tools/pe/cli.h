@@ -16,6 +16,7 @@
 //   commands_check.cpp     check, svg (and the certificate of every other command)
 //   commands_generate.cpp  generate
 //   commands_demo.cpp      demo
+//   commands_batch.cpp     batch, batch-merge (many meshes, each in a child process)
 //
 // Exit status of every command (one mapping, exit_status()): 0 the map written is certified
 // valid (check: the map read is valid [and matches REF]; svg: the picture was written), 1 it is
@@ -72,6 +73,9 @@ struct Arguments
 // prints `pe: why` and the usage to stderr; returns EXIT_USAGE
 int usage(const std::string& why);
 
+// whether the table lets `command` take `option` (batch passes options through to its children)
+bool command_accepts(const std::string& command, const std::string& option);
+
 // parses `s` as a whole decimal integer in [lo, hi] (no sign, no space, no overflow);
 // on failure `why` says what is wrong
 bool parse_count(const std::string& s, unsigned long long lo, unsigned long long hi,
@@ -117,6 +121,7 @@ public:
   Progress(const std::string& label, bool enabled);
   ~Progress() { finish(); }
   bool update(double fraction); // never cancels
+  void set_label(const std::string& label) { label_ = label; }
   std::function<bool(double)> callback() { return [this](double f) { return update(f); }; }
   void finish();
 };
@@ -181,6 +186,8 @@ int cmd_constrain(const Arguments& a);
 int cmd_polygon(const Arguments& a);
 int cmd_generate(const Arguments& a);
 int cmd_demo(const Arguments& a);
+int cmd_batch(const Arguments& a);
+int cmd_batch_merge(const Arguments& a);
 
 } // namespace pe_tool
 

@@ -103,12 +103,25 @@ const Option_spec option_table[] = {
     0, std::nextafter(1., 0.) },
   { "--time-limit", Kind::REAL, "SECONDS",
     "time budget of the command's long steps: a Tutte solve or a repair that exceeds it fails (exit 1,\n"
-    "ERROR_BUDGET_EXHAUSTED); an optimization stops there, with its valid map",
+    "ERROR_BUDGET_EXHAUSTED); an optimization stops there, with its valid map. batch: the wall time of\n"
+    "each mesh (default 600), whose process is killed then (status timeout)",
     0, 1e9 },
   { "--no-progress", Kind::FLAG, "", "no progress bar (it is drawn on terminals only, for runs over a second)" },
   { "--no-optimize", Kind::FLAG, "", "repair only: skip the distortion optimization" },
   { "--optimize", Kind::FLAG, "", "optimize the distortion after repairing (the default)" },
   { "--free-border", Kind::FLAG, "", "the border vertices move too (the border stays simple)" },
+  { "--shard", Kind::TEXT, "K/N",
+    "run shard K of N (1 <= K <= N): the inputs whose index in the sorted list is K-1 modulo N" },
+  { "--jobs", Kind::COUNT, "J", "meshes run at once, each in its own process (1 to 1024, default 1)", 1, 1024 },
+  { "--resume", Kind::FLAG, "",
+    "skip the inputs that OUTDIR/results.jsonl already has with a final status (done, input_error,\n"
+    "timeout, memory, crashed); output_error and error run again" },
+  { "--memory-limit", Kind::COUNT, "MB",
+    "address-space limit of each mesh's process (RLIMIT_AS, default 8192; 0: none; status memory)", 0, 16777216 },
+  { "--out", Kind::TEXT, "DIR", "folder of the merged results (created if missing)" },
+  { "--drop-timings", Kind::FLAG, "",
+    "leave out the times (seconds, *_seconds, keys naming a time) and the shard, so that merges of\n"
+    "the same inputs are the same bytes however they were sharded" },
 };
 
 struct Command_spec
@@ -171,6 +184,23 @@ const std::vector<Command_spec>& command_table()
     { "demo", "[DATA_DIR]", 0, 1, -1, { "--mesh", "--seed", "--out-dir", "--time-limit", "--no-progress" },
       "the README's main job: the thingi protocol on DATA_DIR/meshes/dino.off seed 8, its repair by\n"
       "progressive embedding and the optimized map, with pictures", cmd_demo },
+    { "batch", "PIPELINE LIST_OR_FOLDER OUTDIR", 3, 3, -1,
+      { "--shard", "--jobs", "--resume", "--time-limit", "--memory-limit", "--no-progress",
+        "--no-optimize", "--iterations", "--tolerance", "--border", "--weights", "--free-border" },
+      "PIPELINE (untangle, embed, optimize or constrain) on every mesh of LIST_OR_FOLDER (a folder: its\n"
+      ".obj, .off, .ply, .stl files; a list: one path per line, relative to the list's folder, blank lines\n"
+      "and # comments skipped), sorted by path, each in its own process: `pe PIPELINE IN OUTDIR/NAME.obj\n"
+      "--json` with the options that PIPELINE takes (constrain: --fix NAME.fix beside the mesh if there\n"
+      "is one). Appends one JSON line per mesh to OUTDIR/results.jsonl, on disk before the next: input,\n"
+      "status (done, input_error, timeout, memory, crashed; output_error, error), valid, exit_status,\n"
+      "seconds, shard and the keys of the mesh's JSON (its status as \"code\"). Exit 0 if every mesh of\n"
+      "the shard is valid, 1 if not, 3 if the list or folder cannot be read, 4 if OUTDIR cannot be written",
+      cmd_batch },
+    { "batch-merge", "OUTDIR...", 1, 100000, -1, { "--out", "--drop-timings" },
+      "merge the results.jsonl of batch runs (shards) into --out DIR: results.jsonl (one record per\n"
+      "input, sorted by input; a final status wins over a non-final one, else the later record),\n"
+      "results.csv (input,status,valid,exit_status,seconds, then the other keys sorted, a.b for nested\n"
+      "keys) and summary.md. Exit 0 if every record is valid, 1 if not", cmd_batch_merge },
   };
   return table;
 }
@@ -358,6 +388,12 @@ std::string parse_arguments(int argc, char** argv, const Command_spec& c, Argume
 }
 
 } // namespace
+
+bool command_accepts(const std::string& command, const std::string& option)
+{
+  const Command_spec* c = find_command(command);
+  return c != nullptr && std::find(c->options.begin(), c->options.end(), option) != c->options.end();
+}
 
 // ---- Arguments ----------------------------------------------------------------------------
 

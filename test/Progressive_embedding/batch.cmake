@@ -1,0 +1,13 @@
+# ---- batch runs of the `pe` tool: pe batch, pe batch-merge ------------------------------------
+#   batch_*   label batch: batch_runs.py GROUP generates its inputs at test time (pe generate, pe
+#             thingi on ${PE_DATA_DIR}/meshes, a broken file, a closed mesh) and checks the records,
+#             the statuses (timeout, memory, input_error), shards against an unsharded run (their
+#             merges the same bytes), --resume, the merge rules and the exit status of bad arguments
+if(TARGET pe AND Python3_EXECUTABLE)
+  foreach(_group shards limits pipelines merge arguments)
+    add_test(NAME batch_${_group}
+             COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/batch_runs.py $<TARGET_FILE:pe> ${PE_DATA_DIR}
+                     ${CMAKE_CURRENT_BINARY_DIR}/batch_runs ${_group})
+    set_tests_properties(batch_${_group} PROPERTIES TIMEOUT 120 LABELS "batch")
+  endforeach()
+endif()

@@ -690,6 +690,12 @@ int test_named_parameters()
   std::cout << "[" << mesh_name<Mesh>() << "] named parameters chained in any order" << std::endl;
   typedef decltype(PE::parameters::weights(PE::Weights::UNIFORM).vertex_point_map(0)) Chain;
   static_assert(std::is_base_of<typename Chain::Cgal_pack, Chain>::value, "the package's pack is a CGAL pack");
+  // a name that is both CGAL's and the package's (face_patch_map) means the package's parameter, unambiguously
+  static_assert(std::is_same<decltype(PE::parameters::face_patch_map(0)),
+                             PE::Named_function_parameters<int, PE::internal_np::face_patch_map_t> >::value, "free function");
+  static_assert(std::is_same<typename decltype(PE::parameters::default_values().face_patch_map(0))::Cgal_pack,
+                             CGAL::Named_function_parameters<int, PE::internal_np::face_patch_map_t,
+                               CGAL::Named_function_parameters<bool, CGAL::internal_np::all_default_t> > >::value, "member");
 
   // Tutte: the same parameters in three orders, one started by CGAL's own pack, give the same bits; the
   // weights took effect (the uniform map differs)

@@ -15,6 +15,8 @@
 
 #include <CGAL/Named_function_parameters.h>
 
+#include <type_traits>
+
 namespace CGAL {
 namespace Progressive_embedding {
 
@@ -80,6 +82,12 @@ namespace internal_np {
 #define CGAL_PE_ADD_NAMED_PARAMETER(NAME) enum NAME##_t { NAME };
 CGAL_PE_NAMED_PARAMETER_LIST(CGAL_PE_ADD_NAMED_PARAMETER)
 #undef CGAL_PE_ADD_NAMED_PARAMETER
+
+// CGAL's parameters whose function name is also one of this package's: in this package's pack and
+// namespace the name means the package's parameter (CGAL's is not generated there, so that the call is
+// not ambiguous). CGAL's face_patch_map (face_patch_t) is the face-to-patch map of Polygon_mesh_processing.
+template <class CgalTag> struct Shadowed_by_package : std::false_type {};
+template <> struct Shadowed_by_package<CGAL::internal_np::face_patch_t> : std::true_type {};
 } // namespace internal_np
 #endif
 
@@ -107,9 +115,10 @@ struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base>
 #ifndef DOXYGEN_RUNNING
   // CGAL's parameters (the list CGAL's own pack is generated from), returning this package's pack
 #define CGAL_add_named_parameter(X, Y, Z)                                                      \
-  template <typename K>                                                                        \
-  Named_function_parameters<K, CGAL::internal_np::X, Cgal_pack> Z(const K& k) const             \
-  { return Named_function_parameters<K, CGAL::internal_np::X, Cgal_pack>(k, *this); }
+  template <typename K, typename Tag_ = CGAL::internal_np::X,                                   \
+            std::enable_if_t<!internal_np::Shadowed_by_package<Tag_>::value, int> = 0>          \
+  Named_function_parameters<K, Tag_, Cgal_pack> Z(const K& k) const                             \
+  { return Named_function_parameters<K, Tag_, Cgal_pack>(k, *this); }
 #include <CGAL/STL_Extension/internal/parameters_interface.h>
 #undef CGAL_add_named_parameter
 
@@ -132,9 +141,10 @@ inline Named_function_parameters<bool, CGAL::internal_np::all_default_t> default
 #ifndef DOXYGEN_RUNNING
 // CGAL's parameters start a chain of this package's pack too: PE::parameters::vertex_point_map(vpm).weights(w)
 #define CGAL_add_named_parameter(X, Y, Z)                                                      \
-  template <typename K>                                                                        \
-  Named_function_parameters<K, CGAL::internal_np::X> Z(const K& k)                              \
-  { return Named_function_parameters<K, CGAL::internal_np::X>(k); }
+  template <typename K, typename Tag_ = CGAL::internal_np::X,                                   \
+            std::enable_if_t<!internal_np::Shadowed_by_package<Tag_>::value, int> = 0>          \
+  Named_function_parameters<K, Tag_> Z(const K& k)                                              \
+  { return Named_function_parameters<K, Tag_>(k); }
 #include <CGAL/STL_Extension/internal/parameters_interface.h>
 #undef CGAL_add_named_parameter
 

@@ -308,12 +308,9 @@ struct Optimize_settings
 PE::Error_code run_optimize(Work& w, const Optimize_settings& o, PE::Optimization_statistics& os)
 {
   Stopwatch s(last_timing.algorithm_seconds);
-  return PE::optimize_distortion(w.mesh, w.uv,
-    PE::parameters::free_border(o.free_border,
-    PE::parameters::constrained_vertices(o.fixed,
-    PE::parameters::convergence_tolerance(o.tolerance,
-    PE::parameters::optimization_statistics(&os,
-    CGAL::parameters::number_of_iterations(o.iterations))))));
+  return PE::optimize_distortion(w.mesh, w.uv, PE::parameters::free_border(o.free_border).constrained_vertices(o.fixed)
+                                                  .convergence_tolerance(o.tolerance).optimization_statistics(&os)
+                                                  .number_of_iterations(o.iterations));
 }
 
 // the optimization that follows a repair (untangle, embed), as in `pe`: a map that cannot be optimized
@@ -329,10 +326,16 @@ void optimize_after_repair(Work& w, const Optimize_settings& o)
   fail_if(ec, "optimize_distortion after the repair");
 }
 
-void check_optimize_settings(long long iterations, double tolerance)
+// the settings of an optimization from the Python arguments, checked
+Optimize_settings optimize_settings(long long iterations, double tolerance, bool free_border = false)
 {
   if(iterations < 0) throw py::value_error("iterations must be non-negative, not " + std::to_string(iterations));
   if(!(tolerance >= 0)) throw py::value_error("tolerance must be a non-negative number");
+  Optimize_settings o;
+  o.free_border = free_border;
+  o.iterations = static_cast<std::size_t>(iterations);
+  o.tolerance = tolerance;
+  return o;
 }
 
 // ---- reports as dicts ---------------------------------------------------------------------
@@ -412,10 +415,7 @@ py::array_t<double> py_untangle(const py::object& V, const py::object& F, const 
 {
   const Disk_input in = read_disk(V, F);
   const std::vector<double> u = read_uv(UV, in.n);
-  check_optimize_settings(iterations, tolerance);
-  Optimize_settings o;
-  o.iterations = static_cast<std::size_t>(iterations);
-  o.tolerance = tolerance;
+  const Optimize_settings o = optimize_settings(iterations, tolerance);
   std::vector<double> out;
   last_timing = Timing();
   {
@@ -437,10 +437,7 @@ py::array_t<double> py_embed(const py::object& V, const py::object& F, const py:
   const Disk_input in = read_disk(V, F);
   const Border_choice b = parse_border(border, in.n);
   const PE::Weights wts = parse_weights(weights);
-  check_optimize_settings(iterations, tolerance);
-  Optimize_settings o;
-  o.iterations = static_cast<std::size_t>(iterations);
-  o.tolerance = tolerance;
+  const Optimize_settings o = optimize_settings(iterations, tolerance);
   std::vector<double> out;
   last_timing = Timing();
   {
@@ -467,7 +464,7 @@ py::array_t<double> py_optimize(const py::object& V, const py::object& F, const 
 {
   const Disk_input in = read_disk(V, F);
   const std::vector<double> u = read_uv(UV, in.n);
-  check_optimize_settings(iterations, tolerance);
+  Optimize_settings o = optimize_settings(iterations, tolerance, free_border);
   std::vector<std::size_t> fixed_idx;
   if(!fixed.is_none())
   {
@@ -481,10 +478,6 @@ py::array_t<double> py_optimize(const py::object& V, const py::object& F, const 
     Stopwatch s(last_timing.native_seconds);
     Work w(in);
     w.set_uv(u);
-    Optimize_settings o;
-    o.free_border = free_border;
-    o.iterations = static_cast<std::size_t>(iterations);
-    o.tolerance = tolerance;
     for(std::size_t i : fixed_idx) o.fixed.push_back(w.vd[i]);
     PE::Optimization_statistics os;
     const PE::Error_code ec = run_optimize(w, o, os);

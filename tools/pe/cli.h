@@ -128,6 +128,9 @@ public:
 
 // ---- the result: one summary line or one JSON object --------------------------------------
 
+// the text of a JSON string, without its quotes
+std::string json_escape(const std::string& s);
+
 struct Result
 {
   std::vector<std::pair<std::string, std::string> > fields; // key, JSON value

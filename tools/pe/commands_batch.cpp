@@ -293,20 +293,7 @@ bool parse_object(const std::string& text, Json& out, std::string& why)
   return false;
 }
 
-std::string quoted(const std::string& s)
-{
-  std::string o = "\"";
-  for(char c : s)
-  {
-    if(c == '"') o += "\\\"";
-    else if(c == '\\') o += "\\\\";
-    else if(c == '\n') o += "\\n";
-    else if(c == '\t') o += "\\t";
-    else if(static_cast<unsigned char>(c) < 0x20) { char b[8]; std::snprintf(b, sizeof b, "\\u%04x", c); o += b; }
-    else o += c;
-  }
-  return o + "\"";
-}
+std::string quoted(const std::string& s) { return "\"" + json_escape(s) + "\""; }
 
 // the layout of pe's --json: {"key": value, "key": value}, one line
 std::string to_text(const Json& v)

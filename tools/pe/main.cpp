@@ -472,8 +472,6 @@ void Progress::finish()
 
 // ---- result -------------------------------------------------------------------------------
 
-namespace {
-
 std::string json_escape(const std::string& s)
 {
   std::string o;
@@ -492,8 +490,6 @@ std::string json_escape(const std::string& s)
   }
   return o;
 }
-
-} // namespace
 
 void Result::set(const std::string& k, const std::string& raw)
 {

@@ -237,8 +237,8 @@ public:
     auto vpmap = get(CGAL::dynamic_vertex_property_t<bool>(), mesh);
     for(vertex_descriptor v : vertices(mesh)) { put(vimap, v, -1); put(vpmap, v, false); }
     std::vector<face_descriptor> faces;
-    if(component(mesh, bhd, faces) != CGAL::Surface_mesh_parameterization::OK)
-      return component(mesh, bhd, faces);
+    const CGAL::Surface_mesh_parameterization::Error_code status = component(mesh, bhd, faces);
+    if(status != CGAL::Surface_mesh_parameterization::OK) return status;
     int n = 0;
     for(face_descriptor f : faces)
       for(vertex_descriptor v : vertices_around_face(halfedge(f, mesh), mesh))

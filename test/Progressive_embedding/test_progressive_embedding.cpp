@@ -4,7 +4,7 @@
 
 // Tests of progressive_embedding(): broken Tutte maps (deep stacked triangulation, corpus runs
 // of libcgal-demo), random initializations, all interior vertices at one point, a clockwise
-// border, maps at any scale, and the inputs it must refuse -- in double, Gmpq and Gmpfr, on
+// border, a strictly convex border with vertices 2^-40 apart, maps at any scale and far from the origin, and the inputs it must refuse -- in double, Gmpq and Gmpfr, on
 // Surface_mesh and on Polyhedron_3. Every success is checked with an independent certificate
 // and a bit-exact border; the internal working copy must get the input connectivity back.
 //
@@ -17,6 +17,7 @@
 
 #include "test_util.h"
 
+#include <cmath>
 #include <limits>
 #include <sstream>
 
@@ -182,6 +183,78 @@ int test_special_inputs()
   for(auto v : vertices(m)) put(uv, v, Epick::Point_2(get(uv, v).x(), -get(uv, v).y()));
   RUN(repair_and_certify(m, uv, "clockwise border (mirrored random init)", false));
   CHECK(PE::check_embedding(m, uv).clockwise, "the output stays clockwise");
+  return EXIT_SUCCESS;
+}
+
+// A strictly convex border (every vertex on the parabola y = x^2, exactly) with 2k+1 of its
+// vertices 2^-40 apart around the apex, then a ring of interior vertices and a center; with
+// `ears`, every third pair of cluster edges gets a degree-3 vertex inside the (flat) triangle
+// of its three border vertices. The faces on the cluster edges have an equilateral energy of
+// at least (mean side / 2^-40)^2 ~ 1e22 wherever their third corner is, and the ear faces an
+// area far below 1e-12 x the mean: neither criterion of the repair can be met there, and the
+// maps are valid all the same (Tutte's is).
+template <class Mesh, class UVM>
+void make_parabola_cluster(Mesh& m, UVM& uv, int k, bool ears)
+{
+  typedef vertex_descriptor<Mesh> vd;
+  typedef typename boost::property_traits<typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type Point_3;
+  const double h = std::ldexp(1., -40);
+  std::vector<double> xs = { -1, -0.5 };
+  for(int i = -k; i <= k; ++i) xs.push_back(i * h); // x^2 is exact
+  xs.push_back(0.5); xs.push_back(1);
+  auto vpm = get(CGAL::vertex_point, m);
+  auto new_vertex = [&](double x, double y) { const vd v = add_vertex(m); put(vpm, v, Point_3(x, y, 0)); return v; };
+  auto face = [&](vd a, vd b, vd c) { std::vector<vd> t = { a, b, c }; CGAL::Euler::add_face(t, m); };
+  const std::size_t n = xs.size();
+  std::vector<vd> B, I;
+  for(double x : xs) B.push_back(new_vertex(x, x * x));
+  for(std::size_t i = 0; i < n; ++i) I.push_back(new_vertex(0, 0.5));
+  const vd c = new_vertex(0, 0.6);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const std::size_t j = (i + 1) % n;
+    const bool ear = ears && i >= 3 && i + 4 < n && i % 3 == 0; // cluster edges i and i + 1
+    if(ear)
+    {
+      const vd e = new_vertex(0, 0);
+      face(B[i], B[j], e); face(B[j], B[j + 1], e); face(B[j + 1], B[i], e);
+      face(B[i], B[j + 1], I[j]); face(I[i], B[i], I[j]);
+    }
+    else if(ears && i >= 4 && i + 3 < n && (i - 1) % 3 == 0)
+      face(I[i], B[j], I[j]); // the second edge of an ear: its border face is the ear's
+    else
+    {
+      face(B[i], B[j], I[i]);
+      face(I[i], B[j], I[j]);
+    }
+  }
+  for(std::size_t i = 0; i < n; ++i) face(c, I[i], I[(i + 1) % n]);
+  for(auto v : vertices(m)) put(uv, v, Epick::Point_2(get(vpm, v).x(), get(vpm, v).y()));
+}
+
+template <class Mesh>
+int test_border_cluster()
+{
+  std::cout << "[" << mesh_name<Mesh>() << "] strictly convex border with vertices 2^-40 apart" << std::endl;
+  for(bool ears : { false, true })
+    for(bool one_point : { false, true })
+    {
+      Mesh m;
+      auto uv = make_uv_map(m, Epick::Point_2());
+      make_parabola_cluster(m, uv, 10, ears);
+      PE::internal::Indexed_disk<Mesh> disk;
+      CHECK(PE::internal::make_indexed_disk(m, null_h<Mesh>(), disk) == PE::OK, "a disk");
+      std::vector<Epick::Point_2> B;
+      for(std::size_t i : disk.border) B.push_back(get(uv, disk.vertices[i]));
+      int orientation = 0;
+      CHECK(PE::internal::classify_convex_polygon(B, Epick().orientation_2_object(), orientation)
+              == PE::internal::Polygon_class::STRICTLY_CONVEX, "the border is strictly convex (exactly)");
+      CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uv, PE::parameters::border_shape(PE::Border_shape::FIXED)) == PE::OK, "Tutte");
+      CHECK(PE::check_embedding(m, uv).is_valid(), "Tutte's map is valid");
+      if(one_point)
+        for(auto v : vertices(m)) if(!CGAL::is_border(v, m)) put(uv, v, Epick::Point_2(0.1, 0.6));
+      RUN(repair_and_certify(m, uv, std::string(ears ? "with ears, " : "") + (one_point ? "interior at one point" : "Tutte's map"), false));
+    }
   return EXIT_SUCCESS;
 }
 
@@ -536,6 +609,28 @@ int test_scale()
     RUN(repair_and_certify(g, uvg, what.str(), false));
   }
 
+  // A small map far from the origin: the 8 x 8 grid on a square 2^-30 wide at (0.125, 0.375)
+  // (every coordinate exact), all interior vertices at one point, then folded. The area inside
+  // the border must be summed relative to the border: the shoelace sum on these coordinates
+  // cancels to rounding noise 100 times the area, of either sign.
+  for(int folded : { 0, 1 })
+  {
+    Mesh f;
+    PE::internal::make_grid_disk(9, f);
+    auto uvf = make_uv_map(f, Epick::Point_2());
+    const double w = std::ldexp(1., -30);
+    auto vpm = get(CGAL::vertex_point, f);
+    for(auto v : vertices(f))
+    {
+      const double x = get(vpm, v).x(), y = get(vpm, v).y();
+      if(CGAL::is_border(v, f)) put(uvf, v, Epick::Point_2(0.125 + x * w, 0.375 + y * w));
+      else if(folded) put(uvf, v, Epick::Point_2(0.125 + (1 - x) * w, 0.375 + y * y * w));
+      else put(uvf, v, Epick::Point_2(0.125 + 0.3 * w, 0.375 + 0.4 * w));
+    }
+    RUN(repair_and_certify(f, uvf, folded ? "folded grid 2^-30 wide at (0.125, 0.375)"
+                                          : "grid 2^-30 wide at (0.125, 0.375), interior at one point", false));
+  }
+
   // the broken double map converted exactly to Gmpq, then scaled by 10^200 and 10^-200 exactly
   pin_corners<Epick>(uv, c);
   CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uv, PE::parameters::border_shape(PE::Border_shape::FIXED)) == PE::OK, "Tutte");
@@ -557,7 +652,7 @@ int run_group(const std::string& group, const std::string& data)
 {
   if(group == "stacked") { RUN(test_stacked<Mesh>(40)); return test_stacked<Mesh>(80); }
   if(group == "random_init") return test_random_inits<Mesh>();
-  if(group == "special") return test_special_inputs<Mesh>();
+  if(group == "special") { RUN(test_border_cluster<Mesh>()); return test_special_inputs<Mesh>(); }
   if(group == "refused") return test_refused_inputs<Mesh>();
   if(group == "bull") return test_corpus<Mesh>(data, "bull.off", 0);
   if(group == "man") return test_corpus<Mesh>(data, "man.off", 35);

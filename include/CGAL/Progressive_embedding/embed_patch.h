@@ -31,7 +31,8 @@
 ///    that the caller can split them first. Without flat chord a valid map always exists.
 ///
 /// How: the Tutte map (uniform weights, or the `weights` named parameter) with the border fixed,
-/// solved in the uv number type; when it is not valid (floating point), the progressive embedding
+/// solved in the uv number type (relative to a border vertex when that translation is exact on the
+/// border: a small patch far from the origin keeps its digits); when it is not valid (floating point), the progressive embedding
 /// of `progressive_embedding()` repairs it; the result is certified on the patch.
 ///
 /// Internal variant for the constrained pipeline: internal::embed_patch_impl(tm, faces, uvm, np,
@@ -123,6 +124,36 @@ Error_code read_simple_border(const Indexed_disk<TriangleMesh>& disk, VertexUVMa
   return OK;
 }
 
+// Tutte's map of the patch (interior of `pos`, by vertex index of `disk`; `bpos`: the border in
+// border order, already in `pos`) solved relative to the first border vertex. In floating point
+// the solve's error is relative to the coordinates, not to the patch: a patch 1e-9 across at
+// 0.36 (a crowded region of a constrained map) loses the 8 digits between the two, and its
+// Tutte map flips many faces that a solve near the origin keeps valid (the repair must then
+// place vertices where the grid of doubles at 0.36 has almost no room). Translated only if the
+// translation is exact on the whole border (Sterbenz: a border small next to its distance from
+// the origin), so the system is the same one with the border bit-exactly where it was; the
+// interior is translated back (rounded once, at the end).
+template <class TriangleMesh, class VPM, class NamedParameters, class Point_2>
+Error_code tutte_interior_translated(const Indexed_disk<TriangleMesh>& disk, VPM vpm, const NamedParameters& np,
+                                     Progress_budget& budget, const std::vector<Point_2>& bpos, std::vector<Point_2>& pos)
+{
+  const std::size_t nv = disk.number_of_vertices(), nb = disk.border.size();
+  const Point_2 o = bpos[0];
+  std::vector<Point_2> tpos(nv, Point_2(0, 0));
+  for(std::size_t k = 0; k < nb; ++k)
+  {
+    const Point_2 t(bpos[k].x() - o.x(), bpos[k].y() - o.y());
+    if(!(t.x() + o.x() == bpos[k].x() && t.y() + o.y() == bpos[k].y()))
+      return tutte_interior(disk, vpm, np, budget, pos); // not exact: solved where it is
+    tpos[disk.border[k]] = t;
+  }
+  const Error_code ec = tutte_interior(disk, vpm, np, budget, tpos);
+  if(ec != OK) return ec;
+  for(std::size_t i = 0; i < nv; ++i)
+    if(!disk.on_border[i]) pos[i] = Point_2(tpos[i].x() + o.x(), tpos[i].y() + o.y());
+  return OK;
+}
+
 // embed_patch() (convex border, flat chords refused) or, with `simple_border`, the same map for a
 // patch whose border is only a simple polygon: the constrained pipeline's patches, whose path
 // vertices are placed on their segments up to rounding (convex up to an ulp). No flat-chord test
@@ -196,7 +227,7 @@ Error_code embed_patch_impl(const TriangleMesh& tm, const FaceRange& patch_faces
   if(disk.number_of_interior_vertices() > 0)
   {
     internal::Progress_budget budget(std::function<bool(double)>(), max_seconds);
-    ec = internal::tutte_interior(disk, vpm, np, budget, pos);
+    ec = internal::tutte_interior_translated(disk, vpm, np, budget, bpos, pos);
     if(ec == ERROR_CANNOT_SOLVE_LINEAR_SYSTEM)
     {
       // the repair accepts any finite start: every interior vertex at the border's centroid

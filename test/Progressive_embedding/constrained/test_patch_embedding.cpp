@@ -4,7 +4,8 @@
 
 // Tests of embed_patch(): a range of faces of a mesh (a topological disk) mapped into the convex
 // polygon its border vertices already have, with collinear vertices along the sides; flat chords
-// (find_flat_chords); refused patches and borders; the disk functions on weakly convex borders.
+// (find_flat_chords); refused patches and borders; the disk functions on weakly convex borders;
+// crowded patches of constrained maps (data/patch_*.off) through the simple-border variant.
 // Every certified map is also checked independently: exact orientation of every patch face (in
 // rationals) and check_embedding() on a copy of the patch; the border and every vertex outside
 // the patch are compared bit by bit.
@@ -23,6 +24,7 @@
 #include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <limits>
 #include <map>
 #include <random>
@@ -374,6 +376,46 @@ int repaired_patch()
       RUN(embed_and_check<Kq>(m, P, uvq, true, std::string(what) + ", Gmpq", &stq));
       CHECK(stq.collapses == 0 && stq.invalid_faces_before == 0, "the exact Tutte map is valid");
     }
+  }
+  return EXIT_SUCCESS;
+}
+
+// Two patches of constrained maps of dino.off (test/Progressive_embedding/data), with the
+// exact uv of their border vertices: path vertices placed on straight sides in double, so the
+// polygons are convex up to rounding only (embed_patch() refuses them; the constrained
+// pipeline embeds them with internal::embed_patch_impl(..., simple_border = true)).
+//  - patch_small_far.off: 3.5e-9 across, 0.38 from the origin; Tutte's map solved where the
+//    patch is loses the 8 digits between the two and flips 71 faces, which the repair cannot
+//    place on the grid of doubles there;
+//  - patch_border_cluster.off: 2.6 across, with runs of border vertices less than 1e-6 apart
+//    (edges down to 8e-13): faces on those edges can meet neither the repair's energy
+//    threshold nor its area floor, both relative to the mean face, wherever they are placed.
+template <class Mesh>
+int crowded_patches()
+{
+  std::cout << "[" << mesh_name<Mesh>() << "] crowded patches of constrained maps" << std::endl;
+  const std::string data = (std::filesystem::path(__FILE__).parent_path().parent_path() / "data").string();
+  for(const char* name : { "patch_small_far.off", "patch_border_cluster.off" })
+  {
+    Mesh m;
+    CHECK(read_mesh(data + "/" + name, m), name << ": read");
+    std::vector<fd_t<Mesh> > P(faces(m).begin(), faces(m).end());
+    auto uv = make_uv_map(m, Epick::Point_2());
+    auto vpm = get(CGAL::vertex_point, m);
+    for(auto v : vertices(m)) put(uv, v, Epick::Point_2(get(vpm, v).x(), get(vpm, v).y()));
+    CHECK(PE::embed_patch(m, P, uv) == PE::ERROR_NON_CONVEX_BORDER, name << ": convex up to rounding only");
+    const auto before = snapshot(m, uv);
+    PE::Progressive_embedding_statistics st;
+    const PE::Error_code ec = PE::internal::embed_patch_impl(m, P, uv, PE::parameters::statistics(&st), true);
+    std::cout << "  " << name << " (" << P.size() << " faces): " << PE::get_error_name(ec) << "; repair: "
+              << st.invalid_faces_before << " invalid faces, " << st.collapses << " collapses; " << st.report.summary() << std::endl;
+    CHECK(ec == PE::OK, name << ": embed_patch_impl with a simple border");
+    CHECK(st.report.is_valid() && st.report.flipped == 0 && st.report.degenerate == 0 && st.report.faces == P.size(),
+          name << ": the statistics' certificate");
+    std::size_t border = 0;
+    for(auto v : vertices(m)) if(CGAL::is_border(v, m) && !same_point(get(uv, v), before.at(v))) ++border;
+    CHECK(border == 0, name << ": " << border << " border vertices changed");
+    RUN(check_patch_map(m, P, uv, CGAL::LEFT_TURN, name));
   }
   return EXIT_SUCCESS;
 }
@@ -747,6 +789,7 @@ PE_TEST_GROUP(patch_embedding_polyhedron)
 PE_TEST_GROUP(patch_embedding_repair)
 {
   (void)data_dir;
+  RUN(crowded_patches<Surface_mesh>());
   return repaired_patch<Surface_mesh>();
 }
 

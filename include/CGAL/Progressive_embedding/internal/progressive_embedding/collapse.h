@@ -14,6 +14,7 @@
 
 #include <CGAL/boost/graph/Euler_operations.h>
 
+#include <algorithm>
 #include <functional>
 #include <iostream>
 #include <vector>
@@ -75,7 +76,8 @@ public:
   bool face_invalid(face_descriptor f) const
   {
     const halfedge_descriptor h = m.halfedge(f);
-    return validity.face_invalid(m.point(m.source(h)), m.point(m.target(h)), m.point(m.target(m.next(h))));
+    const vertex_descriptor a = m.source(h), b = m.target(h), c = m.target(m.next(h));
+    return validity.face_invalid(m.point(a), m.point(b), m.point(c), wm.on_border(a), wm.on_border(b), wm.on_border(c));
   }
 
   // Collapses until no face is invalid; `history` receives the collapses in order.
@@ -112,8 +114,16 @@ public:
         queue.clear();
         for(face_descriptor f : bad)
           if(face_invalid(f)) queue.push_back(f);
-        if(!placed && !queue.empty())
-          return ERROR_COLLAPSE_FAILED;
+        // What is left can neither collapse nor move. A positively oriented face there is held
+        // only by the area floor or the energy threshold, which its border vertices do not
+        // let it meet (e.g. an interior vertex inside a cluster of border vertices 1e-12 apart):
+        // it stays, as the insertions need positive faces only.
+        if(!placed)
+        {
+          queue.erase(std::remove_if(queue.begin(), queue.end(), [this](face_descriptor f) { return face_positive(f); }),
+                      queue.end());
+          if(!queue.empty()) return ERROR_COLLAPSE_FAILED;
+        }
       }
       last_collapse_count = counters.collapses;
     }
@@ -121,6 +131,12 @@ public:
       std::cerr << "[pe] collapses: " << counters.collapses << ", expansion rounds: " << counters.expansion_rounds
                 << ", barycenter placements: " << counters.barycenter_placements << "\n";
     return OK;
+  }
+
+  bool face_positive(face_descriptor f) const
+  {
+    const halfedge_descriptor h = m.halfedge(f);
+    return validity.orient(m.point(m.source(h)), m.point(m.target(h)), m.point(m.target(m.next(h)))) == CGAL::LEFT_TURN;
   }
 
   // the collapsible interior edge of f (link condition) giving the smallest degree; null if none

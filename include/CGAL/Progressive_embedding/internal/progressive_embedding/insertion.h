@@ -238,7 +238,7 @@ public:
       {
         m.point(mover) = Point_2(p.x() + t * dx, p.y() + t * dy);
         double e;
-        if(validity.star_ok(m, mover, e))
+        if(validity.star_ok(m, mover, [this](vertex_descriptor w) { return wm.on_border(w); }, e))
         {
           if(e < best || !found) { best = e; best_p = m.point(mover); found = true; }
           break;

@@ -146,6 +146,16 @@ public:
 // When a face is invalid (it must be collapsed) and when a star is acceptable (an insertion
 // may stop there). Energies are against an equilateral reference of the mean face area, so
 // they are scale-free; the area floor is a fraction of the mean face area.
+//
+// Both are relative to the mean face, which the border may not allow: an edge joining two
+// border vertices keeps its length e, and a face on it has an energy of at least s^2 / e^2
+// (s: the reference side; the reference edge mapped onto it gives a singular value of at most
+// e / s), and an area that its place cannot raise much above e^2 where the border is crowded.
+// So, for a face with such a "fixed" edge shorter than s, the floor is scaled by e^2 / s^2 and
+// the threshold divided by it: the criteria ask as much relative to the scale the border
+// forces there as they ask elsewhere relative to the mean face, and a fixed edge alone can
+// never make a face invalid wherever its other corner goes. A face with three border vertices
+// cannot change at all: it is judged by its orientation only.
 template <class Traits>
 struct Validity_criteria
 {
@@ -164,18 +174,34 @@ struct Validity_criteria
     ref = equilateral_reference(a, make_ft<FT>(1.7320508075688772));
   }
 
-  bool face_invalid(const Point_2& a, const Point_2& b, const Point_2& c) const
+  // min(1, e^2 / s^2) for the fixed edge (p, q) (1 if it is not fixed): the scale of a face on it
+  double fixed_edge_scale(const Point_2& p, const Point_2& q, bool fixed) const
+  {
+    if(!fixed) return 1;
+    const FT dx = q.x() - p.x(), dy = q.y() - p.y();
+    // s^2 = 2 x the reference's corner dot product (the equilateral reference: side^2 / 2)
+    const double r = CGAL::to_double((dx * dx + dy * dy) / (FT(2) * ref.dot[0]));
+    return (r > 0 && r < 1) ? r : 1; // NaN or <= 0 (a degenerate reference) counts as 1: the criteria as before
+  }
+
+  // a, b, c counterclockwise; ba, bb, bc: whether each is a border vertex
+  bool face_invalid(const Point_2& a, const Point_2& b, const Point_2& c, bool ba, bool bb, bool bc) const
   {
     FT e;
     if(!positive_face_energy(ref, orient, a, b, c, e)) return true;
-    if(use_min_area && signed_area(a.x(), a.y(), b.x(), b.y(), c.x(), c.y()) < min_face_area) return true;
-    return !(CGAL::to_double(e) <= energy_threshold);
+    if(ba && bb && bc) return false; // fixed: positive is all it can be
+    const double scale = (std::min)(fixed_edge_scale(a, b, ba && bb),
+                         (std::min)(fixed_edge_scale(b, c, bb && bc), fixed_edge_scale(c, a, bc && ba)));
+    if(use_min_area && signed_area(a.x(), a.y(), b.x(), b.y(), c.x(), c.y()) < min_face_area * make_ft<FT>(scale))
+      return true;
+    return !(CGAL::to_double(e) * scale <= energy_threshold);
   }
 
-  // all faces around v positively oriented and (in floating point) of acceptable energy;
-  // `max_energy` is the largest energy of those faces
-  template <class Mesh>
-  bool star_ok(const Mesh& m, typename Mesh::Vertex_index v, double& max_energy) const
+  // all faces around v (an interior vertex) positively oriented and (in floating point) of
+  // acceptable energy, its threshold scaled for a fixed edge as in face_invalid();
+  // `max_energy` is the largest energy of those faces, scaled the same way
+  template <class Mesh, class OnBorder>
+  bool star_ok(const Mesh& m, typename Mesh::Vertex_index v, const OnBorder& on_border, double& max_energy) const
   {
     max_energy = 0;
     const Point_2& x = m.point(v);
@@ -190,7 +216,8 @@ struct Validity_criteria
       const Point_2& b = m.point(m.source(h));
       FT e;
       if(!positive_face_energy(ref, orient, x, a, b, e)) return false;
-      const double ed = CGAL::to_double(e);
+      const double ed = CGAL::to_double(e)
+                        * fixed_edge_scale(a, b, on_border(m.target(m.next(h))) && on_border(m.source(h)));
       if(!Traits::has_exact_constructions && !(ed <= energy_threshold)) return false;
       max_energy = (std::max)(max_energy, std::isfinite(ed) ? ed : std::numeric_limits<double>::max());
     }

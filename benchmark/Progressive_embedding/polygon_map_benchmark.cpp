@@ -3,14 +3,15 @@
 // Author(s) : Progressive_embedding contributors
 //
 // constrained_embedding() onto fixed borders that are not convex, on real disks:
-//   hilbert : the outline of the thickened Hilbert curve (polygon_shapes.h) of order 3, or of the largest
-//             order whose corners fit on the disk's border vertices (104 corners at order 3, 28 at order 2,
-//             8 at order 1), with 3 constraints at random points inside (the paper's space-filling-curve
-//             stress test); simple, not convex: an embedding;
+//   hilbert : the outline of the thickened Hilbert curve (polygon_shapes.h) of order 3 (104 corners), on
+//             every disk: a border with fewer vertices is refined first (its longest edge split at the 3D
+//             midpoint until it has 104; these vertices count as added), with 3 constraints at random points
+//             inside (the paper's space-filling-curve stress test); simple, not convex: an embedding;
 //   star    : a star with min(8, nb / 4) tips (radii 1 and 0.4), 3 constraints inside: an embedding;
 //   spiral  : a strip winding twice around a spiral (min(nb, 64) corners, overlapping itself), border only:
 //             an immersion;
-//   own     : (--obj inputs) the disk's own uv border, 3 constraints inside if it is simple.
+//   own     : (--obj inputs) the disk's own uv border, its rotation indices read from the own map
+//             (border_rotation_indices()), 3 constraints inside if it is simple.
 // The border vertices go onto the polygon by 3D arc length: each corner on the border vertex nearest to
 // its perimeter fraction (distinct, in order), the vertices between two corners on the side between them.
 // Constraints: 3 distinct random interior vertices to distinct random points strictly inside the border
@@ -123,6 +124,31 @@ bool place_border(const SM& m, const std::vector<vertex_descriptor>& B, const st
   return true;
 }
 
+// splits the longest border edge (at its 3D midpoint, the incident face by the diagonal to its opposite
+// corner: the surface is unchanged) until the border has at least n vertices, so that every disk takes the
+// order-3 Hilbert outline (104 corners); returns the vertices added
+std::size_t refine_border(SM& m, std::size_t n)
+{
+  std::size_t added = 0;
+  for(std::vector<vertex_descriptor> B = border_loop(m); B.size() < n && B.size() >= 3; B = border_loop(m), ++added)
+  {
+    SM::Halfedge_index longest;
+    double best = -1;
+    for(SM::Halfedge_index h : m.halfedges())
+    {
+      if(!m.is_border(h)) continue;
+      const double l = CGAL::squared_distance(m.point(m.source(h)), m.point(m.target(h)));
+      if(l > best) { best = l; longest = h; }
+    }
+    const K::Point_3 mid = CGAL::midpoint(m.point(m.source(longest)), m.point(m.target(longest)));
+    const SM::Halfedge_index inner = m.opposite(longest);
+    const SM::Halfedge_index hnew = CGAL::Euler::split_edge(inner, m); // ends at the new vertex
+    m.point(m.target(hnew)) = mid;
+    CGAL::Euler::split_face(hnew, m.next(m.next(hnew)), m);
+  }
+  return added;
+}
+
 struct Row
 {
   std::string mesh, shape, status = "CRASHED", certificate = "-", optimization = "-";
@@ -139,18 +165,20 @@ void run_child(const Input& in, const std::string& shape, unsigned seed, double 
   Row r;
   SM m = in.mesh;
   UV_map uv = m.add_property_map<vertex_descriptor, P2>("v:bench_uv", P2(0, 0)).first;
-  const std::vector<vertex_descriptor> B = border_loop(m);
+  const std::size_t vertices_given = m.number_of_vertices();
+  std::size_t border_added = 0;
   std::vector<P2> Q;
-  std::size_t constraints = 3;
   if(shape == "hilbert")
   {
-    for(int order = 3; order >= 1 && r.order == 0; --order)
-    {
-      Q = Shapes::corners_only(Shapes::hilbert(order));
-      if(Q.size() <= B.size()) r.order = order;
-    }
+    // order 3 on every disk, as the authors' test: a border with fewer vertices than its 104 corners is
+    // refined first (these splits count as vertices added)
+    Q = Shapes::corners_only(Shapes::hilbert(3));
+    r.order = 3;
+    border_added = refine_border(m, Q.size());
   }
-  else if(shape == "star") Q = Shapes::star(2 * std::max<std::size_t>(3, std::min<std::size_t>(8, B.size() / 4)));
+  const std::vector<vertex_descriptor> B = border_loop(m);
+  std::size_t constraints = 3;
+  if(shape == "star") Q = Shapes::star(2 * std::max<std::size_t>(3, std::min<std::size_t>(8, B.size() / 4)));
   else if(shape == "spiral") { Q = Shapes::spiral(std::min<std::size_t>(64, B.size() & ~std::size_t(1))); constraints = 0; }
   r.corners = shape == "own" ? B.size() : Q.size();
   bool placed = false;
@@ -184,17 +212,22 @@ void run_child(const Input& in, const std::string& shape, unsigned seed, double 
       if(distinct) C.emplace_back(interior[C.size()], p);
     }
     r.constraints = C.size();
-    r.v_in = m.number_of_vertices();
+    r.v_in = vertices_given;
     PE::Constrained_embedding_statistics st;
     // PE_VERBOSE=1 in the environment: constrained_embedding() reports its phases on std::cerr
     const bool verbose = std::getenv("PE_VERBOSE") != nullptr;
     const auto np = PE::parameters::statistics(&st).optimize(optimize).maximum_running_time(budget).verbose(verbose);
-    const PE::Error_code ec = max_steiner ? PE::constrained_embedding(m, C, uv, PE::parameters::maximum_steiner_vertices(max_steiner, np))
-                                          : PE::constrained_embedding(m, C, uv, np);
+    // the own border may wrap around some of its vertices (a seamless map cut through cones): its turns
+    // are read from the own map
+    auto turns = m.add_property_map<vertex_descriptor, int>("v:bench_turns", 0).first;
+    if(shape == "own") PE::border_rotation_indices(m, uv, turns);
+    const auto npt = PE::parameters::vertex_rotation_index_map(turns, np);
+    const PE::Error_code ec = max_steiner ? PE::constrained_embedding(m, C, uv, PE::parameters::maximum_steiner_vertices(max_steiner, npt))
+                                          : PE::constrained_embedding(m, C, uv, npt);
     r.peak_mb = pe_bench::peak_rss_mb();
     r.status = PE::get_error_name(ec);
     r.v_out = m.number_of_vertices();
-    r.steiner = st.steiner_vertices; r.paths = st.paths; r.patches = st.patches;
+    r.steiner = st.steiner_vertices + border_added; r.paths = st.paths; r.patches = st.patches;
     r.t_total = st.seconds_total; r.t_optimize = st.seconds_optimization; r.t_certified = st.seconds_total - st.seconds_optimization - st.seconds_output;
     r.optimized = st.optimized;
     if(st.optimized) r.optimization = PE::get_error_name(st.optimization_status);
@@ -393,10 +426,12 @@ int main(int argc, char** argv)
      << "Generated " << date << " by `polygon_map_benchmark` (2 cores; load average " << load << " at the end). "
      << "Disks of libcgal-demo with at least " << min_vertices << " vertices"
      << (objs.empty() ? std::string() : std::string(", and the uv disks of the OBJ files given")) << ". "
-     << "Borders: `hilbert` the thickened Hilbert curve outline of order 3 (104 corners), or of the largest order "
-        "whose corners fit on the border vertices (column order), 3 constraints at random points inside; `star` "
+     << "Borders: `hilbert` the thickened Hilbert curve outline of order 3 (104 corners; a border with fewer vertices "
+        "is refined first by splitting its longest edges, counted as added vertices), 3 constraints at random points "
+        "inside; `star` "
         "min(8, nb/4) tips, 3 constraints; `spiral` a strip winding twice around a spiral (min(nb, 64) corners; "
-        "weakly self-overlapping), border only; `own` the disk's own uv border (OBJ inputs), 3 constraints if simple. "
+        "weakly self-overlapping), border only; `own` the disk's own uv border (OBJ inputs; its rotation indices read from the own map, "
+        "border_rotation_indices()), 3 constraints if simple. "
         "Border vertices onto the polygon by 3D arc length (one polygon vertex per border vertex, corners on border "
         "vertices). Each run in its own process; the output certified again (check_embedding, or check_immersion "
         "with the border polygon), border and constraints compared bit-exactly. Time to the certified map: "

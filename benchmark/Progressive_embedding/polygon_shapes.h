@@ -5,8 +5,12 @@
 // Benchmark fixtures: the polygons of the polygon benchmarks (counterclockwise):
 //  - convex(n): regular n-gon;
 //  - star(n): n/2 tips, radii 1 and 0.4;
-//  - spiral(n): a strip of width 0.6 around the spiral r = 1 + 0.3 t / (2 pi), t in [0, 4 pi], n/2
-//    vertices per side: it winds twice and overlaps itself (weakly self-overlapping, not simple);
+//  - spiral(n): a strip of width 0.6 along the spiral r = 1 + 0.4 t / (2 pi), t in [0, 4 pi], 2 (n/2)
+//    vertices (n/2 per side, or n/2 + 1 outside and n/2 - 1 inside when n/2 is odd): it winds twice
+//    and overlaps itself (weakly self-overlapping, not simple) but never touches itself: two turns
+//    overlap by 0.6 - 0.4 = 0.2, the end cap lies 2 * 0.4 - 0.6 = 0.2 beyond the start cap, and no
+//    vertex but the caps' lies on the caps' direction (each side has an odd number of steps, so none
+//    at t = 2 pi, where it would lie on a cap in exact arithmetic); empty for n < 16 (too coarse);
 //  - hilbert(order): the outline of the Hilbert curve of that order thickened into a polyomino (cells at
 //    even grid positions and their connectors), a vertex at every unit step (collinear runs, vertices on
 //    diagonals); corners_only() keeps its corners.
@@ -47,16 +51,22 @@ struct Shapes
 
   static std::vector<Point> spiral(std::size_t n)
   {
+    // a pitch of 0.3 (half the width) made the end cap's inner corner meet the start cap's outer
+    // corner (r = 1.6 at angle 0): apart by 8e-16 only through the rounding of sin(4 pi)
+    const double pitch = 0.4, width = 0.6;
     const std::size_t m = n / 2;
+    // an even number of vertices per side: then no side has a vertex at t = 2 pi
+    const std::size_t outer = m % 2 ? m + 1 : m, inner = 2 * m - outer;
     std::vector<Point> P;
-    for(std::size_t k = 0; k < m; ++k)
+    if(m < 8) return P; // too coarse: the chords of the two turns cross (n = 10 or 14 bounds no immersed disk)
+    for(std::size_t k = 0; k < outer; ++k)
     {
-      const double t = 2 * two_pi * double(k) / double(m - 1), r = 1 + 0.3 * t / two_pi + 0.6;
+      const double t = 2 * two_pi * double(k) / double(outer - 1), r = 1 + pitch * t / two_pi + width;
       P.push_back(Point(r * std::cos(t), r * std::sin(t)));
     }
-    for(std::size_t k = m; k-- > 0; )
+    for(std::size_t k = inner; k-- > 0; )
     {
-      const double t = 2 * two_pi * double(k) / double(m - 1), r = 1 + 0.3 * t / two_pi;
+      const double t = 2 * two_pi * double(k) / double(inner - 1), r = 1 + pitch * t / two_pi;
       P.push_back(Point(r * std::cos(t), r * std::sin(t)));
     }
     return P;

@@ -34,6 +34,12 @@ int cmd_constrain(const Arguments& a)
   status = tutte_settings(run, in, s);
   if(status != EXIT_VALID) return status;
   run.result.add("output", a.positional[1]);
+  // a border from the input's map may wrap around some of its vertices (a seamless map cut through
+  // cones): the input's faces say how many times, read before the targets overwrite uv
+  auto turns = in.mesh.add_property_map<vertex_descriptor, int>("v:pe_rotation_index", 0).first;
+  int border_turns = 0;
+  if(in.has_uv && s.border == PE::Border_shape::FIXED) border_turns = PE::border_rotation_indices(in.mesh, in.uv, turns);
+  run.result.add("border_turns", static_cast<std::size_t>(border_turns));
   // the targets: read_constraints() writes them into in.uv; they are taken from there
   std::vector<vertex_descriptor> fixed;
   if(a.has("--fix"))
@@ -77,7 +83,8 @@ int cmd_constrain(const Arguments& a)
         PE::parameters::optimize(!a.has("--no-optimize"),
           PE::parameters::statistics(&st,
             PE::parameters::face_patch_map(picture.patches,
-              CGAL::parameters::maximum_running_time(budget.remaining())))))));
+              PE::parameters::vertex_rotation_index_map(turns,
+                CGAL::parameters::maximum_running_time(budget.remaining()))))))));
   run.result.add("steiner_vertices", st.steiner_vertices);
   run.result.add("paths", st.paths);
   run.result.add("patches", st.patches);

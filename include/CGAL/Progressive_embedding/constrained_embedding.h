@@ -180,6 +180,64 @@ struct Constrained_chord_predicate
   }
 };
 
+// The vertices of the polygon P that turn by more than rounding: the sine of the turn at least 2^-20 in
+// magnitude (the corner margin of domain_partition.h), or a turn backwards. The others lie on the
+// segment between their neighbours up to rounding (e.g. points interpolated in floating point along a
+// side): as partition nodes they give sliver polygons, thinner than an ulp, where no path vertex fits.
+template <class Point_2>
+void turning_vertices(const std::vector<Point_2>& P, std::vector<std::size_t>& turning, const std::vector<int>& turns)
+{
+  const std::size_t n = P.size();
+  turning.clear();
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    if(!turns.empty() && turns[i] > 0) { turning.push_back(i); continue; } // wraps around: a corner whatever its turn
+    const Point_2& a = P[(i + n - 1) % n];
+    const Point_2& b = P[i];
+    const Point_2& c = P[(i + 1) % n];
+    const double ux = CGAL::to_double(b.x()) - CGAL::to_double(a.x()), uy = CGAL::to_double(b.y()) - CGAL::to_double(a.y());
+    const double vx = CGAL::to_double(c.x()) - CGAL::to_double(b.x()), vy = CGAL::to_double(c.y()) - CGAL::to_double(b.y());
+    const double cross = ux * vy - uy * vx, dot = ux * vx + uy * vy;
+    if(!(dot > 0) || !(std::abs(cross) < std::ldexp(1., -20) * std::sqrt(ux * ux + uy * uy) * std::sqrt(vx * vx + vy * vy)))
+      turning.push_back(i);
+  }
+}
+
+// Whether every corner of a partition polygon between a border side and an interior edge (where a path
+// meets the border) turns by a sine above 2^-20: path vertices are placed on their segments up to one
+// ulp (place_path_vertices), so a thinner corner leaves no room for them (the patch cannot be mapped)
+template <class Point_2>
+bool path_corners_turn_by_margin(const Domain_partition& partition, const std::vector<Point_2>& B)
+{
+  const std::vector<std::vector<std::ptrdiff_t> > sides = polygon_side_edges(partition);
+  for(std::size_t f = 0; f < partition.polygons.size(); ++f)
+  {
+    const std::vector<std::size_t>& P = partition.polygons[f];
+    for(std::size_t k = 0, n = P.size(); k < n; ++k)
+    {
+      const std::size_t km = (k + n - 1) % n, kp = (k + 1) % n;
+      if((sides[f][km] < 0) == (sides[f][k] < 0)) continue; // the border's own corner, or two paths
+      if(P[km] >= B.size() || P[k] >= B.size() || P[kp] >= B.size()) continue; // a target: no border side
+      const Point_2 &a = B[P[km]], &u = B[P[k]], &b = B[P[kp]];
+      const double ax = CGAL::to_double(u.x()) - CGAL::to_double(a.x()), ay = CGAL::to_double(u.y()) - CGAL::to_double(a.y());
+      const double bx = CGAL::to_double(b.x()) - CGAL::to_double(u.x()), by = CGAL::to_double(b.y()) - CGAL::to_double(u.y());
+      if(!(ax * by - ay * bx > std::ldexp(1., -20) * std::sqrt(ax * ax + ay * ay) * std::sqrt(bx * bx + by * by)))
+        return false;
+    }
+  }
+  return true;
+}
+
+// the rotation index of v in the user's map (any integral value type)
+template <class Map, class Vertex>
+int read_rotation_index(const Map& m, Vertex v)
+{
+  const auto r = get(m, v);
+  if(r < 0) return -1;
+  if(r > 1000000) return -1; // not a count of turns a mesh border can make around one vertex
+  return static_cast<int>(r);
+}
+
 // The indices of the strict corners of the exact convex hull of the polygon P (Andrew's monotone
 // chain with the exact orientation), in the polygon's order. ERROR_NON_CONVEX_BORDER when they are
 // not in the hull's cyclic order along the polygon (the polygon is not convex up to rounding),
@@ -248,6 +306,58 @@ void write_face_patch_map(const TriangleMesh& tm, const Work& work, const CopyTo
 
 /// \ingroup PkgProgressiveEmbeddingMainFunctions
 ///
+/// reads, from a map `uvm` of `tm` whose faces around the border are positive, how many full turns its border makes
+/// around each border vertex beyond its angle in (0, 2 pi): the rotation index that `constrained_embedding()` takes
+/// as `vertex_rotation_index_map` to map onto the same border. The angle at a border vertex is the sum of its faces'
+/// corners there (in double precision); the index is that sum minus the border polygon's angle in (0, 2 pi),
+/// divided by 2 pi and rounded. A border vertex with a face that is not strictly positive (exact orientation) gets 0.
+/// Vertices that are not on the border are not written.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` (triangles)
+/// \tparam VertexUVMap a readable vertex property map whose values are points of a CGAL kernel
+/// \tparam VertexIndexMap a writable vertex property map with `int` values
+/// \return the sum of the indices written
+template <class TriangleMesh, class VertexUVMap, class VertexIndexMap>
+int border_rotation_indices(const TriangleMesh& tm, VertexUVMap uvm, VertexIndexMap rotation_index_map)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  const double two_pi = 6.283185307179586;
+  auto xy = [&](halfedge_descriptor h, bool at_target) {
+    const auto p = get(uvm, at_target ? target(h, tm) : source(h, tm));
+    return std::array<double, 2>{ { CGAL::to_double(p.x()), CGAL::to_double(p.y()) } };
+  };
+  auto angle = [](const std::array<double, 2>& o, const std::array<double, 2>& a, const std::array<double, 2>& b) {
+    const double ux = a[0] - o[0], uy = a[1] - o[1], vx = b[0] - o[0], vy = b[1] - o[1];
+    return std::atan2(ux * vy - uy * vx, ux * vx + uy * vy); // counterclockwise from o -> a to o -> b, in (-pi, pi]
+  };
+  int total = 0;
+  for(halfedge_descriptor hb : halfedges(tm))
+  {
+    if(!CGAL::is_border(hb, tm)) continue;
+    // v = target(hb); the interior on the left: v -> source(hb) leaves v first, target(next(hb)) -> v enters it
+    const std::array<double, 2> v = xy(hb, true), n = xy(hb, false), p = xy(next(hb, tm), true);
+    double sum = 0;
+    bool positive = true;
+    for(halfedge_descriptor h : CGAL::halfedges_around_target(hb, tm))
+    {
+      if(CGAL::is_border(h, tm)) continue;
+      // the face of h: corner at target(h) between target(next(h)) and source(h)
+      const auto a = get(uvm, target(next(h, tm), tm)), o = get(uvm, target(h, tm)), b = get(uvm, source(h, tm));
+      if(internal::exact_orientation(o, a, b) != CGAL::LEFT_TURN) positive = false;
+      sum += angle(xy(h, true), xy(next(h, tm), true), xy(h, false));
+    }
+    double base = angle(v, n, p);
+    if(base <= 0) base += two_pi; // the polygon's angle in (0, 2 pi]
+    const double turns = std::floor((sum - base) / two_pi + 0.5);
+    const int r = positive && turns > 0 && turns < 1e6 ? static_cast<int>(turns) : 0;
+    put(rotation_index_map, target(hb, tm), r);
+    total += r;
+  }
+  return total;
+}
+
+/// \ingroup PkgProgressiveEmbeddingMainFunctions
+///
 /// computes a certified planar map of a disk-topology triangle mesh in which every constrained interior vertex
 /// lands bit-exactly on its target point, refining the mesh where needed (MatchMaker++).
 ///
@@ -289,6 +399,13 @@ void write_face_patch_map(const TriangleMesh& tm, const Work& work, const CopyTo
 /// not even weakly self-overlapping gives `ERROR_NOT_SELF_OVERLAPPING`; holes need a simple outer border
 /// (`ERROR_NOT_A_DISK` otherwise).
 ///
+/// <b>Borders that wrap around a vertex</b>: the border of an immersed disk may turn around one of its vertices
+/// more than once (the disk's angle there exceeds 2 pi: a border vertex of a seamless parametrization cut through
+/// a cone, for instance). The uv positions give the angle only modulo 2 pi: `vertex_rotation_index_map` gives the
+/// full turns to add (for a given valid map, the sum of its face angles at the vertex divided by 2 pi, rounded
+/// down; `pe constrain` reads them so from its input). The border is then triangulated with these
+/// `rotation_indices` and the map is an immersion as above.
+///
 /// \tparam TriangleMesh a model of `MutableFaceGraph` (triangles)
 /// \tparam ConstraintRange a range of `std::pair<vertex_descriptor, Point_2>` (`Point_2` the uv map's value type)
 /// \tparam VertexUVMap a model of `ReadWritePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
@@ -305,6 +422,13 @@ void write_face_patch_map(const TriangleMesh& tm, const Work& work, const CopyTo
 ///     \cgalParamDescription{the border: fixed from `uvm` (convex, flat vertices allowed; or non-convex, see above), or a shape as in `tutte_embedding()`}
 ///     \cgalParamType{`Border_shape`}
 ///     \cgalParamDefault{`Border_shape::FIXED`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_rotation_index_map}
+///     \cgalParamDescription{with `Border_shape::FIXED`: the rotation index of every border vertex, the full turns
+///                           (multiples of 2 pi) to add to the border's angle there, for a border that wraps around
+///                           some of its vertices (see above); read at border vertices only}
+///     \cgalParamType{a readable vertex property map with integral values, each at least 0 (else `ERROR_WRONG_PARAMETER`)}
+///     \cgalParamDefault{all 0}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{triangle_corner_points}
 ///     \cgalParamDescription{the corners of `Border_shape::TRIANGLE`, as in `tutte_embedding()`}
@@ -501,7 +625,26 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
   ec = internal::place_border(disk, uvm, vpm, traits, np, bpos);
   // a fixed border that is not convex (read in full before the test): a simple polygon gives an
   // embedding, a weakly self-overlapping one an immersion (step 2 decides which)
-  const bool non_convex = ec == ERROR_NON_CONVEX_BORDER && shape == Border_shape::FIXED && bpos.size() == nb;
+  // rotation indices of the border vertices (a fixed border that wraps around some of them)
+  std::vector<int> border_turns;
+  int total_turns = 0;
+  if(shape == Border_shape::FIXED && !holes)
+  {
+    typedef typename CGAL::internal_np::Lookup_named_param_def<internal_np::vertex_rotation_index_map_t, NamedParameters,
+                                                               CGAL::internal_np::Param_not_found>::type Turn_map;
+    if constexpr(!std::is_same<Turn_map, CGAL::internal_np::Param_not_found>::value)
+    {
+      border_turns.resize(nb);
+      for(std::size_t k = 0; k < nb; ++k)
+      {
+        border_turns[k] = internal::read_rotation_index(get_parameter(np, internal_np::vertex_rotation_index_map), disk.vertices[disk.border[k]]);
+        if(border_turns[k] < 0) return finish(ERROR_WRONG_PARAMETER);
+        total_turns += border_turns[k];
+      }
+    }
+  }
+  const bool non_convex = (ec == ERROR_NON_CONVEX_BORDER || (ec == OK && total_turns > 0)) && shape == Border_shape::FIXED &&
+                          bpos.size() == nb;
   if(non_convex) ec = OK;
   if(ec != OK) return finish(ec);
   for(const Point_2& p : bpos)
@@ -522,16 +665,27 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
   std::vector<std::size_t> border_nodes(nb);
   for(std::size_t k = 0; k < nb; ++k) border_nodes[k] = k;
   std::vector<Point_2> B(bpos);
-  ec = internal::partition_domain(B, targets, partition, popt);
+  // a border with turns is not simple: straight to the immersed disks below
+  ec = total_turns > 0 ? ERROR_NON_CONVEX_BORDER : internal::partition_domain(B, targets, partition, popt);
   // a fixed border that is not simple: a weakly self-overlapping polygon (Shor-Van Wyk) bounds an
   // immersed disk, cut into convex polygons along its triangulation; a target there could lie on
   // several sheets, so only the border may be prescribed
   bool immersed = false;
   std::vector<std::array<std::size_t, 3> > sheet_triangles;
-  auto partition_immersed = [&](const std::vector<Point_2>& border) -> Error_code
+  // the rotation indices of the border nodes
+  auto node_turns = [&]()
+  {
+    std::vector<int> t;
+    if(total_turns > 0) for(std::size_t k : border_nodes) t.push_back(border_turns[k]);
+    return t;
+  };
+  auto partition_immersed = [&](const std::vector<Point_2>& border, const std::vector<int>& turns) -> Error_code
   {
     sheet_triangles.clear();
-    const Error_code e = triangulate_self_overlapping_polygon_2(border, std::back_inserter(sheet_triangles));
+    const Error_code e = turns.empty()
+      ? triangulate_self_overlapping_polygon_2(border, std::back_inserter(sheet_triangles))
+      : triangulate_self_overlapping_polygon_2(border, std::back_inserter(sheet_triangles),
+                                               parameters::rotation_indices(turns).maximum_running_time(remaining()));
     if(e != OK) return e;
     partition = internal::Domain_partition();
     return internal::partition_immersed_domain(border, sheet_triangles, partition, popt);
@@ -540,7 +694,23 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
   {
     if(holes) return finish(ERROR_NOT_A_DISK); // an immersion with holes is not supported
     immersed = true;
-    ec = partition_immersed(B); // ERROR_NOT_SELF_OVERLAPPING first: it says what is wrong with the border
+    ec = partition_immersed(B, node_turns()); // ERROR_NOT_SELF_OVERLAPPING first: it says what is wrong with the border
+    // nodes: the vertices that turn by more than rounding (as the strict hull corners of a convex border
+    // below); the others stay on the sides between them, within rounding, like path vertices on their
+    // segments. Every vertex a node made sliver triangles of three nearly collinear border points (the
+    // dynamic program's triangulation keeps ears at vertices convex by 1e-16, which no merge removes).
+    std::vector<std::size_t> turning;
+    if(ec == OK) internal::turning_vertices(bpos, turning, border_turns);
+    if(turning.size() >= 3 && turning.size() < nb)
+    {
+      std::vector<Point_2> Bt;
+      for(std::size_t k : turning) Bt.push_back(bpos[k]);
+      const internal::Domain_partition every_vertex = partition;
+      const std::vector<std::size_t> every_node = border_nodes;
+      border_nodes = turning;
+      if(partition_immersed(Bt, node_turns()) == OK) B.swap(Bt);
+      else { partition = every_vertex; border_nodes = every_node; }
+    }
     if(ec == OK && !targets.empty()) return finish(ERROR_CONSTRAINT_OUTSIDE_DOMAIN);
   }
   if(ec == ERROR_NON_CONVEX_BORDER && shape != Border_shape::FIXED)
@@ -563,10 +733,13 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     for(Point_2& p : T) p = mirror(p);
     for(Point_2& p : Bfull) p = mirror(p);
     partition = internal::Domain_partition();
-    ec = immersed ? partition_immersed(B) : internal::partition_domain(B, T, partition, popt);
+    ec = immersed ? partition_immersed(B, node_turns()) : internal::partition_domain(B, T, partition, popt);
     if(ec != OK) return finish(ec);
     if(!partition.counterclockwise) return finish(ERROR_PATH_TRACING_FAILED); // cannot happen
   }
+  // a sliver polygon at the border (e.g. a border vertex that turns by less than rounding but is a
+  // node): no path fits in it; refused before tracing, with the border as the reason
+  if(immersed && !internal::path_corners_turn_by_margin(partition, B)) return finish(ERROR_DEGENERATE_BORDER);
   stats.paths = partition.edges.size();
   if(verbose)
     std::cerr << "[constrained_embedding] partition: " << partition.edges.size() << " interior edges, "
@@ -611,11 +784,14 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
   if(!(remaining() > 0)) return finish(ERROR_BUDGET_EXHAUSTED);
   if(!partition.edges.empty())
   {
-    // Two tracings at most. Shortest paths first: on most inputs they add few vertices. When they run
+    // Three tracings at most. Shortest paths first: on most inputs they add few vertices. When they run
     // out of their budget or add many vertices (nested partition edges squeezed into corridors, as
     // on space-filling-curve borders), the paths are traced again on a copy of the mesh as it was,
-    // guided by a drawing of the partition (guide_map.h), and the result with fewer Steiner vertices
-    // is kept. A budget given by the caller bounds both tracings.
+    // guided by a drawing of the partition (guide_map.h), with two guides and edge orders that help on
+    // different inputs (measured on Hilbert-curve borders, 26 runs: adding the second cut the Steiner
+    // vertices by 23%), and the result with the fewest Steiner vertices is kept. Each later tracing
+    // stops as soon as it would add as many as the best so far. A budget given by the caller bounds
+    // every tracing.
     const std::size_t unset = std::size_t(-1);
     const std::size_t user_max = choose_parameter(get_parameter(np, internal_np::maximum_steiner_vertices), unset);
     const std::size_t ne = static_cast<std::size_t>(num_edges(work));
@@ -627,30 +803,50 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     const std::size_t many = num_vertices(before_tracing) / 10 + 10;
     if((ec == ERROR_BUDGET_EXHAUSTED || (ec == OK && steiner.size() > many)) && remaining() > 0)
     {
-      Work first_work;
-      std::vector<std::vector<wvertex> > first_paths;
-      std::vector<internal::Steiner_vertex<Work> > first_steiner;
+      // the best result so far (kept in `best_*` while a guided tracing runs on `work`)
+      Work best_work;
+      std::vector<std::vector<wvertex> > best_paths;
+      std::vector<internal::Steiner_vertex<Work> > best_steiner;
       const Error_code first_ec = ec;
-      if(first_ec == OK) { first_work = std::move(work); first_paths.swap(paths); first_steiner.swap(steiner); }
-      work = before_tracing;
-      wvpm = get(CGAL::vertex_point, work); // the copy's own point array
-      paths.clear();
-      steiner.clear();
-      const std::size_t second_max = first_ec == OK ? first_steiner.size() - 1 : guided_max;
-      ec = internal::trace_paths(work, wvpm, nodes, partition.edges, partition.rotation, paths, steiner,
-                                 internal::guide_weight(1., parameters::maximum_steiner_vertices(second_max)
-                                                              .maximum_running_time(remaining())));
-      stats.guided_tracing = true;
-      if(ec == OK) stats.guided_tracing_kept = true;
-      else if(first_ec != OK) ec = first_ec; // both failed: the shortest paths' reason (the guided search may give up)
-      else
+      bool have_best = false;
+      auto keep_if_best = [&]()
+      {
+        if(ec != OK || (have_best && steiner.size() >= best_steiner.size())) return;
+        best_work = std::move(work); best_paths.swap(paths); best_steiner.swap(steiner);
+        have_best = true;
+      };
+      keep_if_best();
+      struct Guided_variant { double disk_factor; bool interior_first; };
+      const Guided_variant variants[] = { { 0., false }, { 1., true } };
+      for(const Guided_variant& g : variants)
+      {
+        if(!(remaining() > 0) || (have_best && best_steiner.empty())) break;
+        work = before_tracing;
+        wvpm = get(CGAL::vertex_point, work); // the copy's own point array
+        paths.clear();
+        steiner.clear();
+        const std::size_t max_g = have_best ? best_steiner.size() - 1 : guided_max;
+        ec = internal::trace_paths(work, wvpm, nodes, partition.edges, partition.rotation, paths, steiner,
+                                   internal::guide_weight(1., internal::guide_disk_factor(g.disk_factor,
+                                   internal::interior_edges_first(g.interior_first,
+                                   parameters::maximum_steiner_vertices(max_g).maximum_running_time(remaining())))));
+        stats.guided_tracing = true;
+        if(verbose)
+          std::cerr << "[constrained_embedding] guided tracing (" << (g.disk_factor > 0 ? "node disks" : "pinned nodes")
+                    << (g.interior_first ? ", interior edges first" : "") << "): " << get_error_message(ec) << ", "
+                    << steiner.size() << " Steiner vertices" << std::endl;
+        if(ec == OK && (!have_best || steiner.size() < best_steiner.size())) stats.guided_tracing_kept = true;
+        keep_if_best();
+      }
+      if(have_best)
       {
         ec = OK;
-        work = std::move(first_work);
+        work = std::move(best_work);
         wvpm = get(CGAL::vertex_point, work);
-        paths.swap(first_paths);
-        steiner.swap(first_steiner);
+        paths.swap(best_paths);
+        steiner.swap(best_steiner);
       }
+      else ec = first_ec; // every tracing failed: the shortest paths' reason (a guided search may give up)
     }
     stats.steiner_vertices = steiner.size();
     if(ec != OK)

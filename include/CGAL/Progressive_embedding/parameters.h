@@ -77,6 +77,9 @@ enum class Weights
   X(proximity_penalty) \
   X(steiner_points) \
   X(face_patch_map) \
+  X(polygon_report) \
+  X(rotation_indices) \
+  X(vertex_rotation_index_map) \
 
 namespace internal_np {
 #define CGAL_PE_ADD_NAMED_PARAMETER(NAME) enum NAME##_t { NAME };
@@ -185,6 +188,17 @@ template <typename T> unspecified_type steiner_points(const T& t);
 /// a face property map (integral values) that receives, for `constrained_embedding()`, the index of the patch of every
 /// face of the output mesh, and from which `IO::write_SVG()` colors the faces by patch and draws the patch borders
 template <typename T> unspecified_type face_patch_map(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// receives what `triangulate_self_overlapping_polygon_2()` found (a `Polygon_triangulation_report*`; default none)
+template <typename T> unspecified_type polygon_report(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// the rotation index of every polygon vertex for `triangulate_self_overlapping_polygon_2()`: full turns added to its
+/// angle (a `std::vector<int>`; default all 0)
+template <typename T> unspecified_type rotation_indices(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// the rotation index of every border vertex for `constrained_embedding()` onto a fixed border: full turns added to
+/// the border's angle there (a readable vertex property map with `int` values; default all 0)
+template <typename T> unspecified_type vertex_rotation_index_map(const T& t);
 /// \ingroup PkgProgressiveEmbeddingNamedParameters
 /// whether `check_embedding()` accepts a connected genus-0 mesh with several border cycles (`bool`, default `false`:
 /// such a mesh is refused with `ERROR_NOT_A_DISK`, as a mesh that is not a disk)

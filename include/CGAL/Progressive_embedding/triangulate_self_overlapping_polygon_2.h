@@ -13,11 +13,13 @@
 
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/Progressive_embedding_traits_2.h>
+#include <CGAL/Progressive_embedding/parameters.h>
 #include <CGAL/Progressive_embedding/internal/number_utils.h>
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/internal/self_overlapping/polygon_turns.h>
 #include <CGAL/Progressive_embedding/internal/self_overlapping/shor_van_wyk.h>
 #include <CGAL/Progressive_embedding/internal/self_overlapping/simple_polygon_cdt.h>
+#include <CGAL/Progressive_embedding/internal/self_overlapping/turn_cuts.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
@@ -57,6 +59,8 @@ struct Polygon_triangulation_report
   bool simple = false;
   /// `true` if the polygon is weakly self-overlapping (simple polygons included) and was triangulated
   bool self_overlapping = false;
+  /// sum of the rotation indices given (named parameter `rotation_indices`; 0 without them)
+  int turns = 0;
   /// `true` if the triangulation came from the dynamic program (the polygon is not simple)
   bool dynamic_program = false;
   /// dynamic program: chords that passed the exact sector and rotation tests
@@ -69,26 +73,6 @@ struct Polygon_triangulation_report
   double seconds = 0;
 };
 
-#ifndef DOXYGEN_RUNNING
-namespace internal_np {
-enum polygon_report_t { polygon_report };
-} // namespace internal_np
-#endif
-
-namespace parameters {
-/// \ingroup PkgProgressiveEmbeddingNamedParameters
-/// receives what `triangulate_self_overlapping_polygon_2()` found (a `Polygon_triangulation_report*`; default none)
-template <typename T>
-CGAL::Named_function_parameters<T, internal_np::polygon_report_t> polygon_report(const T& t)
-{ return CGAL::Named_function_parameters<T, internal_np::polygon_report_t>(t); }
-#ifndef DOXYGEN_RUNNING
-template <typename T, typename NP_T, typename NP_Tag, typename NP_Base>
-CGAL::Named_function_parameters<T, internal_np::polygon_report_t, CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base> >
-polygon_report(const T& t, const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& np)
-{ return CGAL::Named_function_parameters<T, internal_np::polygon_report_t,
-                                         CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base> >(t, np); }
-#endif
-} // namespace parameters
 
 /// \ingroup PkgProgressiveEmbeddingMainFunctions
 ///
@@ -120,6 +104,16 @@ polygon_report(const T& t, const CGAL::Named_function_parameters<NP_T, NP_Tag, N
 /// passes them, so O(n^3) time in the worst case; no recursion. Some polygons bound several different
 /// immersed disks: the triangulation is then one of them. Whatever the start vertex, the decision is the same.
 ///
+/// <b>Angles beyond a full turn.</b> The border of an immersed disk may wrap around one of its vertices more
+/// than once: the disk's angle there exceeds 2 pi (a border vertex of a seamless parametrization cut through
+/// a cone, for instance). The positions give each angle only modulo 2 pi, so such a polygon needs its
+/// *rotation indices*: `r[v]` full turns added to the angle at `v` (its angle in (0, 2 pi), counterclockwise
+/// from `v -> next` to `v -> prev`). With any index positive the polygon must be counterclockwise and its rotation number
+/// minus the sum of the indices must be 1; the disk is then found by cutting at a vertex with a positive index
+/// along every chord and lift in turn (complete; exponential in the number of such vertices in the worst case,
+/// bounded by `maximum_running_time`). Every triangle is still strictly positive, and the fan at `v` covers
+/// exactly its angle, so the fan of a vertex with index `r[v]` wraps `r[v]` more times around it.
+///
 /// Memory: O(n) words plus one 32-bit word per chord found valid by the dynamic program (at most
 /// n(n-1)/2 of them, so at most about 2 n^2 bytes, 4 n^2 with the vectors' growth; the report's
 /// `chords_stored`) and a byte per vertex; the simple path stores a triangulation of the n points.
@@ -145,6 +139,11 @@ polygon_report(const T& t, const CGAL::Named_function_parameters<NP_T, NP_Tag, N
 ///                           `ERROR_BUDGET_EXHAUSTED` when exceeded (checked at least every 2^20 elementary steps)}
 ///     \cgalParamType{`double` (a negative value or NaN gives `ERROR_WRONG_PARAMETER`)}
 ///     \cgalParamDefault{no limit}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{rotation_indices}
+///     \cgalParamDescription{the rotation index of every vertex, in the order of `points`: full turns added to its angle}
+///     \cgalParamType{`std::vector<int>`, of the size of `points`, every entry at least 0 (else `ERROR_WRONG_PARAMETER`)}
+///     \cgalParamDefault{all 0: every angle in (0, 2 pi)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{polygon_report}
 ///     \cgalParamDescription{receives the rotation number, orientation, simplicity, which path was taken and the
@@ -219,6 +218,34 @@ Error_code triangulate_self_overlapping_polygon_2(const PointRange& points, Tria
       rotation += crossing;
     }
     report.rotation_number = rotation;
+    const std::vector<int> no_turns;
+    const std::vector<int> turns = choose_parameter(get_parameter(np, internal_np::rotation_indices), no_turns);
+    if(!turns.empty())
+    {
+      if(turns.size() != n) return ERROR_WRONG_PARAMETER;
+      long long sum = 0;
+      for(int t : turns) { if(t < 0) return ERROR_WRONG_PARAMETER; sum += t; }
+      if(sum > 0)
+      {
+        report.turns = sum > (std::numeric_limits<int>::max)() ? (std::numeric_limits<int>::max)() : int(sum);
+        if(rotation - sum != 1) return ERROR_NOT_SELF_OVERLAPPING;
+        std::vector<std::size_t> idx(n);
+        for(std::size_t t = 0; t < n; ++t) idx[t] = t;
+        std::vector<std::array<std::size_t, 3> > T;
+        report.dynamic_program = true;
+        SO::Dp_statistics st;
+        SO::Turn_cuts<Point_2, Orientation_2> cuts(P, orient, timer, max_seconds);
+        const Error_code ec = cuts.solve(idx, turns, T, st);
+        report.chords_tested = st.chords_tested;
+        report.chords_stored = st.chords_valid;
+        report.triangles_tested = st.triangles_tested;
+        if(ec != OK) return ec;
+        if(T.size() != n - 2) return ERROR_NOT_SELF_OVERLAPPING; // cannot happen: each cut adds up
+        report.self_overlapping = true;
+        for(const std::array<std::size_t, 3>& t : T) *triangles++ = t;
+        return OK;
+      }
+    }
     if(rotation != 1 && rotation != -1) return ERROR_NOT_SELF_OVERLAPPING;
     report.clockwise = (rotation == -1);
 

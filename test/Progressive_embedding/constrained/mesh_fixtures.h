@@ -3,7 +3,8 @@
 // Author(s) : Progressive_embedding contributors
 
 // Test meshes shared by the constrained-map tests: a polar annulus, a grid with holes (a grid disk
-// when none is removed), holes cut around chosen vertices, far-apart vertices, and two counts.
+// when none is removed), holes cut around chosen vertices, far-apart vertices, two counts, and a fan whose
+// uv map wraps around a border vertex.
 // Templated on the mesh (any MutableFaceGraph: Surface_mesh, Polyhedron_3).
 
 #ifndef CGAL_PROGRESSIVE_EMBEDDING_TEST_CONSTRAINED_MESH_FIXTURES_H
@@ -15,6 +16,7 @@
 #include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iterator>
 #include <limits>
@@ -103,6 +105,46 @@ std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> far_apart_ver
     c.push_back(best);
   }
   return c;
+}
+
+// The triangle fan of pe_test::wrapped_fan_polygon(angle, steps) (polygon_fixtures.h: the center (0, 0), then the
+// points at angles t_k = angle k / steps on the spiral of radius 1 + t / 10), refined by `rings` rings: the
+// center, then on every spoke k the points i / rings of the way out (i = 1 .. rings); the faces (center, ring 1)
+// and two triangles per quad between rings. Returns the uv of the vertices in the order they were added (the
+// center first): the fan itself, a map that is locally injective and whose border winds `angle` around the center,
+// a border vertex. The 3D point is (u, v, t i / (5 rings)): lifted with the angle, so that the surface does not
+// overlap itself in 3D.
+template <class Mesh>
+std::vector<std::array<double, 2> > make_wrapped_fan_mesh(Mesh& m, double angle, std::size_t steps, std::size_t rings)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vd;
+  typedef Mesh_point_3<Mesh> P3;
+  auto vpm = get(CGAL::vertex_point, m);
+  std::vector<std::array<double, 2> > uv;
+  std::vector<vd> V;
+  V.push_back(add_vertex(m));
+  put(vpm, V.back(), P3(0, 0, 0));
+  uv.push_back(std::array<double, 2>{{ 0., 0. }});
+  for(std::size_t i = 1; i <= rings; ++i)
+    for(std::size_t k = 0; k <= steps; ++k)
+    {
+      const double t = angle * double(k) / double(steps), r = 1 + t / 10, f = double(i) / double(rings);
+      const double x = f * (r * std::cos(t)), y = f * (r * std::sin(t)); // the outer ring: the polygon's points exactly
+      V.push_back(add_vertex(m));
+      put(vpm, V.back(), P3(x, y, t * f / 5));
+      uv.push_back(std::array<double, 2>{{ x, y }});
+    }
+  auto id = [&](std::size_t i, std::size_t k) { return i == 0 ? V[0] : V[1 + (i - 1) * (steps + 1) + k]; };
+  for(std::size_t k = 0; k < steps; ++k)
+  {
+    CGAL::Euler::add_face(std::vector<vd>{ id(0, 0), id(1, k), id(1, k + 1) }, m);
+    for(std::size_t i = 1; i < rings; ++i)
+    {
+      CGAL::Euler::add_face(std::vector<vd>{ id(i, k), id(i + 1, k), id(i + 1, k + 1) }, m);
+      CGAL::Euler::add_face(std::vector<vd>{ id(i, k), id(i + 1, k + 1), id(i, k + 1) }, m);
+    }
+  }
+  return uv;
 }
 
 // by iteration (num_vertices of a Surface_mesh counts removed vertices)

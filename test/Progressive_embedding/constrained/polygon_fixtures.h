@@ -3,13 +3,16 @@
 // Author(s) : Progressive_embedding contributors
 
 // Target polygons shared by the constrained-map tests: the outline of a thickened Hilbert curve
-// (a space-filling-curve border, the paper's stress test), with or without its flat vertices.
+// (a space-filling-curve border, the paper's stress test), with or without its flat vertices; a polygon
+// that wraps around one of its vertices (an interior angle beyond 2 pi).
 
 #ifndef PE_TEST_CONSTRAINED_POLYGON_FIXTURES_H
 #define PE_TEST_CONSTRAINED_POLYGON_FIXTURES_H
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <cmath>
+#include <cstddef>
 #include <map>
 #include <utility>
 #include <vector>
@@ -75,6 +78,23 @@ inline std::vector<Epick::Point_2> hilbert_corners(int order)
   for(std::size_t k = 0, n = P.size(); k < n; ++k)
     if(CGAL::orientation(P[(k + n - 1) % n], P[k], P[(k + 1) % n]) != CGAL::COLLINEAR) Q.push_back(P[k]);
   return Q;
+}
+
+
+// A polygon whose border winds `angle` radians (beyond 2 pi) around its vertex 0 = (0, 0): vertex 0, then
+// the points at the angles t = angle k / steps (k = 0 .. steps) on the spiral of radius 1 + t / 10 (so
+// that consecutive turns do not meet), counterclockwise. Its angle at vertex 0 is `angle`: in (0, 2 pi)
+// that is angle - 2 pi r, with r = floor(angle / (2 pi)) the rotation index of vertex 0. The fan of the
+// triangles (0, k, k + 1) triangulates the immersed disk (each of them positive when angle / steps < pi).
+inline std::vector<Epick::Point_2> wrapped_fan_polygon(double angle, std::size_t steps)
+{
+  std::vector<Epick::Point_2> P(1, Epick::Point_2(0, 0));
+  for(std::size_t k = 0; k <= steps; ++k)
+  {
+    const double t = angle * double(k) / double(steps), r = 1 + t / 10;
+    P.push_back(Epick::Point_2(r * std::cos(t), r * std::sin(t)));
+  }
+  return P;
 }
 
 } // namespace pe_test

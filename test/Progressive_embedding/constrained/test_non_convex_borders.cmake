@@ -2,3 +2,5 @@
 pe_constrained_test(constrained_embedding_non_convex "constrained;matchmaker;immersion" 600)
 pe_constrained_test(constrained_embedding_immersion "constrained;immersion" 600)
 pe_constrained_test(constrained_embedding_hilbert "constrained;matchmaker;non_convex" 600)
+pe_constrained_test(constrained_embedding_wrapped_border "constrained;immersion" 600)
+pe_constrained_test(constrained_embedding_sliver_border "constrained;immersion" 600)

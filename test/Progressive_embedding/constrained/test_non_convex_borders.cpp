@@ -7,7 +7,10 @@
 // square (weakly self-overlapping) gives a certified immersion (a mushroom; 10x10 to 30x30 grids, whose
 // partition corners at paths must turn by a margin, see partition_corners_robust), and so does a spiral
 // strip winding twice; constraints on it,
-// and a polygon that bounds no immersed disk, give clear errors with the mesh and uv untouched.
+// and a polygon that bounds no immersed disk, give clear errors with the mesh and uv untouched. A border that
+// wraps around one of its vertices (a fan winding 1.25 and 2.25 turns) maps with its rotation indices
+// (border_rotation_indices, vertex_rotation_index_map); border points interpolated in double along the
+// slanted sides of a spiral strip, which turn by rounding only, still give a certified immersion.
 
 #include <CGAL/Progressive_embedding/constrained_embedding.h>
 #include <CGAL/Progressive_embedding/check_embedding.h>
@@ -16,6 +19,7 @@
 
 #include "registry.h"
 #include "polygon_fixtures.h"
+#include "mesh_fixtures.h"
 #include "../test_util.h"
 #include "../protocols.h"
 
@@ -24,6 +28,7 @@
 #include <array>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -78,8 +83,11 @@ bool border_on_polygon(const Mesh& m, UVM& uv, const std::vector<P2>& Q)
   return true;
 }
 
+// `max_energy`: a bound on the mean 3D energy of the certified map before optimization (sliver pieces of the
+// partition give certified maps with huge energies)
 template <class Mesh>
-int embed_on(const std::string& what, Mesh m, const std::vector<P2>& Q, const std::vector<P2>& targets, bool expect_immersion)
+int embed_on(const std::string& what, Mesh m, const std::vector<P2>& Q, const std::vector<P2>& targets, bool expect_immersion,
+             double max_energy = std::numeric_limits<double>::infinity())
 {
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor VD;
   auto uv = make_uv_map(m, P2());
@@ -101,6 +109,8 @@ int embed_on(const std::string& what, Mesh m, const std::vector<P2>& Q, const st
             << st.paths << ", patches " << st.patches << ", immersion " << st.immersion << ", seconds " << st.seconds_total
             << "; mean energy " << st.report_before_optimization.mean_energy_3d << " -> " << st.report.mean_energy_3d << std::endl;
   CHECK(ec == PE::OK, "constrained_embedding OK");
+  CHECK(st.report_before_optimization.mean_energy_3d < max_energy, "mean energy " << st.report_before_optimization.mean_energy_3d
+        << " before optimization, at most " << max_energy << " expected");
   for(std::size_t i = 0; i < border.size(); ++i) CHECK(get(uv, border[i]) == border_uv[i], "border bit-exact");
   for(const auto& c : C) CHECK(get(uv, c.first) == c.second, "constraint bit-exact");
   const PE::Immersion_report ir = PE::check_immersion(m, uv);
@@ -248,7 +258,181 @@ int hilbert_map(const std::string& what, Surface_mesh m, const std::vector<P2>& 
   return EXIT_SUCCESS;
 }
 
+// ---- borders that wrap around a vertex ---------------------------------------------------------
+
+typedef boost::graph_traits<Surface_mesh>::vertex_descriptor Sm_vertex;
+
+// the wrapped fan mesh (mesh_fixtures.h) with its uv map; the center (the wrapped border vertex) is the first vertex
+template <class UVM>
+void fill_uv(const Surface_mesh& m, UVM& uv, const std::vector<std::array<double, 2> >& uvs)
+{
+  std::size_t i = 0;
+  for(auto v : vertices(m)) { put(uv, v, P2(uvs[i][0], uvs[i][1])); ++i; }
+}
+
+// the sum of the face corners at v (double), counterclockwise
+template <class UVM>
+double corner_sum(const Surface_mesh& m, const UVM& uv, Sm_vertex v)
+{
+  double sum = 0;
+  for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m))
+  {
+    if(CGAL::is_border(h, m)) continue;
+    const P2 o = get(uv, v), a = get(uv, target(next(h, m), m)), b = get(uv, source(h, m));
+    const double ux = a.x() - o.x(), uy = a.y() - o.y(), wx = b.x() - o.x(), wy = b.y() - o.y();
+    sum += std::atan2(ux * wy - uy * wx, ux * wx + uy * wy);
+  }
+  return sum;
+}
+
+// constrained_embedding onto the border of a fan winding `angle` (r full turns beyond 2 pi) around its center:
+// the indices read by border_rotation_indices, errors without them or with a negative one (mesh and uv
+// untouched), then a certified immersion with the border bit-exact and the same angle at the center.
+int wrapped_border(double angle, std::size_t steps, std::size_t rings, int r)
+{
+  const std::string what = "fan of " + std::to_string(steps) + " steps, " + std::to_string(rings) + " rings, r = " + std::to_string(r);
+  Surface_mesh m;
+  const std::vector<std::array<double, 2> > uvs = pe_test::make_wrapped_fan_mesh(m, angle, steps, rings);
+  auto uv = make_uv_map(m, P2());
+  fill_uv(m, uv, uvs);
+  const Sm_vertex center = *vertices(m).begin();
+  CHECK(CGAL::is_border(center, m), what << ": the center is a border vertex");
+  std::size_t interior = 0;
+  for(auto v : vertices(m)) if(!CGAL::is_border(v, m)) ++interior;
+  CHECK(interior == (rings - 1) * (steps - 1), what << ": " << interior << " interior vertices");
+  const PE::Immersion_report in = PE::check_immersion(m, uv);
+  CHECK(in.is_immersion(), what << ": the input map is an immersion: " << in.summary());
+  CHECK(std::abs(corner_sum(m, uv, center) - angle) < 1e-9, what << ": the input's angle at the center");
+
+  auto turns = m.add_property_map<Sm_vertex, int>("v:test_turns", -7).first;
+  const int total = PE::border_rotation_indices(m, uv, turns);
+  CHECK(total == r && get(turns, center) == r, what << ": border_rotation_indices " << total << ", center " << get(turns, center));
+  for(auto v : vertices(m))
+    CHECK(get(turns, v) == (v == center ? r : CGAL::is_border(v, m) ? 0 : -7), what << ": index of vertex " << v);
+
+  std::vector<std::pair<Sm_vertex, P2> > border;
+  for(auto v : vertices(m)) if(CGAL::is_border(v, m)) border.emplace_back(v, get(uv, v));
+  const std::vector<std::pair<Sm_vertex, P2> > no_constraints;
+
+  // errors: mesh and uv untouched
+  auto expect = [&](PE::Error_code want, bool with_map, const char* why) -> int {
+    Surface_mesh c;
+    pe_test::make_wrapped_fan_mesh(c, angle, steps, rings);
+    auto cuv = make_uv_map(c, P2());
+    fill_uv(c, cuv, uvs);
+    auto ct = c.add_property_map<Sm_vertex, int>("v:test_turns", 0).first;
+    PE::border_rotation_indices(c, cuv, ct);
+    if(with_map) put(ct, *vertices(c).begin(), -1);
+    const std::size_t nv = c.number_of_vertices(), nf = c.number_of_faces();
+    const PE::Error_code ec = with_map ? PE::constrained_embedding(c, no_constraints, cuv, PE::parameters::vertex_rotation_index_map(ct))
+                                       : PE::constrained_embedding(c, no_constraints, cuv);
+    CHECK(ec == want, what << ", " << why << ": " << PE::get_error_name(ec));
+    CHECK(c.number_of_vertices() == nv && c.number_of_faces() == nf, what << ", " << why << ": mesh unchanged");
+    std::size_t i = 0;
+    for(auto v : vertices(c)) { CHECK(get(cuv, v) == P2(uvs[i][0], uvs[i][1]), what << ", " << why << ": uv unchanged"); ++i; }
+    return EXIT_SUCCESS;
+  };
+  RUN(expect(PE::ERROR_NOT_SELF_OVERLAPPING, false, "without the rotation indices"));
+  RUN(expect(PE::ERROR_WRONG_PARAMETER, true, "a negative index"));
+
+  PE::Constrained_embedding_statistics st;
+  const PE::Error_code ec = PE::constrained_embedding(m, no_constraints, uv,
+                              PE::parameters::vertex_rotation_index_map(turns).statistics(&st));
+  std::cout << what << ": " << PE::get_error_message(ec) << ", vertices " << st.input_vertices << " -> " << st.output_vertices
+            << ", Steiner " << st.steiner_vertices << ", paths " << st.paths << ", patches " << st.patches
+            << ", immersion " << st.immersion << ", optimized " << st.optimized << std::endl;
+  CHECK(ec == PE::OK, what << ": constrained_embedding " << PE::get_error_name(ec));
+  CHECK(st.immersion && st.immersion_report.is_immersion() && st.immersion_report.border_mismatches == 0
+        && st.immersion_report.flipped == 0 && st.immersion_report.degenerate == 0, what << ": certified immersion in the statistics");
+  for(const auto& b : border) CHECK(get(uv, b.first) == b.second, what << ": border bit-exact");
+  const PE::Immersion_report ir = PE::check_immersion(m, uv);
+  std::cout << "  " << ir.summary() << std::endl;
+  CHECK(ir.is_immersion() && ir.flipped == 0 && ir.degenerate == 0 && ir.winding_errors == 0, what << ": check_immersion on the caller's mesh");
+  CHECK(!PE::check_embedding(m, uv).is_valid(), what << ": a wrapped border is no embedding");
+  // the map wraps as the input did: the same angle at the center, the same indices read back
+  CHECK(std::abs(corner_sum(m, uv, center) - angle) < 1e-9, what << ": angle " << corner_sum(m, uv, center) << " at the center");
+  auto back = m.add_property_map<Sm_vertex, int>("v:test_turns_back", 0).first;
+  CHECK(PE::border_rotation_indices(m, uv, back) == r && get(back, center) == r, what << ": the indices read back");
+  CHECK(st.output_vertices == st.input_vertices + st.steiner_vertices && pe_test::count_vertices(m) == st.output_vertices,
+        what << ": vertices counted");
+  return EXIT_SUCCESS;
+}
+
+// Places the border of m on the polygon Q like border_on_polygon, and returns how many border vertices turn by
+// rounding only: not exactly collinear with their neighbours, but by a sine below 1e-12 (points interpolated in
+// double along a slanted side)
+template <class UVM>
+std::size_t rounding_turns(const Surface_mesh& m, const UVM& uv)
+{
+  PE::internal::Indexed_disk<Surface_mesh> disk;
+  if(PE::internal::make_indexed_disk(m, boost::graph_traits<Surface_mesh>::null_halfedge(), disk) != PE::OK) return 0;
+  const std::size_t nb = disk.border.size();
+  std::size_t count = 0;
+  for(std::size_t k = 0; k < nb; ++k)
+  {
+    const P2 a = get(uv, disk.vertices[disk.border[(k + nb - 1) % nb]]), b = get(uv, disk.vertices[disk.border[k]]),
+             c = get(uv, disk.vertices[disk.border[(k + 1) % nb]]);
+    const double ux = b.x() - a.x(), uy = b.y() - a.y(), vx = c.x() - b.x(), vy = c.y() - b.y();
+    const double sine = (ux * vy - uy * vx) / (std::sqrt(ux * ux + uy * uy) * std::sqrt(vx * vx + vy * vy));
+    if(CGAL::orientation(a, b, c) != CGAL::COLLINEAR && std::abs(sine) < 1e-12) ++count;
+  }
+  return count;
+}
+
 } // namespace
+
+PE_TEST_GROUP(constrained_embedding_wrapped_border)
+{
+  (void)data_dir;
+  const double pi = std::acos(-1.);
+  // an ordinary convex disk and a simple non-convex fan (1.5 pi at the center): no turns
+  {
+    Surface_mesh grid;
+    PE::internal::make_grid_disk(8, grid);
+    auto uv = make_uv_map(grid, P2());
+    for(auto v : vertices(grid)) put(uv, v, P2(grid.point(v).x(), grid.point(v).y()));
+    auto t = grid.add_property_map<Sm_vertex, int>("v:test_turns", -7).first;
+    CHECK(PE::border_rotation_indices(grid, uv, t) == 0, "a convex disk has no turns");
+    for(auto v : vertices(grid)) CHECK(get(t, v) == (CGAL::is_border(v, grid) ? 0 : -7), "index 0 on the border, interior untouched");
+    Surface_mesh fan;
+    const std::vector<std::array<double, 2> > uvs = pe_test::make_wrapped_fan_mesh(fan, 1.5 * pi, 8, 3);
+    auto fuv = make_uv_map(fan, P2());
+    fill_uv(fan, fuv, uvs);
+    auto ft = fan.add_property_map<Sm_vertex, int>("v:test_turns", -7).first;
+    CHECK(PE::border_rotation_indices(fan, fuv, ft) == 0 && get(ft, *vertices(fan).begin()) == 0, "a fan of 1.5 pi has no turns");
+  }
+  RUN(wrapped_border(2.5 * pi, 10, 4, 1));
+  RUN(wrapped_border(2.5 * pi, 20, 6, 1));
+  RUN(wrapped_border(4.5 * pi, 18, 4, 2));
+  return EXIT_SUCCESS;
+}
+
+// A spiral strip winding twice (slanted sides), the border vertices of a grid disk placed on it by arc length,
+// several per side, interpolated in double: they turn by about 1e-16 (not exactly collinear). Only the
+// vertices that turn by more than rounding may be nodes of the partition, else its pieces are slivers
+// thinner than an ulp: the map must still be a certified immersion with the border bit-exact.
+PE_TEST_GROUP(constrained_embedding_sliver_border)
+{
+  (void)data_dir;
+  const std::vector<P2> Q = spiral_twice();
+  for(std::size_t n : { 20, 30, 40 })
+  {
+    Surface_mesh grid;
+    PE::internal::make_grid_disk(n, grid);
+    {
+      Surface_mesh c = grid;
+      auto cuv = make_uv_map(c, P2());
+      CHECK(border_on_polygon(c, cuv, Q), "border placed");
+      const std::size_t slivers = rounding_turns(c, cuv);
+      std::cout << "grid " << n << "x" << n << ": " << slivers << " of " << 4 * (n - 1)
+                << " border vertices turn by rounding only (sine below 1e-12, not 0)" << std::endl;
+      CHECK(slivers >= 4, "border vertices that turn by rounding");
+    }
+    // (every border vertex a node: pieces thinner than an ulp, a certified map of mean energy about 1e29 for 20x20)
+    RUN(embed_on("grid " + std::to_string(n) + "x" + std::to_string(n) + " on a spiral strip winding twice", grid, Q, {}, true, 1e4));
+  }
+  return EXIT_SUCCESS;
+}
 
 PE_TEST_GROUP(constrained_embedding_hilbert)
 {

@@ -9,10 +9,13 @@
 // rational points: n - 2 strictly positive triangles, each polygon edge in one triangle (in the
 // polygon's direction), each diagonal in two (once each way), Euler characteristic 1, and around every
 // vertex a fan that turns monotonically from its next edge to its previous edge (local injectivity).
+// Polygons with rotation indices (angles beyond 2 pi): the fan of a vertex with index r wraps r more
+// times, certified by the sum of its corner angles (the polygon's angle there plus 2 pi r, within 1e-9).
 
 #include <CGAL/Progressive_embedding/triangulate_self_overlapping_polygon_2.h>
 
 #include "registry.h"
+#include "polygon_fixtures.h"
 #include "../test_util.h"
 
 #include <algorithm>
@@ -46,7 +49,10 @@ bool angle_less(const Kq::Point_2& v, const Kq::Point_2& a0, const Kq::Point_2& 
 
 // The independent certificate, silent: an empty string when `T` triangulates an immersed disk bounded by
 // the polygon `Q`, else why not. `ccw`: the polygon's orientation (its edges appear in triangles in this direction).
-std::string immersion_failure(const std::vector<Kq::Point_2>& Q, const std::vector<Tri>& T, bool ccw)
+// `turns`: rotation indices (empty: all 0); the fan of a vertex with a positive index wraps around it, its
+// angles are certified by angle_sum_failure below instead of the monotonic walk.
+std::string immersion_failure(const std::vector<Kq::Point_2>& Q, const std::vector<Tri>& T, bool ccw,
+                              const std::vector<int>& turns = std::vector<int>())
 {
   const std::size_t n = Q.size();
   std::ostringstream why;
@@ -97,7 +103,7 @@ std::string immersion_failure(const std::vector<Kq::Point_2>& Q, const std::vect
       if(fan[k].count(a) != 1 || ++steps > n) { why << "the fan of vertex " << k << " is broken"; return why.str(); }
       const std::size_t b = fan[k][a];
       // (a == first has angle 0: b must not leave along the first edge)
-      if(!angle_less(Q[k], Q[first], Q[a], Q[b])) { why << "the fan of vertex " << k << " does not turn monotonically"; return why.str(); }
+      if((turns.empty() || turns[k] == 0) && !angle_less(Q[k], Q[first], Q[a], Q[b])) { why << "the fan of vertex " << k << " does not turn monotonically"; return why.str(); }
       a = b;
     }
   }
@@ -112,6 +118,49 @@ int certify(const std::vector<P>& pts, const std::vector<Tri>& T, bool ccw, cons
   const std::string why = immersion_failure(Q, T, ccw);
   CHECK(why.empty(), what << ": " << why);
   return EXIT_SUCCESS;
+}
+
+// The angle of the polygon at every vertex k (in (0, 2 pi), counterclockwise from k -> next to k -> prev,
+// plus 2 pi turns[k]) against the sum of the corners of the triangles at k, in double: an empty string
+// when they agree within `tol` everywhere. With positive triangles whose fans are connected (checked by
+// immersion_failure) this is local injectivity at every vertex, wrapped ones included.
+const double two_pi = 2 * 3.14159265358979323846;
+
+// counterclockwise angle from o -> a to o -> b, in (-pi, pi] (double)
+double corner_angle(const std::vector<Kq::Point_2>& Q, std::size_t o, std::size_t a, std::size_t b)
+{
+  const double ux = CGAL::to_double(Q[a].x() - Q[o].x()), uy = CGAL::to_double(Q[a].y() - Q[o].y());
+  const double vx = CGAL::to_double(Q[b].x() - Q[o].x()), vy = CGAL::to_double(Q[b].y() - Q[o].y());
+  return std::atan2(ux * vy - uy * vx, ux * vx + uy * vy);
+}
+// the polygon's angle at k in (0, 2 pi], without turns
+double base_angle(const std::vector<Kq::Point_2>& Q, std::size_t k)
+{
+  const std::size_t n = Q.size();
+  const double a = corner_angle(Q, k, (k + 1) % n, (k + n - 1) % n);
+  return a <= 0 ? a + two_pi : a;
+}
+// the sum of the triangles' corners at every vertex
+std::vector<double> corner_sums(const std::vector<Kq::Point_2>& Q, const std::vector<Tri>& T)
+{
+  std::vector<double> sum(Q.size(), 0.);
+  for(const Tri& t : T)
+    for(int c = 0; c < 3; ++c) sum[t[c]] += corner_angle(Q, t[c], t[(c + 1) % 3], t[(c + 2) % 3]);
+  return sum;
+}
+
+std::string angle_sum_failure(const std::vector<Kq::Point_2>& Q, const std::vector<Tri>& T, const std::vector<int>& turns, double tol)
+{
+  const std::size_t n = Q.size();
+  const std::vector<double> sum = corner_sums(Q, T);
+  std::ostringstream why;
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const double want = base_angle(Q, k) + two_pi * (turns.empty() ? 0 : turns[k]);
+    if(!(std::abs(sum[k] - want) <= tol))
+    { why << "vertex " << k << ": corners sum to " << sum[k] << ", the polygon's angle is " << want; return why.str(); }
+  }
+  return std::string();
 }
 
 // every triangulation of the n-gon (small n), as index triples (i, k, j), i < k < j
@@ -298,7 +347,178 @@ std::vector<Epick::Point_2> square_spiral_strip(int L, int segments, int pitch, 
   return P;
 }
 
+// ---- rotation indices ------------------------------------------------------------------------
+
+template <class P>
+std::vector<Kq::Point_2> to_q(const std::vector<P>& pts)
+{
+  std::vector<Kq::Point_2> Q;
+  for(const P& p : pts) Q.push_back(qp(p));
+  return Q;
+}
+
+// The function with rotation indices `r`: OK, the report's counts, n - 2 triangles certified (exact
+// orientation and gluing, angle sums at every vertex within 1e-9)
+template <class P>
+int run_turns(const std::vector<P>& pts, const std::vector<int>& r, const std::string& what, std::vector<Tri>* out = nullptr)
+{
+  std::vector<Tri> T;
+  PE::Polygon_triangulation_report rep;
+  const PE::Error_code ec = PE::triangulate_self_overlapping_polygon_2(pts, std::back_inserter(T),
+                              PE::parameters::rotation_indices(r).polygon_report(&rep));
+  CHECK(ec == PE::OK, what << ": " << PE::get_error_name(ec));
+  int sum = 0;
+  for(int t : r) sum += t;
+  CHECK(rep.self_overlapping && !rep.clockwise && rep.turns == sum && rep.rotation_number == sum + 1 && rep.vertices == pts.size(),
+        what << ": report turns " << rep.turns << ", rotation number " << rep.rotation_number);
+  CHECK(T.size() + 2 == pts.size(), what << ": " << T.size() << " triangles for " << pts.size() << " vertices");
+  const std::vector<Kq::Point_2> Q = to_q(pts);
+  std::string why = immersion_failure(Q, T, true, r);
+  CHECK(why.empty(), what << ": " << why);
+  why = angle_sum_failure(Q, T, r, 1e-9);
+  CHECK(why.empty(), what << ": " << why);
+  if(out) *out = T;
+  return EXIT_SUCCESS;
+}
+
+// the rotation indices read from a triangulation: (corner sum - polygon angle) / 2 pi, rounded
+std::vector<int> turns_of(const std::vector<Kq::Point_2>& Q, const std::vector<Tri>& T)
+{
+  const std::vector<double> sum = corner_sums(Q, T);
+  std::vector<int> r(Q.size());
+  for(std::size_t k = 0; k < Q.size(); ++k) r[k] = int(std::floor((sum[k] - base_angle(Q, k)) / two_pi + 0.5));
+  return r;
+}
+
+// Two wrapped fans glued along an edge: fan A around a = (0, 0) (wrapped_fan_polygon, 2.5 pi, m steps: a, then
+// A_0 .. A_m) and fan B around c = A_m, winding 2.5 pi too, whose last spoke goes back to a, so that B's last
+// triangle (c, B_{m-1}, a) and A's last triangle (a, A_{m-1}, c) share the edge a c. The polygon is a, A_0 .. A_m,
+// B_0 .. B_{m-1} (2 m + 2 vertices); `T` receives the two fans (2 m triangles). Both a and c wrap once.
+std::vector<Epick::Point_2> glued_fans(std::size_t m, std::vector<Tri>& T)
+{
+  std::vector<Epick::Point_2> P = pe_test::wrapped_fan_polygon(2.5 * 3.14159265358979323846, m);
+  const std::size_t c = m + 1;
+  T.clear();
+  for(std::size_t k = 1; k <= m; ++k) T.push_back(Tri{{ 0, k, k + 1 }});
+  const double end = std::atan2(-P[c].y(), -P[c].x()); // the direction from c to a
+  for(std::size_t j = 0; j < m; ++j)
+  {
+    const double phi = end - 2.5 * 3.14159265358979323846 * double(m - j) / double(m), rho = 0.6 + 0.05 * double(j);
+    P.push_back(Epick::Point_2(P[c].x() + rho * std::cos(phi), P[c].y() + rho * std::sin(phi)));
+  }
+  for(std::size_t j = 0; j < m; ++j) T.push_back(Tri{{ c, c + 1 + j, j + 1 < m ? c + 2 + j : 0 }});
+  return P;
+}
+
 } // namespace
+
+// Polygons whose angle exceeds 2 pi at some vertices (named parameter rotation_indices): a border winding
+// 1.25 and 2.25 turns around its vertex 0, at every start vertex, two wrapped vertices, exact rationals, errors.
+PE_TEST_GROUP(self_overlapping_rotation_indices)
+{
+  (void)data_dir;
+  const double pi = 3.14159265358979323846;
+  // 1.25 turns around vertex 0: angle 2.5 pi there, rotation number 2, r[0] = 1
+  const std::vector<Epick::Point_2> fan = pe_test::wrapped_fan_polygon(2.5 * pi, 10);
+  const std::size_t n = fan.size();
+  CHECK(n == 12, "12 vertices");
+  std::vector<int> r(n, 0);
+  r[0] = 1;
+  {
+    // the construction's own fan is the immersed disk these indices describe
+    std::vector<Tri> F;
+    for(std::size_t k = 1; k + 1 < n; ++k) F.push_back(Tri{{ 0, k, k + 1 }});
+    CHECK(turns_of(to_q(fan), F) == r, "the fan's corner sums give r[0] = 1 and 0 elsewhere");
+    CHECK(immersion_failure(to_q(fan), F, true, r).empty() && angle_sum_failure(to_q(fan), F, r, 1e-9).empty(), "the fan certified");
+    // the certificate is not vacuous: without the indices the wrapped fan is refused at vertex 0
+    CHECK(!angle_sum_failure(to_q(fan), F, std::vector<int>(), 1e-9).empty(), "the angle sums see the wrap");
+  }
+  std::vector<Tri> Td;
+  RUN(run_turns(fan, r, "1.25 turns", &Td));
+  CHECK(std::abs(corner_sums(to_q(fan), Td)[0] - 2.5 * pi) < 1e-9, "angle 2.5 pi at vertex 0: " << corner_sums(to_q(fan), Td)[0]);
+  for(std::size_t s = 0; s < n; ++s)
+    RUN(run_turns(rotated(fan, s), rotated(r, s), "1.25 turns, start " + std::to_string(s)));
+
+  // 2.25 turns: angle 4.5 pi, r[0] = 2, rotation number 3
+  const std::vector<Epick::Point_2> fan2 = pe_test::wrapped_fan_polygon(4.5 * pi, 18);
+  std::vector<int> r2(fan2.size(), 0);
+  r2[0] = 2;
+  std::vector<Tri> T2;
+  RUN(run_turns(fan2, r2, "2.25 turns", &T2));
+  CHECK(std::abs(corner_sums(to_q(fan2), T2)[0] - 4.5 * pi) < 1e-9, "angle 4.5 pi at vertex 0: " << corner_sums(to_q(fan2), T2)[0]);
+  for(std::size_t s = 0; s < fan2.size(); ++s)
+    RUN(run_turns(rotated(fan2, s), rotated(r2, s), "2.25 turns, start " + std::to_string(s)));
+
+  // two wrapped vertices: the glued fans, indices read from the construction
+  std::vector<Tri> G;
+  const std::vector<Epick::Point_2> glued = glued_fans(8, G);
+  const std::vector<int> rg = turns_of(to_q(glued), G);
+  std::vector<int> rg_want(glued.size(), 0);
+  rg_want[0] = 1; rg_want[9] = 1;
+  CHECK(rg == rg_want, "the glued fans wrap once around vertices 0 and 9 only");
+  CHECK(immersion_failure(to_q(glued), G, true, rg).empty() && angle_sum_failure(to_q(glued), G, rg, 1e-9).empty(),
+        "the glued fans certified");
+  std::vector<Tri> TG;
+  RUN(run_turns(glued, rg, "two wrapped vertices", &TG));
+  const std::vector<double> gs = corner_sums(to_q(glued), TG), gs_want = corner_sums(to_q(glued), G);
+  CHECK(std::abs(gs[0] - gs_want[0]) < 1e-9 && std::abs(gs[9] - gs_want[9]) < 1e-9 && gs[0] > 2 * pi && gs[9] > 2 * pi,
+        "angles " << gs[0] << " and " << gs[9] << " at the wrapped vertices");
+  for(std::size_t s = 0; s < glued.size(); s += 3)
+    RUN(run_turns(rotated(glued, s), rotated(rg, s), "two wrapped vertices, start " + std::to_string(s)));
+
+  // exact rationals: the same decisions, the same triangles
+  std::vector<Kq::Point_2> fanq = to_q(fan);
+  std::vector<Tri> Tq;
+  RUN(run_turns(fanq, r, "1.25 turns, Gmpq", &Tq));
+  CHECK(Tq == Td, "double and Gmpq triangulations differ");
+
+  // errors, the output untouched
+  const std::vector<Tri> sentinel(1, Tri{{ 7, 7, 7 }});
+  auto expect = [&](const std::vector<Epick::Point_2>& P, const std::vector<int>* turns, PE::Error_code want, const std::string& what) {
+    std::vector<Tri> T = sentinel;
+    PE::Polygon_triangulation_report rep;
+    const PE::Error_code ec = turns
+      ? PE::triangulate_self_overlapping_polygon_2(P, std::back_inserter(T), PE::parameters::rotation_indices(*turns).polygon_report(&rep))
+      : PE::triangulate_self_overlapping_polygon_2(P, std::back_inserter(T), PE::parameters::polygon_report(&rep));
+    CHECK(ec == want, what << ": " << PE::get_error_name(ec) << " (" << int(ec) << ")");
+    CHECK(T == sentinel, what << ": the output was touched");
+    CHECK(!rep.self_overlapping, what << ": reported self-overlapping");
+    return EXIT_SUCCESS;
+  };
+  RUN(expect(fan, nullptr, PE::ERROR_NOT_SELF_OVERLAPPING, "1.25 turns without indices"));
+  const std::vector<int> zeros(n, 0);
+  RUN(expect(fan, &zeros, PE::ERROR_NOT_SELF_OVERLAPPING, "1.25 turns with all indices 0"));
+  RUN(expect(glued, nullptr, PE::ERROR_NOT_SELF_OVERLAPPING, "two wrapped vertices without indices"));
+  std::vector<int> one_of_two = rg; one_of_two[9] = 0;
+  RUN(expect(glued, &one_of_two, PE::ERROR_NOT_SELF_OVERLAPPING, "two wrapped vertices, one index only"));
+  const std::vector<int> short_r(n - 1, 0), long_r(n + 1, 0);
+  RUN(expect(fan, &short_r, PE::ERROR_WRONG_PARAMETER, "one index too few"));
+  RUN(expect(fan, &long_r, PE::ERROR_WRONG_PARAMETER, "one index too many"));
+  std::vector<int> negative = r; negative[3] = -1;
+  RUN(expect(fan, &negative, PE::ERROR_WRONG_PARAMETER, "a negative index"));
+  std::vector<int> too_many = r; too_many[0] = 2; // rotation number 2 minus 2 turns: 0
+  RUN(expect(fan, &too_many, PE::ERROR_NOT_SELF_OVERLAPPING, "indices summing to the rotation number"));
+  std::vector<int> too_few = r2; too_few[0] = 1; // rotation number 3 minus 1 turn: 2
+  RUN(expect(fan2, &too_few, PE::ERROR_NOT_SELF_OVERLAPPING, "2.25 turns with one index"));
+  std::vector<int> misplaced(n, 0); misplaced[5] = 1; // the sum adds up, but vertex 5 is not wrapped
+  RUN(expect(fan, &misplaced, PE::ERROR_NOT_SELF_OVERLAPPING, "the index on another vertex"));
+  // counterclockwise only: the clockwise fan (rotation number -2) with the index
+  const std::vector<Epick::Point_2> cw(fan.rbegin(), fan.rend());
+  std::vector<int> rcw(r.rbegin(), r.rend());
+  RUN(expect(cw, &rcw, PE::ERROR_NOT_SELF_OVERLAPPING, "clockwise with an index"));
+  // a simple polygon with an index: rotation number 1 minus 1 turn
+  const std::vector<Epick::Point_2> sq = { Epick::Point_2(0, 0), Epick::Point_2(1, 0), Epick::Point_2(1, 1), Epick::Point_2(0, 1) };
+  const std::vector<int> rsq = { 1, 0, 0, 0 };
+  RUN(expect(sq, &rsq, PE::ERROR_NOT_SELF_OVERLAPPING, "a square with an index"));
+  // all-zero indices leave a simple polygon as it was
+  const std::vector<int> zsq(4, 0);
+  std::vector<Tri> Tsq;
+  CHECK(PE::triangulate_self_overlapping_polygon_2(sq, std::back_inserter(Tsq), PE::parameters::rotation_indices(zsq)) == PE::OK
+        && Tsq.size() == 2, "a square with zero indices");
+  RUN(certify(sq, Tsq, true, "a square with zero indices"));
+  std::cout << "wrapped fans (1.25 and 2.25 turns, every start vertex), two wrapped vertices, Gmpq: certified; 12 errors as expected" << std::endl;
+  return EXIT_SUCCESS;
+}
 
 PE_TEST_GROUP(self_overlapping_simple)
 {

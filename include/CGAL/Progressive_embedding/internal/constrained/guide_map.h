@@ -20,7 +20,17 @@
 // constraints are in a different order on the surface than in the target; the tracing still decides
 // the topology (sectors, free vertices) and the certificate decides validity.
 //
-//   bool compute_guide_map(tm, vpm, vertex_id, n_ids, nodes, partition_edges, node_guide, vertex_guide, vertex_scale)
+// Pinning one interior node vertex far from where the mesh's own harmonic map puts it stretches its
+// neighbourhood into a spike: the partition edges that must pass around the node then squeeze along the
+// spike, and every one of them needs splits. With a disk factor f > 0, each interior node instead carries
+// a disk of the mesh's border-only harmonic map (radius f times the node's displacement, bounded so that
+// the disks stay apart and inside the circle) rigidly to its position: the region around the node keeps
+// its vertices, the stretch spreads over the rest of the mesh. Neither guide is better on every input
+// (the disks help most where a constraint lies near the mesh border and far from its polygon), so the
+// caller may trace with both.
+//
+//   bool compute_guide_map(tm, vpm, vertex_id, n_ids, nodes, partition_edges, node_guide, vertex_guide, vertex_scale,
+//                          disk_factor = 0)
 //       tm: a triangulated disk (one border cycle); vertex_id(v) in [0, n_ids); nodes: mesh vertex per
 //       node; partition_edges: the partition's interior edges (node pairs). Out: node_guide[i], vertex_guide[id], and
 //       vertex_scale[id] (mean guide length of the vertex's edges: the local unit of distance).
@@ -45,10 +55,14 @@ namespace Progressive_embedding {
 #ifndef DOXYGEN_RUNNING
 namespace internal_np {
 enum guide_weight_t { guide_weight };
+enum guide_disk_factor_t { guide_disk_factor };
+enum interior_edges_first_t { interior_edges_first };
 } // namespace internal_np
 #endif
 
 namespace internal {
+
+typedef std::array<double, 2> Guide_point;
 
 // appends the (internal) named parameter guide_weight, read by trace_paths(): the cost, in mean edge
 // costs, of one local unit of guide distance between a path vertex and its partition edge's segment
@@ -58,7 +72,20 @@ CGAL::Named_function_parameters<double, internal_np::guide_weight_t, NP> guide_w
   return CGAL::Named_function_parameters<double, internal_np::guide_weight_t, NP>(w, np);
 }
 
-typedef std::array<double, 2> Guide_point;
+// appends the (internal) named parameter interior_edges_first, read by trace_paths()
+template <class NP>
+CGAL::Named_function_parameters<bool, internal_np::interior_edges_first_t, NP> interior_edges_first(bool b, const NP& np)
+{
+  return CGAL::Named_function_parameters<bool, internal_np::interior_edges_first_t, NP>(b, np);
+}
+
+// appends the (internal) named parameter guide_disk_factor, read by trace_paths(): compute_guide_map()'s
+// disk_factor (0: only the node vertices are pinned)
+template <class NP>
+CGAL::Named_function_parameters<double, internal_np::guide_disk_factor_t, NP> guide_disk_factor(double f, const NP& np)
+{
+  return CGAL::Named_function_parameters<double, internal_np::guide_disk_factor_t, NP>(f, np);
+}
 
 // distance from p to the segment [a, b]
 inline double guide_segment_distance(const Guide_point& p, const Guide_point& a, const Guide_point& b)
@@ -110,12 +137,67 @@ inline bool solve_barycentric(const std::vector<std::vector<std::size_t> >& adja
   return true;
 }
 
+// the local unit of guide distance at each vertex: the mean guide length of its edges
+inline void guide_scales(const std::vector<std::vector<std::size_t> >& adjacency, const std::vector<Guide_point>& guide,
+                         std::vector<double>& scale)
+{
+  scale.assign(guide.size(), 0.);
+  for(std::size_t i = 0; i < guide.size(); ++i)
+  {
+    double s = 0;
+    for(std::size_t j : adjacency[i]) s += std::hypot(guide[i][0] - guide[j][0], guide[i][1] - guide[j][1]);
+    scale[i] = adjacency[i].empty() ? 1. : s / double(adjacency[i].size());
+    if(!(scale[i] > 0)) scale[i] = 1e-12;
+  }
+}
+
+// The disks of compute_guide_map(): in the harmonic map with only `fixed` vertices pinned, the vertices
+// within the disk of each interior node (nfixed[i] == 0) are pinned (fixed[] = 1, guide[] set), translated by the
+// node's displacement to node_guide[i]. Radius: factor times the displacement, at most 0.9 times the distance of
+// either center to the circle and 0.45 times the distance to any other node (before and after), so that
+// the disks stay inside the circle and apart.
+template <class VertexId, class Vertex>
+bool pin_node_disks(const std::vector<std::vector<std::size_t> >& adjacency, std::vector<char>& fixed, VertexId vertex_id,
+                    const std::vector<Vertex>& nodes, const std::vector<char>& nfixed,
+                    const std::vector<Guide_point>& node_guide, double factor, std::vector<Guide_point>& guide)
+{
+  std::vector<Guide_point> natural = guide;
+  if(!solve_barycentric(adjacency, fixed, natural)) return false;
+  auto dist = [](const Guide_point& p, const Guide_point& q) { return std::hypot(p[0] - q[0], p[1] - q[1]); };
+  auto norm = [](const Guide_point& p) { return std::hypot(p[0], p[1]); };
+  std::vector<std::size_t> inner;
+  for(std::size_t i = 0; i < nodes.size(); ++i) if(!nfixed[i]) inner.push_back(i);
+  std::vector<Guide_point> from(inner.size()), to(inner.size());
+  for(std::size_t k = 0; k < inner.size(); ++k) { from[k] = natural[vertex_id(nodes[inner[k]])]; to[k] = node_guide[inner[k]]; }
+  std::vector<double> radius(inner.size());
+  for(std::size_t k = 0; k < inner.size(); ++k)
+  {
+    double r = (std::min)(factor * dist(from[k], to[k]), 0.9 * (std::min)(1. - norm(from[k]), 1. - norm(to[k])));
+    for(std::size_t l = 0; l < inner.size(); ++l)
+      if(l != k) r = (std::min)(r, 0.45 * (std::min)(dist(from[k], from[l]), dist(to[k], to[l])));
+    radius[k] = r;
+  }
+  // every vertex against every disk: O(vertices x interior nodes), small next to the tracing
+  for(std::size_t v = 0; v < fixed.size(); ++v)
+  {
+    if(fixed[v]) continue;
+    for(std::size_t k = 0; k < inner.size(); ++k)
+      if(dist(natural[v], from[k]) < radius[k])
+      {
+        guide[v] = { { natural[v][0] + to[k][0] - from[k][0], natural[v][1] + to[k][1] - from[k][1] } };
+        fixed[v] = 1;
+        break;
+      }
+  }
+  return true;
+}
+
 template <class TM, class VPM, class VertexId>
 bool compute_guide_map(const TM& tm, VPM vpm, VertexId vertex_id, std::size_t n_ids,
                        const std::vector<typename boost::graph_traits<TM>::vertex_descriptor>& nodes,
                        const std::vector<std::array<std::size_t, 2> >& partition_edges,
                        std::vector<Guide_point>& node_guide, std::vector<Guide_point>& vertex_guide,
-                       std::vector<double>& vertex_scale)
+                       std::vector<double>& vertex_scale, double disk_factor = 0.)
 {
   typedef typename boost::graph_traits<TM>::halfedge_descriptor halfedge_descriptor;
   // the one border cycle, walked with the interior on the left (border halfedges backwards)
@@ -166,24 +248,20 @@ bool compute_guide_map(const TM& tm, VPM vpm, VertexId vertex_id, std::size_t n_
   if(!solve_barycentric(nadj, nfixed, node_guide)) return false;
   // the mesh's harmonic map with the nodes pinned (measured on Hilbert-curve borders: fewer Steiner
   // vertices than leaving the nodes where the mesh's own Tutte map puts them)
-  for(std::size_t i = 0; i < N; ++i) { const std::size_t id = vertex_id(nodes[i]); vertex_guide[id] = node_guide[i]; vfixed[id] = 1; }
   std::vector<std::vector<std::size_t> > vadj(n_ids);
   for(auto e : edges(tm))
   {
     const std::size_t a = vertex_id(source(halfedge(e, tm), tm)), b = vertex_id(target(halfedge(e, tm), tm));
     vadj[a].push_back(b); vadj[b].push_back(a);
   }
+  if(disk_factor > 0 && !pin_node_disks(vadj, vfixed, vertex_id, nodes, nfixed, node_guide, disk_factor, vertex_guide))
+    return false;
+  for(std::size_t i = 0; i < N; ++i) { const std::size_t id = vertex_id(nodes[i]); vertex_guide[id] = node_guide[i]; vfixed[id] = 1; }
   if(!solve_barycentric(vadj, vfixed, vertex_guide)) return false;
-  vertex_scale.assign(n_ids, 0.);
-  for(std::size_t i = 0; i < n_ids; ++i)
-  {
-    double s = 0;
-    for(std::size_t j : vadj[i]) s += std::hypot(vertex_guide[i][0] - vertex_guide[j][0], vertex_guide[i][1] - vertex_guide[j][1]);
-    vertex_scale[i] = vadj[i].empty() ? 1. : s / double(vadj[i].size());
-    if(!(vertex_scale[i] > 0)) vertex_scale[i] = 1e-12;
-  }
+  guide_scales(vadj, vertex_guide, vertex_scale);
   return true;
 }
+
 
 } // namespace internal
 } // namespace Progressive_embedding

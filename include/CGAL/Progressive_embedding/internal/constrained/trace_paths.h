@@ -44,7 +44,9 @@
 //                 shortest paths), guide_weight (double, same unit, default 0: off; guide_map.h: each
 //                 vertex of a path costs this much per local unit of guide distance to the straight
 //                 segment of its partition edge, so that the paths spread as the partition's edges do;
-//                 on a mesh with several border cycles the guide is not computed and this is ignored).
+//                 on a mesh with several border cycles the guide is not computed and this is ignored),
+//                 guide_disk_factor (double, default 0: compute_guide_map()'s disk factor),
+//                 interior_edges_first (bool, default false: the order of the edges outside the tree, below).
 //                 A negative or non-finite value gives ERROR_WRONG_PARAMETER.
 //     Preconditions checked (ERROR_* and the mesh unchanged): triangle mesh (ERROR_NON_TRIANGULAR_MESH,
 //     ERROR_EMPTY_MESH); connected, no isolated vertex, at least one border cycle, Euler characteristic
@@ -77,7 +79,10 @@
 // between nodes; reaching a node of another border cycle connects that whole cycle) and its edges
 // are traced first: each joins the network to an isolated node or cycle, and the surface minus the
 // border cycles and a tree joining them is one region, so no tree path can block a later one. Then the other edges, longest
-// first (by 3D distance between their nodes): each closes a cycle and must run in the face of the traced network that contains the
+// first (by 3D distance between their nodes; with interior_edges_first, those with an interior node before
+// those between two border nodes: an interior node's last edges, traced late, must wind into a sector
+// already walled in by the border-to-border paths, and on space-filling-curve borders they took the most
+// splits): each closes a cycle and must run in the face of the traced network that contains the
 // right sector at both ends. A path is a shortest path (Dijkstra; 3D length or hop count) that starts
 // in the sector of its first node between the already traced paths there (in rotation order), goes
 // through free vertices only (interior, no node, on no path), and ends in the right sector of its
@@ -984,9 +989,12 @@ Error_code trace_paths(TriangleMesh& tm, VertexPointMap vpm,
   const double penalty_units = choose_parameter(get_parameter(np, internal_np::split_penalty), 4.);
   const double proximity_units = choose_parameter(get_parameter(np, internal_np::proximity_penalty), 1.);
   const double guide_units = choose_parameter(get_parameter(np, internal_np::guide_weight), 0.);
+  const double disk_factor = choose_parameter(get_parameter(np, internal_np::guide_disk_factor), 0.);
+  const bool interior_first = choose_parameter(get_parameter(np, internal_np::interior_edges_first), false);
   if(!(max_seconds >= 0) || !(penalty_units >= 0) || !std::isfinite(penalty_units) ||
      !(proximity_units >= 0) || !std::isfinite(proximity_units) ||
-     !(guide_units >= 0) || !std::isfinite(guide_units)) return ERROR_WRONG_PARAMETER;
+     !(guide_units >= 0) || !std::isfinite(guide_units) ||
+     !(disk_factor >= 0) || !std::isfinite(disk_factor)) return ERROR_WRONG_PARAMETER;
   CGAL::Real_timer timer;
   timer.start();
 
@@ -1053,6 +1061,9 @@ Error_code trace_paths(TriangleMesh& tm, VertexPointMap vpm,
     // longest first: measured on the test partitions, fewer splits than shortest first (the long
     // paths take the direct routes, the short ones fit between them locally)
     std::stable_sort(rest.begin(), rest.end(), [&](std::size_t x, std::size_t y) { return node_distance(x) > node_distance(y); });
+    if(interior_first)
+      std::stable_partition(rest.begin(), rest.end(), [&](std::size_t x)
+                            { return !net.border_vertex[net.id(nodes[edges[x][0]])] || !net.border_vertex[net.id(nodes[edges[x][1]])]; });
     order.insert(order.end(), rest.begin(), rest.end());
   }
 
@@ -1066,9 +1077,9 @@ Error_code trace_paths(TriangleMesh& tm, VertexPointMap vpm,
   {
     std::vector<Guide_point> vg;
     std::vector<double> vs;
-    if(compute_guide_map(tm, vpm, [&](vertex_descriptor v) { return static_cast<std::size_t>(net.id(v)); }, net.vd.size(),
-                         nodes, edges, node_guide, vg, vs))
-      tracer.set_guide(std::move(vg), std::move(vs), guide_units * unit);
+    auto vid = [&](vertex_descriptor v) { return static_cast<std::size_t>(net.id(v)); };
+    const bool ok = compute_guide_map(tm, vpm, vid, net.vd.size(), nodes, edges, node_guide, vg, vs, disk_factor);
+    if(ok) tracer.set_guide(std::move(vg), std::move(vs), guide_units * unit);
   }
   std::vector<char> traced(E, 0);
   const std::size_t first_steiner = steiner.size();

@@ -19,7 +19,9 @@
 ///     straight border side split (no map into a convex polygon keeps them);
 ///  4. path vertices placed on their segments by 3D arc length (internal::place_path_vertices):
 ///     in floating point they are only within an ulp of the segment, so each patch border is a
-///     simple polygon convex up to rounding; each patch is embedded by
+///     simple polygon convex up to rounding; a face whose three vertices are on the path network and
+///     which rounding left flat or negative (at a corner sharper than an ulp allows) gets its chord
+///     split (an interior vertex that the patch map can place); each patch is embedded by
 ///     internal::embed_patch_impl(..., simple_border = true) (Tutte + repair, every face certified
 ///     strictly positive, border simple and unchanged);
 ///  5. the whole map certified by check_embedding() (positive faces + simple fixed border: one-to-
@@ -81,7 +83,8 @@ struct Constrained_embedding_statistics
   std::size_t output_vertices = 0;
   /// vertices added by edge splits (path tracing and chord splits)
   std::size_t steiner_vertices = 0;
-  /// of which added to split chords along one path or border side after tracing
+  /// of which added to split chords after tracing: chords along one path or border side, and chords of
+  /// faces whose three vertices are on the paths and which the rounding of the path vertices left flat
   std::size_t chord_splits = 0;
   /// whether the paths were traced a second time, guided by a drawing of the partition (after shortest
   /// paths ran out of their Steiner budget or added more than a tenth of the vertices)
@@ -180,6 +183,31 @@ struct Constrained_chord_predicate
   }
 };
 
+// chords one of whose faces has its third vertex on the path network too (split_chords() passes
+// only edges between two network vertices) and is not strictly positive in `uv`
+template <class Work, class UVMap, class Orientation>
+struct Non_positive_face_chord
+{
+  typedef typename boost::graph_traits<Work>::vertex_descriptor vertex_descriptor;
+  const Work& work;
+  UVMap uv;
+  Orientation orient;
+  const std::vector<char>& on_network; // by vertex index: border, node or path vertex
+  bool operator()(vertex_descriptor a, vertex_descriptor b) const
+  {
+    const auto hb = halfedge(a, b, work);
+    if(!hb.second) return false;
+    for(auto h : { hb.first, opposite(hb.first, work) })
+    {
+      if(CGAL::is_border(h, work)) continue;
+      const vertex_descriptor c = target(next(h, work), work);
+      if(!on_network[static_cast<std::size_t>(c)]) continue;
+      if(orient(get(uv, source(h, work)), get(uv, target(h, work)), get(uv, c)) != CGAL::LEFT_TURN) return true;
+    }
+    return false;
+  }
+};
+
 // The vertices of the polygon P that turn by more than rounding: the sine of the turn at least 2^-20 in
 // magnitude (the corner margin of domain_partition.h), or a turn backwards. The others lie on the
 // segment between their neighbours up to rounding (e.g. points interpolated in floating point along a
@@ -198,7 +226,7 @@ void turning_vertices(const std::vector<Point_2>& P, std::vector<std::size_t>& t
     const double ux = CGAL::to_double(b.x()) - CGAL::to_double(a.x()), uy = CGAL::to_double(b.y()) - CGAL::to_double(a.y());
     const double vx = CGAL::to_double(c.x()) - CGAL::to_double(b.x()), vy = CGAL::to_double(c.y()) - CGAL::to_double(b.y());
     const double cross = ux * vy - uy * vx, dot = ux * vx + uy * vy;
-    if(!(dot > 0) || !(std::abs(cross) < std::ldexp(1., -20) * std::sqrt(ux * ux + uy * uy) * std::sqrt(vx * vx + vy * vy)))
+    if(!(dot > 0) || !(std::abs(cross) < corner_turn_margin() * std::sqrt(ux * ux + uy * uy) * std::sqrt(vx * vx + vy * vy)))
       turning.push_back(i);
   }
 }
@@ -221,7 +249,7 @@ bool path_corners_turn_by_margin(const Domain_partition& partition, const std::v
       const Point_2 &a = B[P[km]], &u = B[P[k]], &b = B[P[kp]];
       const double ax = CGAL::to_double(u.x()) - CGAL::to_double(a.x()), ay = CGAL::to_double(u.y()) - CGAL::to_double(a.y());
       const double bx = CGAL::to_double(b.x()) - CGAL::to_double(u.x()), by = CGAL::to_double(b.y()) - CGAL::to_double(u.y());
-      if(!(ax * by - ay * bx > std::ldexp(1., -20) * std::sqrt(ax * ax + ay * ay) * std::sqrt(bx * bx + by * by)))
+      if(!(ax * by - ay * bx > corner_turn_margin() * std::sqrt(ax * ax + ay * ay) * std::sqrt(bx * bx + by * by)))
         return false;
     }
   }
@@ -900,6 +928,21 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     if(ec != OK) return finish(ec);
     for(std::size_t k = 1; k + 1 < P.size(); ++k) put(wuv, P[k], positions[k - 1]);
   }
+  {
+    // A face whose three vertices lie on the path network is fixed by the placement above; when
+    // rounding made it flat or negative (two path vertices within an ulp of a sharp corner's other
+    // side), no patch map can repair it. Splitting its chord gives it a free vertex.
+    std::vector<char> on_network(num_vertices(work), 0);
+    for(wvertex v : vertices(work)) if(CGAL::is_border(v, work)) on_network[static_cast<std::size_t>(v)] = 1;
+    for(wvertex v : nodes) on_network[static_cast<std::size_t>(v)] = 1;
+    for(const auto& P : paths) for(wvertex v : P) on_network[static_cast<std::size_t>(v)] = 1;
+    const internal::Non_positive_face_chord<Work, decltype(wuv), typename Traits::Exact_orientation_2>
+      bad_face{ work, wuv, orient, on_network };
+    const std::size_t splits = internal::split_chords(work, wvpm, paths, steiner, bad_face);
+    stats.chord_splits += splits;
+    if(verbose && splits > 0)
+      std::cerr << "[constrained_embedding] " << splits << " chord(s) of faces left flat by rounding split" << std::endl;
+  }
   std::vector<internal::Traced_patch<Work> > patches;
   auto fpatch = get(CGAL::dynamic_face_property_t<std::size_t>(), work);
   ec = internal::label_patches(work, nodes, paths, fpatch, patches);
@@ -919,12 +962,14 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     {
       if(verbose)
       {
+        const std::streamsize precision = std::cerr.precision(17); // bit-exact: the failures are about rounding
         std::cerr << "[constrained_embedding] patch " << p << " (" << patch_faces[p].size() << " faces): "
                   << get_error_message(ec) << "; border:";
         for(auto h : patches[p].border)
           std::cerr << " (" << CGAL::to_double(get(wuv, target(h, work)).x()) << ", "
                     << CGAL::to_double(get(wuv, target(h, work)).y()) << ")";
         std::cerr << std::endl;
+        std::cerr.precision(precision);
       }
       return finish(ec);
     }

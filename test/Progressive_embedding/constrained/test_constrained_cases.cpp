@@ -7,7 +7,7 @@
 // rationals), targets in the mirrored cyclic order of the surface's, a constrained vertex of valence 3
 // with four partition edges; meshes with holes (an annulus, a sphere with three holes) with and without
 // constraints; Surface_mesh and Polyhedron_3; and the vertex order on a Surface_mesh with a removed
-// vertex not collected.
+// vertex not collected; targets so close together that rounding flattens faces at a sharp corner.
 // Every case: OK, the exact certificate on the caller's mesh, constraints bit-exact, the original
 // vertices first and unchanged, the Steiner vertices counted, and a count the layout forces.
 
@@ -19,6 +19,7 @@
 #include "registry.h"
 #include "../test_util.h"
 #include "mesh_fixtures.h"
+#include "../protocols.h"
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/centroid.h>
@@ -577,5 +578,51 @@ PE_TEST_GROUP(constrained_cases_recycled_vertex)
   CHECK(corner.size() == 2 && m.is_removed(at(0, 0)) && m.has_garbage() && count_border_cycles(m) == 1, "corner cut off, not collected");
   RUN(adjacent_case<Epick>(m, at(3, 4), at(4, 4), at(4, 2), at(3, 6), Layout::BETWEEN,
                            "grid 10x10 without its corner (0, 0), not collected, " + layout_name(Layout::BETWEEN)));
+  return EXIT_SUCCESS;
+}
+
+// Targets at the constrained vertices' own places in a Tutte map, where it crowds them: the dinosaur
+// cut open around the Tutte-failure protocol's face for seed 2 (the one-ring of the face removed), its
+// border on the square [-1.5, 2.5]^2 by arc length, 10 interior vertices (mt19937(2010) shuffle) pinned
+// where the Tutte map puts them. Some partition polygons are 1e-8 across at 0.36, with corners so
+// sharp that two path vertices, placed within an ulp of their segments, fall on the line of the other
+// side: a face with its three vertices on the path network is flat, and no patch map can move it. Its
+// chord is split (a free vertex), and the map is certified.
+PE_TEST_GROUP(constrained_cases_rounded_corner)
+{
+  typedef Epick::Point_2 P2;
+  typedef Vertex<Surface_mesh> VD;
+  Surface_mesh m;
+  if(!read_mesh(data_dir + "/meshes/dino.off", m)) return EXIT_FAILURE;
+  {
+    const std::vector<Surface_mesh::Face_index> F(faces(m).begin(), faces(m).end());
+    const auto f = F[PE::internal::thingi_face_index(F.size(), 2u)];
+    std::set<Surface_mesh::Face_index> ring;
+    for(VD v : CGAL::vertices_around_face(halfedge(f, m), m))
+      for(auto g : CGAL::faces_around_target(halfedge(v, m), m))
+        if(g != Surface_mesh::null_face()) ring.insert(g);
+    for(auto g : ring) CGAL::Euler::remove_face(halfedge(g, m), m);
+    m.collect_garbage();
+  }
+  CHECK(count_border_cycles(m) == 1, "dino cut open: a disk");
+  auto uv = make_uv_map(m, P2());
+  CHECK(square_tutte(m, uv), "Tutte map");
+  for(VD v : vertices(m)) { const P2 p = get(uv, v); put(uv, v, P2(4 * p.x() - 1.5, 4 * p.y() - 1.5)); }
+  std::vector<VD> interior;
+  for(VD v : vertices(m)) if(!CGAL::is_border(v, m)) interior.push_back(v);
+  std::mt19937 gen(2u * 1000u + 10u);
+  std::shuffle(interior.begin(), interior.end(), gen);
+  std::vector<std::pair<VD, P2> > C;
+  std::set<std::pair<double, double> > used;
+  for(std::size_t j = 0; j < interior.size() && C.size() < 10; ++j)
+  {
+    const P2 p = get(uv, interior[j]);
+    if(used.insert({p.x(), p.y()}).second) C.emplace_back(interior[j], p);
+  }
+  CHECK(C.size() == 10, "10 distinct targets");
+  PE::Constrained_embedding_statistics st;
+  RUN(run_checked(m, uv, C, "dino cut open, 10 targets at their crowded Tutte places", 1, st));
+  // no chord joins two vertices of one side here: every split is of a face flattened by rounding
+  CHECK(st.chord_splits >= 1, "the faces flattened by rounding are split");
   return EXIT_SUCCESS;
 }

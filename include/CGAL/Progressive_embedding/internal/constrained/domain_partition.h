@@ -182,6 +182,10 @@ namespace CGAL {
 namespace Progressive_embedding {
 namespace internal {
 
+/// The sine of the smallest turn at a partition corner next to a path (2^-20): a corner that turns by
+/// less is flat up to the rounding of the path vertices placed next to it (see partition_domain).
+inline double corner_turn_margin() { return 0x1p-20; }
+
 /// The target domain cut into convex polygons (see the comment at the top of this file).
 /// Nodes 0..nb-1 are the border points in the given order, nodes nb..nb+nt-1 the targets in the
 /// given order. Every geometric order below is counterclockwise in the plane, whatever the
@@ -360,7 +364,7 @@ Error_code merge_into_convex_polygons(const Points& point, std::size_t nb, std::
   // still decided by the exact orientation. Between two interior edges no margin: such a corner
   // nearly flat comes with a sliver (e.g. a target within rounding of the border), whose refusal
   // would only keep shorter edges.
-  const double margin = std::ldexp(1., -20); // sine of the smallest turn at a corner with a path
+  const double margin = corner_turn_margin();
   auto robust_turn = [&](std::size_t p, std::size_t u, std::size_t q) {
     const double ax = c[u][0] - c[p][0], ay = c[u][1] - c[p][1], bx = c[q][0] - c[u][0], by = c[q][1] - c[u][1];
     return ax * by - ay * bx > margin * std::sqrt(ax * ax + ay * ay) * std::sqrt(bx * bx + by * by);

@@ -90,7 +90,22 @@ int cmd_constrain(const Arguments& a)
   run.result.add("patches", st.patches);
   run.summary << "vertices " << vertices_in << " -> " << in.mesh.number_of_vertices() << " (" << st.steiner_vertices
               << " Steiner), " << st.paths << " paths, " << st.patches << " patches";
-  if(ec != PE::OK) { run.summary << "; "; return run.fail(ec, "constrained embedding failed on '" + in.filename + "'"); }
+  if(ec != PE::OK)
+  {
+    run.summary << "; ";
+    std::string detail;
+    if(st.failed_constraint < constraints.size())
+    {
+      const auto& c = constraints[st.failed_constraint];
+      detail = "vertex " + std::to_string(std::size_t(c.first)) + " -> (" + format_number(c.second.x()) + ", " +
+               format_number(c.second.y()) + ")";
+      if(ec == PE::ERROR_CONSTRAINT_OUTSIDE_DOMAIN)
+        detail += border_turns > 0 ? ": a border that wraps around its vertices takes no constraint"
+                                   : " is not strictly inside the border";
+      run.result.add("failed_vertex", std::size_t(c.first));
+    }
+    return run.fail(ec, "constrained embedding failed on '" + in.filename + "'", detail);
+  }
 
   // every constraint bit-exact (the function guarantees it; the tool says it from the map it writes)
   double error = 0;

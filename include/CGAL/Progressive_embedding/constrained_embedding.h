@@ -59,6 +59,7 @@
 #include <boost/functional/hash.hpp>
 
 #include <algorithm>
+#include <numeric>
 #include <array>
 #include <cmath>
 #include <iterator>
@@ -77,6 +78,11 @@ namespace Progressive_embedding {
 /// (also on error, as far as the computation went).
 struct Constrained_embedding_statistics
 {
+  /// on an error about one constraint (`ERROR_CONSTRAINT_ON_BORDER`, `ERROR_DUPLICATE_CONSTRAINT`,
+  /// `ERROR_CONSTRAINT_OUTSIDE_DOMAIN`, `ERROR_NON_FINITE_COORDINATES` of a target, `ERROR_WRONG_PARAMETER`
+  /// for a vertex not of the mesh): its position in the `constraints` range (for two equal vertices or
+  /// targets, the later one); `std::size_t(-1)` otherwise
+  std::size_t failed_constraint = std::size_t(-1);
   /// vertices of the input mesh
   std::size_t input_vertices = 0;
   /// vertices of the output mesh (input vertices first, then the Steiner vertices)
@@ -207,6 +213,33 @@ struct Non_positive_face_chord
     return false;
   }
 };
+
+// The constraint that partition_domain(B, targets) refused with `ec`: the first target that a partition
+// refuses alone (outside the domain), or the later of the first two equal targets in lexicographic
+// order (duplicate). Runs only on that error path: O(targets x partition of B).
+template <class Point_2>
+std::size_t failed_target(const std::vector<Point_2>& B, const std::vector<Point_2>& targets,
+                          const Domain_partition_options& options, Error_code ec)
+{
+  if(ec == ERROR_CONSTRAINT_OUTSIDE_DOMAIN)
+  {
+    for(std::size_t i = 0; i < targets.size(); ++i)
+    {
+      Domain_partition one;
+      if(partition_domain(B, std::vector<Point_2>(1, targets[i]), one, options) == ERROR_CONSTRAINT_OUTSIDE_DOMAIN) return i;
+    }
+    return std::size_t(-1);
+  }
+  std::vector<std::size_t> order(targets.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  auto less = [&](std::size_t a, std::size_t b) {
+    return CGAL::compare_xy(targets[a], targets[b]) == CGAL::SMALLER || (CGAL::compare_xy(targets[a], targets[b]) == CGAL::EQUAL && a < b);
+  };
+  std::sort(order.begin(), order.end(), less);
+  for(std::size_t k = 0; k + 1 < order.size(); ++k)
+    if(CGAL::compare_xy(targets[order[k]], targets[order[k + 1]]) == CGAL::EQUAL) return order[k + 1];
+  return std::size_t(-1);
+}
 
 // The vertices of the polygon P that turn by more than rounding: the sine of the turn at least 2^-20 in
 // magnitude (the corner margin of domain_partition.h), or a turn backwards. The others lie on the
@@ -641,12 +674,14 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     std::unordered_set<vertex_descriptor, boost::hash<vertex_descriptor> > seen;
     for(std::size_t i = 0; i < cverts.size(); ++i)
     {
+      stats.failed_constraint = i;
       const auto it = index_of.find(cverts[i]);
       if(it == index_of.end()) return finish(ERROR_WRONG_PARAMETER);
       if(disk.on_border[it->second]) return finish(ERROR_CONSTRAINT_ON_BORDER);
       if(!seen.insert(cverts[i]).second) return finish(ERROR_DUPLICATE_CONSTRAINT);
       if(!internal::is_finite_ft(targets[i].x()) || !internal::is_finite_ft(targets[i].y()))
         return finish(ERROR_NON_FINITE_COORDINATES);
+      stats.failed_constraint = std::size_t(-1);
     }
   }
   std::vector<Point_2> bpos;
@@ -739,7 +774,11 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
       if(partition_immersed(Bt, node_turns()) == OK) B.swap(Bt);
       else { partition = every_vertex; border_nodes = every_node; }
     }
-    if(ec == OK && !targets.empty()) return finish(ERROR_CONSTRAINT_OUTSIDE_DOMAIN);
+    if(ec == OK && !targets.empty())
+    {
+      stats.failed_constraint = 0; // none can be placed: a target could lie on several sheets
+      return finish(ERROR_CONSTRAINT_OUTSIDE_DOMAIN);
+    }
   }
   if(ec == ERROR_NON_CONVEX_BORDER && shape != Border_shape::FIXED)
   {
@@ -750,6 +789,8 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     partition = internal::Domain_partition();
     ec = internal::partition_domain(B, targets, partition, popt);
   }
+  if(ec == ERROR_CONSTRAINT_OUTSIDE_DOMAIN || ec == ERROR_DUPLICATE_CONSTRAINT)
+    stats.failed_constraint = internal::failed_target(B, targets, popt, ec);
   if(ec != OK) return finish(ec);
   const std::size_t nbn = border_nodes.size();
   const bool mirrored = !partition.counterclockwise;

@@ -376,20 +376,24 @@ PE_TEST_GROUP(constrained_embedding_errors)
   VD bv;
   for(auto v : vertices(m)) if(CGAL::is_border(v, m)) { bv = v; break; }
   const Snapshot<Surface_mesh, decltype(uv)> before(m, uv);
-  auto expect = [&](std::vector<std::pair<VD, Point_2> > c, PE::Error_code code, const char* what) -> int
+  // `failed`: the constraint the statistics must name (its index in the range)
+  auto expect = [&](std::vector<std::pair<VD, Point_2> > c, PE::Error_code code, const char* what, std::size_t failed) -> int
   {
-    const PE::Error_code ec = PE::constrained_embedding(m, c, uv);
-    std::cout << what << ": " << PE::get_error_message(ec) << std::endl;
+    PE::Constrained_embedding_statistics st;
+    const PE::Error_code ec = PE::constrained_embedding(m, c, uv, PE::parameters::statistics(&st));
+    std::cout << what << ": " << PE::get_error_message(ec) << ", constraint " << st.failed_constraint << std::endl;
     CHECK(ec == code, what);
+    CHECK(st.failed_constraint == failed, what << ": the failed constraint named");
     CHECK(before.same_mesh(m) && before.same_uv(m, uv), "mesh and uv unchanged");
     return EXIT_SUCCESS;
   };
-  { auto c = C; c[1].first = bv; RUN(expect(c, PE::ERROR_CONSTRAINT_ON_BORDER, "constraint on border")); }
-  { auto c = C; c[2].first = c[0].first; RUN(expect(c, PE::ERROR_DUPLICATE_CONSTRAINT, "same vertex twice")); }
-  { auto c = C; c[2].second = c[0].second; RUN(expect(c, PE::ERROR_DUPLICATE_CONSTRAINT, "same target twice")); }
-  { auto c = C; c[1].second = Point_2(std::numeric_limits<double>::quiet_NaN(), 0.5); RUN(expect(c, PE::ERROR_NON_FINITE_COORDINATES, "NaN target")); }
-  { auto c = C; c[1].second = Point_2(5, 5); RUN(expect(c, PE::ERROR_CONSTRAINT_OUTSIDE_DOMAIN, "target outside")); }
-  { auto c = C; c[1].second = get(uv, bv); RUN(expect(c, PE::ERROR_CONSTRAINT_OUTSIDE_DOMAIN, "target on the border")); }
+  { auto c = C; c[1].first = bv; RUN(expect(c, PE::ERROR_CONSTRAINT_ON_BORDER, "constraint on border", 1)); }
+  { auto c = C; c[2].first = c[0].first; RUN(expect(c, PE::ERROR_DUPLICATE_CONSTRAINT, "same vertex twice", 2)); }
+  { auto c = C; c[2].second = c[0].second; RUN(expect(c, PE::ERROR_DUPLICATE_CONSTRAINT, "same target twice", 2)); }
+  { auto c = C; c[1].second = Point_2(std::numeric_limits<double>::quiet_NaN(), 0.5); RUN(expect(c, PE::ERROR_NON_FINITE_COORDINATES, "NaN target", 1)); }
+  { auto c = C; c[1].second = Point_2(5, 5); RUN(expect(c, PE::ERROR_CONSTRAINT_OUTSIDE_DOMAIN, "target outside", 1)); }
+  { auto c = C; c[2].second = get(uv, bv); RUN(expect(c, PE::ERROR_CONSTRAINT_OUTSIDE_DOMAIN, "target on the border", 2)); }
+
   {
     // a fixed border on a figure eight (turning number 0): it bounds no immersed disk (non-convex simple
     // and weakly self-overlapping borders are accepted: test_non_convex_borders.cpp)
@@ -467,6 +471,7 @@ PE_TEST_GROUP(constrained_embedding_errors)
     PE::Constrained_embedding_statistics st;
     CHECK(PE::constrained_embedding(m2, none, uv3, PE::parameters::statistics(&st)) == PE::OK, "no constraint");
     CHECK(st.steiner_vertices == 0 && st.patches == 1 && PE::check_embedding(m2, uv3).is_valid(), "one patch, valid");
+    CHECK(st.failed_constraint == std::size_t(-1), "no constraint named on success");
   }
   return EXIT_SUCCESS;
 }

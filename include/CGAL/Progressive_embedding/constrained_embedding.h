@@ -232,10 +232,9 @@ std::size_t failed_target(const std::vector<Point_2>& B, const std::vector<Point
   }
   std::vector<std::size_t> order(targets.size());
   std::iota(order.begin(), order.end(), std::size_t(0));
-  auto less = [&](std::size_t a, std::size_t b) {
-    return CGAL::compare_xy(targets[a], targets[b]) == CGAL::SMALLER || (CGAL::compare_xy(targets[a], targets[b]) == CGAL::EQUAL && a < b);
-  };
-  std::sort(order.begin(), order.end(), less);
+  // stable: equal targets stay in input order, so the later one follows
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return CGAL::compare_xy(targets[a], targets[b]) == CGAL::SMALLER; });
   for(std::size_t k = 0; k + 1 < order.size(); ++k)
     if(CGAL::compare_xy(targets[order[k]], targets[order[k + 1]]) == CGAL::EQUAL) return order[k + 1];
   return std::size_t(-1);
@@ -758,6 +757,11 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     if(holes) return finish(ERROR_NOT_A_DISK); // an immersion with holes is not supported
     immersed = true;
     ec = partition_immersed(B, node_turns()); // ERROR_NOT_SELF_OVERLAPPING first: it says what is wrong with the border
+    if(ec == OK && !targets.empty())
+    {
+      stats.failed_constraint = 0; // none can be placed: a target could lie on several sheets
+      return finish(ERROR_CONSTRAINT_OUTSIDE_DOMAIN);
+    }
     // nodes: the vertices that turn by more than rounding (as the strict hull corners of a convex border
     // below); the others stay on the sides between them, within rounding, like path vertices on their
     // segments. Every vertex a node made sliver triangles of three nearly collinear border points (the
@@ -773,11 +777,6 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
       border_nodes = turning;
       if(partition_immersed(Bt, node_turns()) == OK) B.swap(Bt);
       else { partition = every_vertex; border_nodes = every_node; }
-    }
-    if(ec == OK && !targets.empty())
-    {
-      stats.failed_constraint = 0; // none can be placed: a target could lie on several sheets
-      return finish(ERROR_CONSTRAINT_OUTSIDE_DOMAIN);
     }
   }
   if(ec == ERROR_NON_CONVEX_BORDER && shape != Border_shape::FIXED)

@@ -46,6 +46,7 @@
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 #include <CGAL/Progressive_embedding/internal/constrained/domain_partition.h>
 #include <CGAL/Progressive_embedding/internal/constrained/trace_paths.h>
+#include <CGAL/Progressive_embedding/internal/constrained/trace_overlay.h>
 #include <CGAL/Progressive_embedding/internal/constrained/patch_chords.h>
 #include <CGAL/Progressive_embedding/internal/constrained/refinement.h>
 #include <CGAL/Progressive_embedding/internal/constrained/holes.h>
@@ -97,6 +98,12 @@ struct Constrained_embedding_statistics
   bool guided_tracing = false;
   /// whether the guided tracing's paths were kept (it succeeded with fewer Steiner vertices)
   bool guided_tracing_kept = false;
+  /// whether the paths were traced as curves crossing the input edges, the mesh refined once at the end
+  /// (after shortest paths ran out of their Steiner budget or added more than a tenth of the vertices;
+  /// input meshes without holes)
+  bool overlay_tracing = false;
+  /// whether the overlay tracing's paths were kept (it succeeded with the fewest Steiner vertices)
+  bool overlay_tracing_kept = false;
   /// paths traced (interior edges of the partition of the domain)
   std::size_t paths = 0;
   /// patches (convex polygons of the partition), each embedded separately
@@ -852,13 +859,16 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
   if(!(remaining() > 0)) return finish(ERROR_BUDGET_EXHAUSTED);
   if(!partition.edges.empty())
   {
-    // Three tracings at most. Shortest paths first: on most inputs they add few vertices. When they run
+    // Four tracings at most. Shortest paths first: on most inputs they add few vertices. When they run
     // out of their budget or add many vertices (nested partition edges squeezed into corridors, as
-    // on space-filling-curve borders), the paths are traced again on a copy of the mesh as it was,
+    // on space-filling-curve borders or with targets in an order unrelated to the surface), the paths
+    // are traced again on a copy of the mesh as it was: as curves crossing the input edges only, the
+    // mesh refined once at the end (trace_overlay.h: no compounding of nested paths; disks only), then
     // guided by a drawing of the partition (guide_map.h), with two guides and edge orders that help on
     // different inputs (measured on Hilbert-curve borders, 26 runs: adding the second cut the Steiner
     // vertices by 23%), and the result with the fewest Steiner vertices is kept. Each later tracing
-    // stops as soon as it would add as many as the best so far. A budget given by the caller bounds
+    // stops as soon as it would add as many as the best so far; after a successful overlay tracing,
+    // each guided one also stops after a quarter of its time (at least 1 s). A budget given by the caller bounds
     // every tracing.
     const std::size_t unset = std::size_t(-1);
     const std::size_t user_max = choose_parameter(get_parameter(np, internal_np::maximum_steiner_vertices), unset);
@@ -884,11 +894,35 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
         have_best = true;
       };
       keep_if_best();
+      double t_overlay_start = timer.time();
+      if(!holes && remaining() > 0)
+      {
+        // the paths may wind around the constrained vertices (targets in an order unrelated to the
+        // surface): curves crossing only the input edges, the mesh refined once (trace_overlay.h)
+        work = before_tracing;
+        wvpm = get(CGAL::vertex_point, work);
+        paths.clear();
+        steiner.clear();
+        const std::size_t max_o = have_best ? best_steiner.size() - 1 : (user_max != unset ? user_max : 128 * ne + 10000);
+        t_overlay_start = timer.time();
+        ec = internal::trace_paths_overlay(work, wvpm, nodes, partition.edges, partition.rotation, paths, steiner,
+                                           parameters::maximum_steiner_vertices(max_o).maximum_running_time(remaining()));
+        stats.overlay_tracing = true;
+        if(verbose)
+          std::cerr << "[constrained_embedding] overlay tracing: " << get_error_message(ec) << ", "
+                    << steiner.size() << " Steiner vertices, " << timer.time() - t_overlay_start << " s" << std::endl;
+        if(ec == OK && (!have_best || steiner.size() < best_steiner.size())) stats.overlay_tracing_kept = true;
+        keep_if_best();
+      }
+      // after a successful overlay tracing, each guided one gets a quarter of its time, at least 1 s (on
+      // winding partitions they compound and run out of their Steiner budget, slowly)
+      const double guided_seconds = stats.overlay_tracing_kept ? (std::max)(1., 0.25 * (timer.time() - t_overlay_start)) : -1;
       struct Guided_variant { double disk_factor; bool interior_first; };
       const Guided_variant variants[] = { { 0., false }, { 1., true } };
       for(const Guided_variant& g : variants)
       {
         if(!(remaining() > 0) || (have_best && best_steiner.empty())) break;
+        const double guided_budget = guided_seconds >= 0 ? (std::min)(remaining(), guided_seconds) : remaining();
         work = before_tracing;
         wvpm = get(CGAL::vertex_point, work); // the copy's own point array
         paths.clear();
@@ -897,13 +931,17 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
         ec = internal::trace_paths(work, wvpm, nodes, partition.edges, partition.rotation, paths, steiner,
                                    internal::guide_weight(1., internal::guide_disk_factor(g.disk_factor,
                                    internal::interior_edges_first(g.interior_first,
-                                   parameters::maximum_steiner_vertices(max_g).maximum_running_time(remaining())))));
+                                   parameters::maximum_steiner_vertices(max_g).maximum_running_time(guided_budget)))));
         stats.guided_tracing = true;
         if(verbose)
           std::cerr << "[constrained_embedding] guided tracing (" << (g.disk_factor > 0 ? "node disks" : "pinned nodes")
                     << (g.interior_first ? ", interior edges first" : "") << "): " << get_error_message(ec) << ", "
                     << steiner.size() << " Steiner vertices" << std::endl;
-        if(ec == OK && (!have_best || steiner.size() < best_steiner.size())) stats.guided_tracing_kept = true;
+        if(ec == OK && (!have_best || steiner.size() < best_steiner.size()))
+        {
+          stats.guided_tracing_kept = true;
+          stats.overlay_tracing_kept = false;
+        }
         keep_if_best();
       }
       if(have_best)
@@ -1125,7 +1163,12 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     if(!work.is_removed(s.v))
     {
       kept.push_back(s);
-      splits.push_back(internal::Edge_split<wvertex, double>{ s.a, s.b, s.v, s.t });
+    {
+      internal::Edge_split<wvertex, double> e{ s.a, s.b, s.v, s.t };
+      e.join_faces = s.join_faces;
+      e.diagonals = s.diagonals;
+      splits.push_back(std::move(e));
+    }
     }
   steiner.swap(kept);
   stats.steiner_vertices = steiner.size();

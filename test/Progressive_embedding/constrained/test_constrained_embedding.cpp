@@ -139,7 +139,8 @@ random_constraints(const Mesh& m, const UVM& uv, std::size_t n, unsigned seed, b
 // runs constrained_embedding and checks everything it promises
 template <class K, class Mesh>
 int run_case(Mesh& m, std::size_t n, unsigned seed, const std::string& what, bool fixed_border,
-             PE::Border_shape shape = PE::Border_shape::SQUARE, bool consistent = false, std::size_t max_steiner = 0)
+             PE::Border_shape shape = PE::Border_shape::SQUARE, bool consistent = false, std::size_t max_steiner = 0,
+             PE::Constrained_embedding_statistics* stats_out = nullptr, bool optimize = true)
 {
   typedef typename K::Point_2 Point_2;
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor VD;
@@ -154,10 +155,10 @@ int run_case(Mesh& m, std::size_t n, unsigned seed, const std::string& what, boo
   if(max_steiner == 0) max_steiner = 4 * static_cast<std::size_t>(num_edges(m)) + 1000; // the default
   const PE::Error_code ec = fixed_border
     ? PE::constrained_embedding(m, C, uv, PE::parameters::statistics(&st, PE::parameters::steiner_points(&sp,
-                                            PE::parameters::maximum_steiner_vertices(max_steiner))))
+                                            PE::parameters::maximum_steiner_vertices(max_steiner).optimize(optimize))))
     : PE::constrained_embedding(m, C, uv, PE::parameters::statistics(&st, PE::parameters::steiner_points(&sp,
                                             PE::parameters::maximum_steiner_vertices(max_steiner,
-                                            PE::parameters::border_shape(shape)))));
+                                            PE::parameters::border_shape(shape)).optimize(optimize))));
   std::cout << what << (consistent ? " consistent" : " random") << " n=" << n << " seed " << seed << ": " << PE::get_error_message(ec) << ", vertices "
             << st.input_vertices << " -> " << st.output_vertices << ", Steiner " << st.steiner_vertices << " ("
             << st.chord_splits << " chord splits), paths " << st.paths << ", patches " << st.patches << " ("
@@ -195,6 +196,7 @@ int run_case(Mesh& m, std::size_t n, unsigned seed, const std::string& what, boo
     for(std::size_t k = 0; k < s.size; ++k) { w += s.weights[k]; CHECK(s.weights[k] > 0, "positive weight"); }
     CHECK(w == 1, "weights sum to 1");
   }
+  if(stats_out) *stats_out = st;
   return EXIT_SUCCESS;
 }
 
@@ -341,6 +343,33 @@ PE_TEST_GROUP(constrained_embedding_polyhedron)
   Polyhedron m;
   if(!read_mesh(data_dir + "/meshes/mushroom.off", m)) return EXIT_FAILURE;
   RUN((run_case<Epick>(m, 10, 3u, "mushroom Polyhedron_3", true)));
+  return EXIT_SUCCESS;
+}
+
+// Targets at random places, unrelated to where the surface puts their vertices: the partition's
+// paths wind around the constrained vertices and nest; traced as curves over the input edges (the
+// shortest paths run out of their Steiner budget), certified and bit-exact, on Surface_mesh and on
+// Polyhedron_3 (the refinement, several points per input edge and the edges across each face,
+// replayed on the caller's mesh). Not optimized: the optimization of such maps is slow (their
+// distortion is large) and is tested elsewhere.
+PE_TEST_GROUP(constrained_embedding_winding)
+{
+  for(unsigned seed : { 1u, 2u })
+  {
+    Surface_mesh m;
+    if(!read_mesh(data_dir + "/meshes/mushroom.off", m)) return EXIT_FAILURE;
+    PE::Constrained_embedding_statistics st;
+    RUN((run_case<Epick>(m, 30, seed, "mushroom winding", true, PE::Border_shape::SQUARE, false, 100000, &st, false)));
+    CHECK(st.overlay_tracing && st.overlay_tracing_kept, "the overlay tracing's paths kept");
+    CHECK(st.steiner_vertices > 1000, "winding paths need many Steiner vertices: " << st.steiner_vertices);
+  }
+  {
+    Polyhedron m;
+    if(!read_mesh(data_dir + "/meshes/mushroom.off", m)) return EXIT_FAILURE;
+    PE::Constrained_embedding_statistics st;
+    RUN((run_case<Epick>(m, 30, 1u, "mushroom Polyhedron_3 winding", true, PE::Border_shape::SQUARE, false, 100000, &st, false)));
+    CHECK(st.overlay_tracing_kept, "the overlay tracing's paths kept");
+  }
   return EXIT_SUCCESS;
 }
 

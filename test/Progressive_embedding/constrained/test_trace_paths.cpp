@@ -9,6 +9,8 @@
 
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
 #include <CGAL/Progressive_embedding/internal/constrained/trace_paths.h>
+#include <CGAL/Progressive_embedding/internal/constrained/trace_overlay.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 
 #include "registry.h"
 #include "../test_util.h"
@@ -22,7 +24,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <map>
 #include <set>
+#include <unordered_map>
 
 namespace {
 
@@ -734,5 +739,106 @@ PE_TEST_GROUP(trace_paths_exact)
   Counts c;
   RUN(verify(mq, P, paths, steiner, nv0, before, c));
   std::cout << "  Gmpq nefertiti (mirrored partition): " << c.steiner << " Steiner vertices, " << c.patches << " patches" << std::endl;
+  return EXIT_SUCCESS;
+}
+
+namespace {
+
+// traces P on m with trace_paths_overlay() (curves crossing the input edges, the mesh refined once),
+// verifies every postcondition as above, and checks that every added vertex lies on an input edge
+template <class Mesh>
+int overlay_and_verify(Mesh& m, const Partition<Mesh>& P, Counts& c, const std::string& what)
+{
+  const auto before = snapshot(m);
+  const std::size_t nv0 = count_vertices(m);
+  std::set<std::pair<typename boost::graph_traits<Mesh>::vertex_descriptor, typename boost::graph_traits<Mesh>::vertex_descriptor> > input_edges;
+  for(auto e : edges(m)) input_edges.insert(std::minmax(source(halfedge(e, m), m), target(halfedge(e, m), m)));
+  std::vector<std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> > paths;
+  std::vector<PI::Steiner_vertex<Mesh> > steiner;
+  CGAL::Real_timer t; t.start();
+  const PE::Error_code ec = PI::trace_paths_overlay(m, get(CGAL::vertex_point, m), P.nodes, P.edges, P.rotation, paths, steiner);
+  t.stop();
+  CHECK(ec == PE::OK, what << ": trace_paths_overlay returned " << PE::get_error_name(ec));
+  CHECK(CGAL::is_valid_polygon_mesh(m) && CGAL::is_triangle_mesh(m), what << ": refined mesh valid");
+  RUN(verify(m, P, paths, steiner, nv0, before, c));
+  // each split is of a piece of one input edge: the input edge of each added vertex
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vd;
+  std::map<vd, std::pair<vd, vd> > on;
+  for(const auto& s : steiner)
+  {
+    CHECK(!s.join_faces, "overlay splits leave the faces to the diagonals");
+    const auto ia = on.find(s.a), ib = on.find(s.b);
+    std::pair<vd, vd> e;
+    if(ia == on.end() && ib == on.end()) e = std::minmax(s.a, s.b);
+    else if(ia != on.end() && ib != on.end()) { CHECK(ia->second == ib->second, "one input edge"); e = ia->second; }
+    else
+    {
+      e = (ia != on.end()) ? ia->second : ib->second;
+      const vd x = (ia != on.end()) ? s.b : s.a;
+      CHECK(x == e.first || x == e.second, "an endpoint of the input edge");
+    }
+    CHECK(input_edges.count(e), "Steiner vertex on an input edge");
+    on[s.v] = e;
+  }
+  std::cout << "  " << what << ": " << nv0 << " vertices, " << P.edges.size() << " paths, " << c.patches << " patches; Steiner "
+            << c.steiner << "; path edges " << c.path_edges << "; " << t.time() << " s" << std::endl;
+  return EXIT_SUCCESS;
+}
+
+} // namespace
+
+// Partitions whose nodes are mirrored relative to the surface, traced as curves over the input edges:
+// every postcondition, the Steiner vertices on input edges, fewer than the tracing that refines as it
+// goes once the paths nest (50 nodes), and the replay of the refinement on a Polyhedron_3
+PE_TEST_GROUP(trace_paths_overlay)
+{
+  Surface_mesh m0;
+  if(!read_mesh(data_dir + "/meshes/lion-head.off", m0)) return EXIT_FAILURE;
+  auto uv = circle_tutte(m0);
+  for(std::size_t n : { 3, 10, 50 })
+  {
+    const auto interior = random_interior(m0, uv, n, 5);
+    Counts overlay, nested;
+    { Surface_mesh m = m0; RUN(overlay_and_verify(m, delaunay_partition(m, uv, 8, interior, false), overlay, "straight n=" + std::to_string(n))); }
+    { Surface_mesh m = m0; RUN(overlay_and_verify(m, delaunay_partition(m, uv, 8, interior, true), overlay, "mirrored n=" + std::to_string(n))); }
+    if(n == 50)
+    {
+      Surface_mesh m = m0;
+      RUN(trace_and_verify(m, delaunay_partition(m, uv, 8, interior, true), nested, "mirrored n=50, trace_paths"));
+      CHECK(overlay.steiner < nested.steiner, "curves over the input edges: " << overlay.steiner << " vs " << nested.steiner);
+    }
+  }
+  {
+    // the refinement replayed on a Polyhedron_3 with the same connectivity gives the same mesh
+    Surface_mesh m = m0;
+    const auto P = delaunay_partition(m, uv, 8, random_interior(m0, uv, 10, 5), true);
+    std::vector<std::vector<Surface_mesh::Vertex_index> > paths;
+    std::vector<PI::Steiner_vertex<Surface_mesh> > steiner;
+    CHECK(PI::trace_paths_overlay(m, get(CGAL::vertex_point, m), P.nodes, P.edges, P.rotation, paths, steiner) == PE::OK, "traced");
+    Polyhedron poly;
+    std::unordered_map<Surface_mesh::Vertex_index, boost::graph_traits<Polyhedron>::vertex_descriptor> to_poly;
+    CGAL::copy_face_graph(m0, poly, CGAL::parameters::vertex_to_vertex_output_iterator(std::inserter(to_poly, to_poly.end())));
+    std::vector<PI::Edge_split<Surface_mesh::Vertex_index, double> > splits;
+    for(const auto& s : steiner)
+    {
+      PI::Edge_split<Surface_mesh::Vertex_index, double> e{ s.a, s.b, s.v, s.t };
+      e.join_faces = s.join_faces;
+      e.diagonals = s.diagonals;
+      splits.push_back(e);
+    }
+    auto mid = [](const Epick::Point_3& a, const Epick::Point_3& b, double) { return CGAL::midpoint(a, b); };
+    CHECK(PI::replay_splits(splits, poly, get(CGAL::vertex_point, poly), to_poly, mid) == PE::OK, "replayed");
+    CHECK(num_vertices(poly) == num_vertices(m) && num_faces(poly) == num_faces(m), "same size");
+    std::size_t same = 0;
+    for(auto f : faces(m))
+    {
+      std::vector<boost::graph_traits<Polyhedron>::vertex_descriptor> c;
+      for(auto v : CGAL::vertices_around_face(halfedge(f, m), m)) c.push_back(to_poly.at(v));
+      const auto h = halfedge(c[0], c[1], poly);
+      CHECK(h.second && target(next(h.first, poly), poly) == c[2] && !CGAL::is_border(h.first, poly), "face replayed");
+      ++same;
+    }
+    std::cout << "  replayed on Polyhedron_3: " << steiner.size() << " splits, " << same << " faces identical" << std::endl;
+  }
   return EXIT_SUCCESS;
 }

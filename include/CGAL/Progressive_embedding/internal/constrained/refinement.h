@@ -6,11 +6,14 @@
 #define CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CONSTRAINED_REFINEMENT_H
 
 // Constrained maps refine a working copy of the user's mesh (so that a failure leaves the user's
-// mesh untouched), then replay the refinement on the user's mesh. The only refinement is the
-// split of an edge at a parameter t, followed by the split of each (now quadrilateral) incident
-// face by the one diagonal that joins the new vertex to the opposite corner: the result is
-// determined by the split edge alone, so replaying the splits in the same order on a mesh with
-// the same connectivity gives the same mesh.
+// mesh untouched), then replay the refinement on the user's mesh. The refinement is a sequence of
+// edge splits at a parameter t. Usually each is followed by the split of each (now quadrilateral)
+// incident face by the one diagonal that joins the new vertex to the opposite corner; a split can
+// instead leave the faces as they are (`join_faces` false: several points inserted on one edge)
+// and name the diagonals to add after it (`diagonals`, each between two vertices of one face). The
+// result is determined by the split edges and the diagonals, so replaying them in the same order on
+// a mesh with the same connectivity gives the same mesh. Every new face lies in one face of the
+// mesh before the split, so the surface is unchanged.
 //
 // Each vertex of a refined mesh lies on the input surface: it is a convex combination of at most
 // three input vertices of one input face (an input vertex is itself, a point on an input edge a
@@ -26,6 +29,7 @@
 #include <array>
 #include <cstddef>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -73,7 +77,31 @@ struct Edge_split
 {
   Vertex a, b, v;
   FT t;
+  bool join_faces = true;                          // split the incident faces to the opposite corners
+  std::vector<std::pair<Vertex, Vertex> > diagonals; // then add these edges, in order
 };
+
+// Adds the edge (u, w) across the face that has both on its border (split_face). Returns false when no
+// face has both, or when they are adjacent along that face.
+template <class TriangleMesh>
+bool connect_in_face(typename boost::graph_traits<TriangleMesh>::vertex_descriptor u,
+                     typename boost::graph_traits<TriangleMesh>::vertex_descriptor w, TriangleMesh& tm)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  for(halfedge_descriptor hu : CGAL::halfedges_around_target(u, tm))
+  {
+    if(is_border(hu, tm)) continue;
+    // walk the face of hu from u: its other halfedges, each once
+    for(halfedge_descriptor hw = next(hu, tm); hw != hu; hw = next(hw, tm))
+    {
+      if(target(hw, tm) != w) continue;
+      if(next(hu, tm) == hw || next(hw, tm) == hu) return false; // already an edge of that face
+      CGAL::Euler::split_face(hu, hw, tm);
+      return true;
+    }
+  }
+  return false;
+}
 
 // Splits the edge of halfedge h at `point` (the new vertex's point), then splits each incident
 // quadrilateral face by the diagonal from the new vertex to its opposite corner. Returns a halfedge
@@ -132,8 +160,21 @@ Error_code replay_splits(const std::vector<Edge_split<CopyVertex, FT> >& splits,
     if(ia == copy_to_mesh.end() || ib == copy_to_mesh.end()) return ERROR_WRONG_PARAMETER;
     const std::pair<halfedge_descriptor, bool> h = halfedge(ia->second, ib->second, tm);
     if(!h.second) return ERROR_WRONG_PARAMETER;
-    const halfedge_descriptor hn = split_edge_and_faces(h.first, point_of_split(get(vpm, ia->second), get(vpm, ib->second), s.t), tm, vpm);
+    const auto point = point_of_split(get(vpm, ia->second), get(vpm, ib->second), s.t);
+    halfedge_descriptor hn;
+    if(s.join_faces) hn = split_edge_and_faces(h.first, point, tm, vpm);
+    else
+    {
+      hn = CGAL::Euler::split_edge(h.first, tm);
+      put(vpm, target(hn, tm), point);
+    }
     copy_to_mesh[s.v] = target(hn, tm);
+    for(const auto& d : s.diagonals)
+    {
+      const auto iu = copy_to_mesh.find(d.first), iw = copy_to_mesh.find(d.second);
+      if(iu == copy_to_mesh.end() || iw == copy_to_mesh.end()) return ERROR_WRONG_PARAMETER;
+      if(!connect_in_face(iu->second, iw->second, tm)) return ERROR_WRONG_PARAMETER;
+    }
   }
   return OK;
 }

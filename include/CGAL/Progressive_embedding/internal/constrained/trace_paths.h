@@ -148,6 +148,11 @@ struct Steiner_vertex
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   vertex_descriptor v, a, b;
   double t;
+  /// whether the split also joined `v` to the opposite corners of the edge's faces (refinement.h);
+  /// otherwise the faces were left as they were (several points inserted on one edge)
+  bool join_faces = true;
+  /// the edges added after this split, each across one face (refinement.h's connect_in_face())
+  std::vector<std::pair<vertex_descriptor, vertex_descriptor> > diagonals;
 };
 
 /// A patch of the traced network: a connected set of faces bounded by paths and border sides. After a
@@ -965,6 +970,104 @@ private:
   std::vector<int> mpred_;
 };
 
+// Marks the nodes in `net` (ERROR_WRONG_PARAMETER for a vertex not of tm or given twice), then
+// check_partition(): `loops` receives the border nodes of each border cycle.
+template <class TM>
+Error_code mark_nodes_and_check_partition(const TM& tm, Path_network<TM>& net,
+                                          const std::vector<typename boost::graph_traits<TM>::vertex_descriptor>& nodes,
+                                          const std::vector<std::array<std::size_t, 2> >& edges,
+                                          const std::vector<std::vector<std::size_t> >& rotation,
+                                          std::vector<std::vector<std::size_t> >& loops)
+{
+  typedef typename boost::graph_traits<TM>::vertex_descriptor vertex_descriptor;
+  std::unordered_set<vertex_descriptor, boost::hash<vertex_descriptor> > valid(vertices(tm).begin(), vertices(tm).end());
+  for(std::size_t i = 0; i < nodes.size(); ++i)
+  {
+    if(!valid.count(nodes[i])) return ERROR_WRONG_PARAMETER;
+    int& n = net.node_of[net.id(nodes[i])];
+    if(n >= 0) return ERROR_WRONG_PARAMETER;
+    n = static_cast<int>(i);
+  }
+  std::vector<std::size_t> border_nodes;
+  return check_partition(tm, net, nodes, edges, rotation, border_nodes, loops);
+}
+
+// The traced edges next to position k of a node's rotation r: the previous and the next one (-1: none).
+// A border node's rotation is a sequence (from the next border side to the previous one), an interior
+// node's a cycle.
+inline void traced_neighbours(const std::vector<std::size_t>& r, std::size_t k, bool border,
+                              const std::vector<char>& traced, int& before, int& after)
+{
+  before = after = -1;
+  if(border)
+  {
+    for(std::size_t j = k; j-- > 0; ) if(traced[r[j]]) { before = static_cast<int>(r[j]); break; }
+    for(std::size_t j = k + 1; j < r.size(); ++j) if(traced[r[j]]) { after = static_cast<int>(r[j]); break; }
+    return;
+  }
+  for(std::size_t j = 1; j < r.size(); ++j)
+    if(traced[r[(k + r.size() - j) % r.size()]]) { before = static_cast<int>(r[(k + r.size() - j) % r.size()]); break; }
+  for(std::size_t j = 1; j < r.size(); ++j)
+    if(traced[r[(k + j) % r.size()]]) { after = static_cast<int>(r[(k + j) % r.size()]); break; }
+}
+
+// The order in which trace_paths() traces the partition edges: a spanning tree grown from the
+// border nodes first (Prim, 3D distance between the nodes; each tree edge joins the network to an
+// isolated node or border cycle, so no tree path can block a later one), then the other edges,
+// longest first (with interior_first, those with an interior node before those between two border nodes).
+template <class TM, class VertexPointMap>
+void tracing_order(VertexPointMap vpm, const Path_network<TM>& net,
+                   const std::vector<typename boost::graph_traits<TM>::vertex_descriptor>& nodes,
+                   const std::vector<std::array<std::size_t, 2> >& edges,
+                   const std::vector<std::vector<std::size_t> >& loops, bool interior_first,
+                   std::vector<std::size_t>& order)
+{
+  const std::size_t N = nodes.size(), E = edges.size();
+  auto node_distance = [&](std::size_t e)
+  {
+    const auto p = get(vpm, nodes[edges[e][0]]), q = get(vpm, nodes[edges[e][1]]);
+    typedef typename CGAL::Kernel_traits<typename std::decay<decltype(p)>::type>::Kernel K;
+    return std::sqrt(CGAL::to_double(K().compute_squared_distance_3_object()(p, q)));
+  };
+  order.clear();
+  // the first border cycle (with its sides) is connected from the start; reaching a node of
+  // another border cycle connects that whole cycle
+  std::vector<char> in_tree(N, 0), used(E, 0);
+  std::vector<std::size_t> loop_of(N, std::size_t(-1));
+  for(std::size_t l = 0; l < loops.size(); ++l) for(std::size_t b : loops[l]) loop_of[b] = l;
+  std::vector<std::vector<std::size_t> > inc(N);
+  for(std::size_t e = 0; e < E; ++e) { inc[edges[e][0]].push_back(e); inc[edges[e][1]].push_back(e); }
+  typedef std::pair<double, std::size_t> QE;
+  std::priority_queue<QE, std::vector<QE>, std::greater<QE> > q;
+  auto join = [&](std::size_t n)
+  {
+    const std::vector<std::size_t> one(1, n);
+    for(std::size_t m : (loop_of[n] == std::size_t(-1) ? one : loops[loop_of[n]]))
+    {
+      in_tree[m] = 1;
+      for(std::size_t f : inc[m]) if(!used[f]) q.push(QE(node_distance(f), f));
+    }
+  };
+  if(!loops.empty() && !loops[0].empty()) join(loops[0].front());
+  while(!q.empty())
+  {
+    const std::size_t e = q.top().second; q.pop();
+    const std::size_t a = edges[e][0], b = edges[e][1];
+    if(in_tree[a] && in_tree[b]) continue;
+    used[e] = 1; order.push_back(e);
+    join(in_tree[a] ? b : a);
+  }
+  std::vector<std::size_t> rest;
+  for(std::size_t e = 0; e < E; ++e) if(!used[e]) rest.push_back(e);
+  // longest first: measured on the test partitions, fewer splits than shortest first (the long
+  // paths take the direct routes, the short ones fit between them locally)
+  std::stable_sort(rest.begin(), rest.end(), [&](std::size_t x, std::size_t y) { return node_distance(x) > node_distance(y); });
+  if(interior_first)
+    std::stable_partition(rest.begin(), rest.end(), [&](std::size_t x)
+                          { return !net.border_vertex[net.id(nodes[edges[x][0]])] || !net.border_vertex[net.id(nodes[edges[x][1]])]; });
+  order.insert(order.end(), rest.begin(), rest.end());
+}
+
 /// traces the interior edges of a partition of the target domain on `tm` as non-crossing paths; see
 /// the comment at the top of this file for the parameters, pre- and postconditions and error codes.
 template <class TriangleMesh, class VertexPointMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -1004,68 +1107,14 @@ Error_code trace_paths(TriangleMesh& tm, VertexPointMap vpm,
   const std::size_t max_splits = choose_parameter(get_parameter(np, internal_np::maximum_steiner_vertices),
                                                   4 * static_cast<std::size_t>(num_edges(tm)) + 1000);
   Path_network<TM> net(tm);
-  {
-    std::unordered_set<vertex_descriptor, boost::hash<vertex_descriptor> > valid(vertices(tm).begin(), vertices(tm).end());
-    for(std::size_t i = 0; i < nodes.size(); ++i)
-    {
-      if(!valid.count(nodes[i])) return ERROR_WRONG_PARAMETER;
-      int& n = net.node_of[net.id(nodes[i])];
-      if(n >= 0) return ERROR_WRONG_PARAMETER;
-      n = static_cast<int>(i);
-    }
-  }
-  std::vector<std::size_t> border_nodes;
   std::vector<std::vector<std::size_t> > loops;
-  status = check_partition(tm, net, nodes, edges, rotation, border_nodes, loops);
+  status = mark_nodes_and_check_partition(tm, net, nodes, edges, rotation, loops);
   if(status != OK) return status;
   const std::size_t N = nodes.size(), E = edges.size();
 
   // tracing order: Prim's tree from the border nodes, then the other edges
-  auto node_distance = [&](std::size_t e)
-  {
-    const auto p = get(vpm, nodes[edges[e][0]]), q = get(vpm, nodes[edges[e][1]]);
-    typedef typename CGAL::Kernel_traits<typename std::decay<decltype(p)>::type>::Kernel K;
-    return std::sqrt(CGAL::to_double(K().compute_squared_distance_3_object()(p, q)));
-  };
   std::vector<std::size_t> order;
-  {
-    // the first border cycle (with its sides) is connected from the start; reaching a node of
-    // another border cycle connects that whole cycle
-    std::vector<char> in_tree(N, 0), used(E, 0);
-    std::vector<std::size_t> loop_of(N, std::size_t(-1));
-    for(std::size_t l = 0; l < loops.size(); ++l) for(std::size_t b : loops[l]) loop_of[b] = l;
-    std::vector<std::vector<std::size_t> > inc(N);
-    for(std::size_t e = 0; e < E; ++e) { inc[edges[e][0]].push_back(e); inc[edges[e][1]].push_back(e); }
-    typedef std::pair<double, std::size_t> QE;
-    std::priority_queue<QE, std::vector<QE>, std::greater<QE> > q;
-    auto join = [&](std::size_t n)
-    {
-      const std::vector<std::size_t> one(1, n);
-      for(std::size_t m : (loop_of[n] == std::size_t(-1) ? one : loops[loop_of[n]]))
-      {
-        in_tree[m] = 1;
-        for(std::size_t f : inc[m]) if(!used[f]) q.push(QE(node_distance(f), f));
-      }
-    };
-    if(!loops.empty() && !loops[0].empty()) join(loops[0].front());
-    while(!q.empty())
-    {
-      const std::size_t e = q.top().second; q.pop();
-      const std::size_t a = edges[e][0], b = edges[e][1];
-      if(in_tree[a] && in_tree[b]) continue;
-      used[e] = 1; order.push_back(e);
-      join(in_tree[a] ? b : a);
-    }
-    std::vector<std::size_t> rest;
-    for(std::size_t e = 0; e < E; ++e) if(!used[e]) rest.push_back(e);
-    // longest first: measured on the test partitions, fewer splits than shortest first (the long
-    // paths take the direct routes, the short ones fit between them locally)
-    std::stable_sort(rest.begin(), rest.end(), [&](std::size_t x, std::size_t y) { return node_distance(x) > node_distance(y); });
-    if(interior_first)
-      std::stable_partition(rest.begin(), rest.end(), [&](std::size_t x)
-                            { return !net.border_vertex[net.id(nodes[edges[x][0]])] || !net.border_vertex[net.id(nodes[edges[x][1]])]; });
-    order.insert(order.end(), rest.begin(), rest.end());
-  }
+  tracing_order(vpm, net, nodes, edges, loops, interior_first, order);
 
   Path_tracer<TM, VertexPointMap> tracer(tm, vpm, net, metric, penalty_units);
   const double unit = (metric == Path_metric::HOP_COUNT) ? 1. : tracer.mean_edge_cost();
@@ -1101,22 +1150,15 @@ Error_code trace_paths(TriangleMesh& tm, VertexPointMap vpm,
     outgoing_ccw(u, tm, out);
     halfedge_descriptor hp = GT::null_halfedge(), hs = GT::null_halfedge();
     if(border)
-    {
       for(halfedge_descriptor g : out)
       {
         if(CGAL::is_border(opposite(g, tm), tm)) hp = g;
         if(CGAL::is_border(g, tm)) hs = g;
       }
-      for(std::size_t j = k; j-- > 0; ) if(traced[r[j]]) { hp = leaving(r[j]); break; }
-      for(std::size_t j = k + 1; j < r.size(); ++j) if(traced[r[j]]) { hs = leaving(r[j]); break; }
-    }
-    else
-    {
-      for(std::size_t j = 1; j < r.size(); ++j)
-        if(traced[r[(k + r.size() - j) % r.size()]]) { hp = leaving(r[(k + r.size() - j) % r.size()]); break; }
-      for(std::size_t j = 1; j < r.size(); ++j)
-        if(traced[r[(k + j) % r.size()]]) { hs = leaving(r[(k + j) % r.size()]); break; }
-    }
+    int before, after;
+    traced_neighbours(r, k, border, traced, before, after);
+    if(before >= 0) hp = leaving(static_cast<std::size_t>(before));
+    if(after >= 0) hs = leaving(static_cast<std::size_t>(after));
     strict.clear(); corners.clear();
     if(hp == GT::null_halfedge()) { strict = out; corners = out; return; }
     const std::size_t s0 = static_cast<std::size_t>(std::find(out.begin(), out.end(), hp) - out.begin());

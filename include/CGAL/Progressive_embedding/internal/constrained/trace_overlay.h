@@ -1,0 +1,671 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+#ifndef CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CONSTRAINED_TRACE_OVERLAY_H
+#define CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CONSTRAINED_TRACE_OVERLAY_H
+
+// Phase 2 of constrained maps for partitions that wind around the constrained vertices (targets in
+// an order unrelated to the surface): the partition edges are traced as curves on the *input* mesh,
+// kept as the sequence of input edges each one crosses, and the mesh is refined once at the end.
+//
+// trace_paths() splits the edges a path needs as it goes: a later path squeezed between two earlier
+// ones must then cross every edge that their vertices span, so nested paths grow with each one traced
+// before them (measured: the path lengths grow geometrically with 30 and more random targets). Here a
+// curve only crosses input edges: the k-th curve through a corridor crosses the same input edges as the
+// first, at the next free slot along each. The curves are still shortest (3D length between the input
+// edges' midpoints), non-crossing, in the right sectors at their nodes, traced in trace_paths()'s order.
+//
+//   Error_code trace_paths_overlay(tm, vpm, nodes, edges, rotation, paths, steiner, np)
+//       The interface, preconditions, postconditions and errors of trace_paths() (trace_paths.h), for a
+//       triangulated disk; np: maximum_steiner_vertices (default 128 * number of edges + 10000),
+//       CGAL::parameters::maximum_running_time, split_penalty (the cost of one crossing, in mean edge
+//       lengths, added to the curve's 3D length between edge midpoints; default 4).
+//
+// State: per input edge, the curves crossing it in order along the edge; per input face, its chords
+// (curve pieces: corner node to crossing, or crossing to crossing on another edge). A search state is a
+// gap of an input edge (between two consecutive crossings) with the face the curve enters; a move
+// inside a face adds a chord that must cross none of the face's chords (chords of a triangle with their
+// ends on its boundary cross iff their ends interleave along the boundary). A curve leaves its node
+// through a corner, to a gap of the edge opposite it, and arrives likewise; the angular position of
+// that gap around the node decides the sector (between the node's traced curves, in rotation order).
+//
+// Refinement: every input edge crossed k times gets k points by midpoint splits (the crossing of median
+// rank at the midpoint, the others recursively on either side: the Steiner vertices stay at dyadic
+// positions), the faces left as polygons; each chord becomes an edge across its face; then every face
+// of more than three vertices is cut by ears whose new edge does not join two points of one input edge
+// (no flat triangle in 3D). Every new face lies in one input face: the surface is unchanged. The splits
+// and the added edges are recorded (Steiner_vertex::join_faces false, diagonals) for the replay.
+
+#include <CGAL/Progressive_embedding/Error_code.h>
+#include <CGAL/Progressive_embedding/internal/constrained/refinement.h>
+#include <CGAL/Progressive_embedding/internal/constrained/trace_paths.h>
+
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/Dynamic_property_map.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Real_timer.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <queue>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Progressive_embedding {
+namespace internal {
+
+template <class TM, class VPM>
+class Overlay_tracer
+{
+  typedef boost::graph_traits<TM> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+
+  // a chord end: a corner (the input vertex) or a crossing (its id)
+  struct End { bool corner; vertex_descriptor v; int crossing; };
+  struct Chord { End a, b; };
+  struct Crossing { std::size_t edge; int curve; };
+
+public:
+  Overlay_tracer(TM& tm, VPM vpm)
+    : tm_(tm), vpm_(vpm),
+      hid_(get(CGAL::dynamic_halfedge_property_t<int>(), tm)),
+      fid_(get(CGAL::dynamic_face_property_t<int>(), tm))
+  {
+    for(auto e : edges(tm_))
+    {
+      const halfedge_descriptor h = halfedge(e, tm_);
+      put(hid_, h, static_cast<int>(eh_.size()));
+      put(hid_, opposite(h, tm_), static_cast<int>(eh_.size()));
+      eh_.push_back(h);
+      const auto p = get(vpm_, source(h, tm_)), q = get(vpm_, target(h, tm_));
+      mid_.push_back({ { 0.5 * (CGAL::to_double(p.x()) + CGAL::to_double(q.x())),
+                         0.5 * (CGAL::to_double(p.y()) + CGAL::to_double(q.y())),
+                         0.5 * (CGAL::to_double(p.z()) + CGAL::to_double(q.z())) } });
+    }
+    cross_.resize(eh_.size());
+    for(face_descriptor f : faces(tm_)) { put(fid_, f, static_cast<int>(fh_.size())); fh_.push_back(halfedge(f, tm_)); }
+    chords_.resize(fh_.size());
+    fdata_.resize(fh_.size());
+  }
+
+  std::size_t crossings() const { return crossing_.size(); }
+
+  // the cost of a crossing: `w` mean edge lengths (each crossing is a Steiner vertex), added to the
+  // 3D length between the crossed edges' midpoints
+  void set_crossing_cost(double w)
+  {
+    double sum = 0;
+    for(std::size_t e = 0; e < eh_.size(); ++e) sum += length(point(source(eh_[e], tm_)), point(target(eh_[e], tm_)));
+    step_ = w * (eh_.empty() ? 1. : sum / double(eh_.size()));
+  }
+
+  // One curve from node vertex u to node vertex v. Sectors: the curve must leave u strictly between
+  // the curves `before_u` and `after_u` (curve indices, -1: none) counterclockwise, likewise at v;
+  // `border_u` / `border_v` say whether the node is a border vertex (its sector is then bounded by
+  // the border where a neighbour is missing). Returns false when no curve exists.
+  bool trace(int curve, vertex_descriptor u, int before_u, int after_u,
+             vertex_descriptor v, int before_v, int after_v)
+  {
+    // gap states: 2 * (gap_base[e] + i) + side, side 0 entering face(eh[e]), 1 entering the other face
+    std::vector<std::size_t> base(eh_.size() + 1, 0);
+    for(std::size_t e = 0; e < eh_.size(); ++e) base[e + 1] = base[e] + cross_[e].size() + 1;
+    const std::size_t S = 2 * base.back();
+    dist_.assign(S, std::numeric_limits<double>::infinity());
+    pred_.assign(S, -1);
+    typedef std::pair<double, std::int64_t> QE;
+    std::priority_queue<QE, std::vector<QE>, std::greater<QE> > q;
+    const Star su = star(u), sv = star(v);
+    const Sector secu = sector(su, before_u, after_u), secv = sector(sv, before_v, after_v);
+    const std::array<double, 3> pu = point(u), pv = point(v);
+    // start: chords from the corner u to a gap of the opposite edge
+    for(std::size_t j = 0; j < su.out.size(); ++j)
+    {
+      const halfedge_descriptor g = su.out[j];
+      if(is_border(g, tm_)) continue;
+      const halfedge_descriptor o = next(g, tm_); // the edge opposite u, from the vertex after u
+      const std::size_t e = static_cast<std::size_t>(get(hid_, o));
+      if(is_border(opposite(o, tm_), tm_)) continue; // a curve does not cross the border
+      const Face_data& fd = face_data(face(g, tm_));
+      const std::int64_t cu = corner_position(face(g, tm_), u);
+      const std::size_t n = cross_[e].size();
+      for(std::size_t i = 0; i <= n; ++i) // gap i along o
+      {
+        if(!secu.contains(j, 2 * static_cast<std::int64_t>(i))) continue;
+        const std::int64_t gp = gap_position(o, i);
+        if(crosses_any(fd.chords, cu, gp, fd.size)) continue;
+        const std::size_t gi = (o == eh_[e]) ? i : n - i;
+        const std::size_t state = 2 * (base[e] + gi) + ((o == eh_[e]) ? 1 : 0); // enters the face beyond o
+        relax(q, state, step_ + length(pu, mid_[e]), -2);
+      }
+    }
+    double best = std::numeric_limits<double>::infinity();
+    std::int64_t best_state = -1;
+    std::size_t guard = 0;
+    while(!q.empty() && ++guard <= 64 * S + 1000000)
+    {
+      const QE top = q.top(); q.pop();
+      const double d = top.first;
+      const std::size_t s = static_cast<std::size_t>(top.second);
+      if(d > dist_[s] || d >= best) { if(d >= best) break; continue; }
+      const std::size_t gap = s / 2, side = s % 2;
+      const std::size_t e = static_cast<std::size_t>(std::upper_bound(base.begin(), base.end(), gap) - base.begin()) - 1;
+      const std::size_t i = gap - base[e], n = cross_[e].size();
+      const halfedge_descriptor hf = side == 0 ? eh_[e] : opposite(eh_[e], tm_); // e, seen from the face entered
+      if(is_border(hf, tm_)) continue;
+      const face_descriptor f = face(hf, tm_);
+      const std::size_t ih = (hf == eh_[e]) ? i : n - i; // the gap's index along hf
+      const Face_data& fd = face_data(f);
+      const std::int64_t gp = gap_position(hf, ih);
+      // arrival at v, the corner opposite e
+      const halfedge_descriptor hv = next(hf, tm_); // from target(hf) to the opposite corner
+      if(target(hv, tm_) == v)
+      {
+        // v -> source(hf) leaves v in f, whose edge opposite v is hf: the gap's position along hf
+        // is its angular position around v
+        const std::size_t j = sv.index_of(next(hv, tm_), tm_);
+        if(j != std::size_t(-1) && secv.contains(j, 2 * static_cast<std::int64_t>(ih)) &&
+           !crosses_any(fd.chords, gp, corner_position(f, v), fd.size))
+        {
+          const double total = d + length(mid_[e], pv);
+          if(total < best) { best = total; best_state = static_cast<std::int64_t>(s); }
+        }
+      }
+      // the gaps of the two other edges of f in the same piece of f (no chord between them)
+      const std::size_t kf = fd.index(hf, tm_);
+      for(const std::pair<int, int>& m : fd.members[static_cast<std::size_t>(fd.label[kf][ih])])
+      {
+        if(static_cast<std::size_t>(m.first) == kf) continue;
+        const halfedge_descriptor hk = fd.h[static_cast<std::size_t>(m.first)];
+        if(is_border(opposite(hk, tm_), tm_)) continue;
+        const std::size_t ek = static_cast<std::size_t>(get(hid_, hk));
+        const std::size_t nk = cross_[ek].size(), jk = static_cast<std::size_t>(m.second);
+        const std::size_t gi = (hk == eh_[ek]) ? jk : nk - jk;
+        relax(q, 2 * (base[ek] + gi) + ((hk == eh_[ek]) ? 1 : 0), d + step_ + length(mid_[e], mid_[ek]), static_cast<std::int64_t>(s));
+      }
+    }
+    if(best_state < 0) return false;
+    // the states, from u to v
+    std::vector<std::size_t> states;
+    for(std::int64_t s = best_state; s >= 0; s = pred_[static_cast<std::size_t>(s)])
+    {
+      states.push_back(static_cast<std::size_t>(s));
+      if(states.size() > S) return false; // defensive: a cycle would be a bug
+    }
+    std::reverse(states.begin(), states.end());
+    commit(curve, u, v, states, base);
+    return true;
+  }
+
+  // Refines tm: the crossings become vertices (midpoint splits), the chords edges, the faces
+  // triangles. `paths[c]` receives curve c's vertices (node, crossings, node). Returns false when a
+  // face cannot be cut into non-flat triangles (would be a bug).
+  bool realize(const std::vector<std::pair<vertex_descriptor, vertex_descriptor> >& ends,
+               std::vector<std::vector<vertex_descriptor> >& paths, std::vector<Steiner_vertex<TM> >& steiner)
+  {
+    std::vector<vertex_descriptor> cv(crossing_.size());
+    // input edge of every vertex added (-1: an input vertex)
+    auto on_edge = get(CGAL::dynamic_vertex_property_t<int>(), tm_);
+    for(vertex_descriptor w : vertices(tm_)) put(on_edge, w, -1);
+    const std::size_t first = steiner.size();
+    for(std::size_t e = 0; e < eh_.size(); ++e)
+    {
+      if(cross_[e].empty()) continue;
+      split_range(source(eh_[e], tm_), target(eh_[e], tm_), e, 0, cross_[e].size(), cv, on_edge, steiner);
+    }
+    if(steiner.size() == first) return paths.empty();
+    std::vector<std::pair<vertex_descriptor, vertex_descriptor> > diagonals;
+    for(std::size_t f = 0; f < chords_.size(); ++f)
+      for(const Chord& c : chords_[f])
+      {
+        const vertex_descriptor a = c.a.corner ? c.a.v : cv[static_cast<std::size_t>(c.a.crossing)];
+        const vertex_descriptor b = c.b.corner ? c.b.v : cv[static_cast<std::size_t>(c.b.crossing)];
+        if(!connect_in_face(a, b, tm_)) return false;
+        diagonals.emplace_back(a, b);
+      }
+    // faces of more than three vertices: ears whose new edge does not lie along one input edge
+    auto common_input_edge = [&](vertex_descriptor a, vertex_descriptor b) -> bool
+    {
+      const int ea = get(on_edge, a), eb = get(on_edge, b);
+      if(ea >= 0 && eb >= 0) return ea == eb;
+      if(ea < 0 && eb < 0) return true; // two corners of one input face: joined by an input edge
+      const int ep = ea >= 0 ? ea : eb;
+      const vertex_descriptor c = ea >= 0 ? b : a;
+      const halfedge_descriptor h = eh_[static_cast<std::size_t>(ep)];
+      return source(h, tm_) == c || target(h, tm_) == c;
+    };
+    std::vector<face_descriptor> work(faces(tm_).begin(), faces(tm_).end());
+    std::size_t guard = 0;
+    while(!work.empty())
+    {
+      if(++guard > 8 * num_faces(tm_) + 1000) return false;
+      const face_descriptor f = work.back(); work.pop_back();
+      std::vector<halfedge_descriptor> hs;
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm_), tm_)) hs.push_back(h);
+      if(hs.size() <= 3) continue;
+      const std::size_t k = hs.size();
+      bool cut = false;
+      for(std::size_t i = 0; i < k && !cut; ++i)
+      {
+        // the ear at target(hs[i]): from target(hs[i-1]) to target(hs[i+1])
+        const halfedge_descriptor h1 = hs[(i + k - 1) % k], h2 = hs[(i + 1) % k];
+        const vertex_descriptor a = target(h1, tm_), b = target(h2, tm_);
+        if(common_input_edge(a, b)) continue;
+        const halfedge_descriptor hn = CGAL::Euler::split_face(h1, h2, tm_);
+        diagonals.emplace_back(a, b);
+        work.push_back(face(hn, tm_));
+        work.push_back(face(opposite(hn, tm_), tm_));
+        cut = true;
+      }
+      if(!cut) return false;
+    }
+    steiner.back().diagonals = std::move(diagonals);
+    paths.assign(ends.size(), std::vector<vertex_descriptor>());
+    for(std::size_t c = 0; c < ends.size(); ++c)
+    {
+      if(curve_crossings_.size() <= c) return false;
+      paths[c].push_back(ends[c].first);
+      for(int x : curve_crossings_[c]) paths[c].push_back(cv[static_cast<std::size_t>(x)]);
+      paths[c].push_back(ends[c].second);
+    }
+    return true;
+  }
+
+private:
+  // the outgoing halfedges of a node vertex in counterclockwise order (a border vertex: from the one
+  // after the border), and the index of each
+  struct Star
+  {
+    std::vector<halfedge_descriptor> out;
+    std::size_t index_of(halfedge_descriptor g, const TM&) const
+    {
+      const auto it = std::find(out.begin(), out.end(), g);
+      return it == out.end() ? std::size_t(-1) : static_cast<std::size_t>(it - out.begin());
+    }
+  };
+  Star star(vertex_descriptor u) const
+  {
+    Star s;
+    outgoing_ccw(u, tm_, s.out);
+    // a border vertex: from the border edge towards the next border vertex (interior on its left)
+    for(std::size_t k = 0; k < s.out.size(); ++k)
+      if(!is_border(s.out[k], tm_) && is_border(opposite(s.out[k], tm_), tm_))
+      {
+        std::rotate(s.out.begin(), s.out.begin() + static_cast<std::ptrdiff_t>(k), s.out.end());
+        break;
+      }
+    return s;
+  }
+  // angular keys around a node: (index of the face's outgoing halfedge, doubled position along the
+  // opposite edge from the vertex after the node); the sector is the open interval between two keys
+  struct Sector
+  {
+    bool all = true, border = false;
+    std::int64_t lo = 0, hi = 0, M = 0; // keys j * W + p
+    static constexpr std::int64_t W = std::int64_t(1) << 32;
+    bool contains(std::size_t j, std::int64_t p) const
+    {
+      const std::int64_t k = static_cast<std::int64_t>(j) * W + p;
+      if(border) return k > lo && k < hi;
+      if(all) return true;
+      const std::int64_t x = ((k - lo) % M + M) % M, y = ((hi - lo) % M + M) % M;
+      return x != 0 && (y == 0 ? true : x < y);
+    }
+  };
+  Sector sector(const Star& s, int before, int after) const
+  {
+    Sector sec;
+    sec.M = static_cast<std::int64_t>(s.out.size()) * Sector::W;
+    const vertex_descriptor u = s.out.empty() ? GT::null_vertex() : source(s.out.front(), tm_);
+    const bool bv = u != GT::null_vertex() && CGAL::is_border(u, tm_) != boost::none;
+    auto key = [&](int c) -> std::int64_t
+    {
+      const auto& n = node_curves_.at(std::make_pair(u, c)); // (outgoing halfedge, crossing)
+      const std::size_t j = s.index_of(n.first, tm_);
+      const halfedge_descriptor o = next(n.first, tm_);
+      return static_cast<std::int64_t>(j) * Sector::W + 2 * (position_along(o, n.second) + 1) - 1;
+    };
+    if(bv)
+    {
+      sec.border = true;
+      sec.lo = before >= 0 ? key(before) : -1;
+      sec.hi = after >= 0 ? key(after) : sec.M;
+      return sec;
+    }
+    if(before < 0 && after < 0) return sec;
+    sec.all = false;
+    sec.lo = key(before >= 0 ? before : after);
+    sec.hi = key(after >= 0 ? after : before);
+    return sec;
+  }
+
+  // boundary positions in a face, doubled: point k at 2k, the gap after it at 2k+1. Points: corner
+  // source(h0), crossings along h0, corner source(h1), ... with h0 = fh_[f]
+  std::int64_t corner_position(face_descriptor f, vertex_descriptor c)
+  {
+    halfedge_descriptor h = fh_[static_cast<std::size_t>(get(fid_, f))];
+    std::int64_t p = 0;
+    for(int k = 0; k < 3; ++k, h = next(h, tm_))
+    {
+      if(source(h, tm_) == c) return 2 * p;
+      p += 1 + static_cast<std::int64_t>(cross_[static_cast<std::size_t>(get(hid_, h))].size());
+    }
+    return -1;
+  }
+  // offset of the corner source(hk) in the face of hk
+  std::int64_t offset_of(halfedge_descriptor hk)
+  {
+    const face_descriptor f = face(hk, tm_);
+    halfedge_descriptor h = fh_[static_cast<std::size_t>(get(fid_, f))];
+    std::int64_t p = 0, found = -1;
+    for(int k = 0; k < 3; ++k, h = next(h, tm_))
+    {
+      if(h == hk) found = p;
+      p += 1 + static_cast<std::int64_t>(cross_[static_cast<std::size_t>(get(hid_, h))].size());
+    }
+    return found;
+  }
+  // gap i along hk (between its i-th and (i+1)-th crossing, from source(hk)), doubled position
+  std::int64_t gap_position(halfedge_descriptor hk, std::size_t i)
+  {
+    return 2 * (offset_of(hk) + static_cast<std::int64_t>(i)) + 1;
+  }
+  // index of crossing x along hk (from source(hk))
+  std::int64_t position_along(halfedge_descriptor hk, int x) const
+  {
+    const std::size_t e = static_cast<std::size_t>(get(hid_, hk));
+    const std::size_t k = static_cast<std::size_t>(cpos_[static_cast<std::size_t>(x)]);
+    return (hk == eh_[e]) ? static_cast<std::int64_t>(k) : static_cast<std::int64_t>(cross_[e].size() - 1 - k);
+  }
+  std::int64_t end_position(face_descriptor f, const End& x)
+  {
+    if(x.corner) return corner_position(f, x.v);
+    const std::size_t e = crossing_[static_cast<std::size_t>(x.crossing)].edge;
+    halfedge_descriptor hk = eh_[e];
+    if(face(hk, tm_) != f) hk = opposite(hk, tm_);
+    return 2 * (offset_of(hk) + 1 + position_along(hk, x.crossing));
+  }
+  // A face's chords as boundary positions, and its pieces: the label of every gap of its three edges
+  // (gaps of one piece have one label) and the gaps of each label. The chords are a non-crossing
+  // matching of the boundary once a corner with several chords is split into one point per chord
+  // (ordered so that they do not cross); along the boundary, each chord's first end opens a piece and
+  // its second closes it, like parentheses. Cached until a curve crosses one of the face's edges.
+  struct Face_data
+  {
+    bool valid = false;
+    std::array<halfedge_descriptor, 3> h;
+    std::vector<std::array<std::int64_t, 2> > chords;
+    std::int64_t size = 0;
+    std::array<std::vector<int>, 3> label;             // per edge (in h's order), per gap along it
+    std::vector<std::vector<std::pair<int, int> > > members; // per label: (edge, gap)
+    std::size_t index(halfedge_descriptor g, const TM&) const
+    {
+      return g == h[0] ? 0 : (g == h[1] ? 1 : 2);
+    }
+  };
+  const Face_data& face_data(face_descriptor f)
+  {
+    const std::size_t fi = static_cast<std::size_t>(get(fid_, f));
+    Face_data& fd = fdata_[fi];
+    if(fd.valid) return fd;
+    fd = Face_data();
+    fd.valid = true;
+    fd.h[0] = fh_[fi]; fd.h[1] = next(fd.h[0], tm_); fd.h[2] = next(fd.h[1], tm_);
+    for(const Chord& c : chords_[fi]) fd.chords.push_back({ { end_position(f, c.a), end_position(f, c.b) } });
+    std::int64_t p = 0;
+    std::array<std::int64_t, 3> off;
+    for(int k = 0; k < 3; ++k)
+    {
+      off[static_cast<std::size_t>(k)] = p;
+      p += 1 + static_cast<std::int64_t>(cross_[static_cast<std::size_t>(get(hid_, fd.h[static_cast<std::size_t>(k)]))].size());
+    }
+    fd.size = 2 * p;
+    // events: (key, kind): kind >= 0 chord end (chord index), kind < 0 gap -1 - g (g = 3 * gap index + edge)
+    const std::int64_t S = std::int64_t(1) << 24;
+    std::vector<std::pair<std::int64_t, std::int64_t> > ev;
+    std::map<std::int64_t, std::vector<std::pair<std::int64_t, std::size_t> > > at_corner; // corner pos -> (partner distance, chord)
+    for(std::size_t c = 0; c < fd.chords.size(); ++c)
+      for(int t = 0; t < 2; ++t)
+      {
+        const std::int64_t a = fd.chords[c][static_cast<std::size_t>(t)], b = fd.chords[c][static_cast<std::size_t>(1 - t)];
+        const bool corner = (a == 2 * off[0] || a == 2 * off[1] || a == 2 * off[2]);
+        if(corner) at_corner[a].push_back(std::make_pair(((b - a) % fd.size + fd.size) % fd.size, c));
+        else ev.push_back(std::make_pair(a * S, static_cast<std::int64_t>(c)));
+      }
+    for(auto& ac : at_corner)
+    {
+      // the chord to the farthest partner comes first: the sub-points then do not cross
+      std::sort(ac.second.begin(), ac.second.end(), [](const std::pair<std::int64_t, std::size_t>& x, const std::pair<std::int64_t, std::size_t>& y)
+                { return x.first > y.first; });
+      for(std::size_t k = 0; k < ac.second.size(); ++k)
+        ev.push_back(std::make_pair(ac.first * S + static_cast<std::int64_t>(k), static_cast<std::int64_t>(ac.second[k].second)));
+    }
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t n = cross_[static_cast<std::size_t>(get(hid_, fd.h[static_cast<std::size_t>(k)]))].size();
+      fd.label[static_cast<std::size_t>(k)].assign(n + 1, 0);
+      for(std::size_t i = 0; i <= n; ++i)
+        ev.push_back(std::make_pair((2 * (off[static_cast<std::size_t>(k)] + static_cast<std::int64_t>(i)) + 1) * S,
+                                    -1 - static_cast<std::int64_t>(3 * i + static_cast<std::size_t>(k))));
+    }
+    std::sort(ev.begin(), ev.end());
+    std::vector<char> opened(fd.chords.size(), 0);
+    std::vector<int> stack;
+    int labels = 1;
+    fd.members.assign(1, std::vector<std::pair<int, int> >());
+    for(const auto& x : ev)
+    {
+      if(x.second >= 0)
+      {
+        const std::size_t c = static_cast<std::size_t>(x.second);
+        if(!opened[c]) { opened[c] = 1; stack.push_back(labels++); fd.members.emplace_back(); }
+        else if(!stack.empty()) stack.pop_back();
+      }
+      else
+      {
+        const std::size_t g = static_cast<std::size_t>(-1 - x.second);
+        const int l = stack.empty() ? 0 : stack.back();
+        fd.label[g % 3][g / 3] = l;
+        fd.members[static_cast<std::size_t>(l)].push_back(std::make_pair(static_cast<int>(g % 3), static_cast<int>(g / 3)));
+      }
+    }
+    return fd;
+  }
+  // whether the chord (a, b) crosses one of `ch` (positions on a cycle of length n): their ends
+  // interleave; chords sharing an end do not cross
+  static bool crosses_any(const std::vector<std::array<std::int64_t, 2> >& ch, std::int64_t a, std::int64_t b, std::int64_t n)
+  {
+    auto inside = [&](std::int64_t x) { const std::int64_t d = ((x - a) % n + n) % n, w = ((b - a) % n + n) % n; return d > 0 && d < w; };
+    for(const auto& c : ch)
+    {
+      if(c[0] == a || c[0] == b || c[1] == a || c[1] == b) continue;
+      if(inside(c[0]) != inside(c[1])) return true;
+    }
+    return false;
+  }
+  void relax(std::priority_queue<std::pair<double, std::int64_t>, std::vector<std::pair<double, std::int64_t> >,
+                                 std::greater<std::pair<double, std::int64_t> > >& q,
+             std::size_t s, double d, std::int64_t from)
+  {
+    if(!(d < dist_[s])) return;
+    dist_[s] = d; pred_[s] = from;
+    q.push(std::make_pair(d, static_cast<std::int64_t>(s)));
+  }
+  void commit(int curve, vertex_descriptor u, vertex_descriptor v, const std::vector<std::size_t>& states,
+              const std::vector<std::size_t>& base)
+  {
+    // decode the states: edge, gap index along eh, side
+    struct G { std::size_t e, i, side; int id; };
+    std::vector<G> gs;
+    for(std::size_t s : states)
+    {
+      const std::size_t gap = s / 2;
+      const std::size_t e = static_cast<std::size_t>(std::upper_bound(base.begin(), base.end(), gap) - base.begin()) - 1;
+      gs.push_back(G{ e, gap - base[e], s % 2, -1 });
+    }
+    for(G& g : gs) { g.id = static_cast<int>(crossing_.size()); crossing_.push_back(Crossing{ g.e, curve }); }
+    // insert the crossings: per edge by decreasing gap index, so that earlier indices stay valid
+    std::vector<std::size_t> order(gs.size());
+    for(std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y)
+              { return gs[x].e != gs[y].e ? gs[x].e < gs[y].e : gs[x].i > gs[y].i; });
+    for(std::size_t k : order)
+      cross_[gs[k].e].insert(cross_[gs[k].e].begin() + static_cast<std::ptrdiff_t>(gs[k].i), gs[k].id);
+    cpos_.resize(crossing_.size());
+    for(const G& g : gs)
+    {
+      for(std::size_t k = 0; k < cross_[g.e].size(); ++k) cpos_[static_cast<std::size_t>(cross_[g.e][k])] = static_cast<int>(k);
+      for(halfedge_descriptor h : { eh_[g.e], opposite(eh_[g.e], tm_) })
+        if(!is_border(h, tm_)) fdata_[static_cast<std::size_t>(get(fid_, face(h, tm_)))].valid = false;
+    }
+    // chords: u to the first crossing (in the face before it), between consecutive crossings (in the
+    // face the first enters), the last to v (in the face it enters)
+    auto face_before = [&](const G& g) { const halfedge_descriptor h = g.side == 0 ? opposite(eh_[g.e], tm_) : eh_[g.e]; return face(h, tm_); };
+    auto face_after = [&](const G& g) { const halfedge_descriptor h = g.side == 0 ? eh_[g.e] : opposite(eh_[g.e], tm_); return face(h, tm_); };
+    auto add = [&](face_descriptor f, End a, End b) { chords_[static_cast<std::size_t>(get(fid_, f))].push_back(Chord{ a, b }); };
+    const End eu{ true, u, -1 }, ev{ true, v, -1 };
+    add(face_before(gs.front()), eu, End{ false, GT::null_vertex(), gs.front().id });
+    for(std::size_t k = 0; k + 1 < gs.size(); ++k)
+      add(face_after(gs[k]), End{ false, GT::null_vertex(), gs[k].id }, End{ false, GT::null_vertex(), gs[k + 1].id });
+    add(face_after(gs.back()), End{ false, GT::null_vertex(), gs.back().id }, ev);
+    // the curve at its nodes: the outgoing halfedge of the face it leaves (or enters) through
+    {
+      const face_descriptor f0 = face_before(gs.front());
+      halfedge_descriptor g = GT::null_halfedge();
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f0, tm_), tm_)) if(source(h, tm_) == u) g = h;
+      node_curves_[std::make_pair(u, curve)] = std::make_pair(g, gs.front().id);
+      const face_descriptor f1 = face_after(gs.back());
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f1, tm_), tm_)) if(source(h, tm_) == v) g = h;
+      node_curves_[std::make_pair(v, curve)] = std::make_pair(g, gs.back().id);
+    }
+    if(curve_crossings_.size() <= static_cast<std::size_t>(curve)) curve_crossings_.resize(static_cast<std::size_t>(curve) + 1);
+    curve_crossings_[static_cast<std::size_t>(curve)].clear();
+    for(const G& g : gs) curve_crossings_[static_cast<std::size_t>(curve)].push_back(g.id);
+  }
+  // splits the edge (a, b), a piece of input edge e, at its midpoint for the crossing of median rank
+  // among cross_[e][lo, hi), then the two halves for the others
+  template <class OnEdge>
+  void split_range(vertex_descriptor a, vertex_descriptor b, std::size_t e, std::size_t lo, std::size_t hi,
+                   std::vector<vertex_descriptor>& cv, OnEdge& on_edge, std::vector<Steiner_vertex<TM> >& steiner)
+  {
+    if(lo >= hi) return;
+    const std::size_t m = lo + (hi - lo) / 2;
+    const auto pa = get(vpm_, a), pb = get(vpm_, b);
+    typedef typename CGAL::Kernel_traits<typename std::decay<decltype(pa)>::type>::Kernel K;
+    const halfedge_descriptor hn = CGAL::Euler::split_edge(halfedge(a, b, tm_).first, tm_);
+    const vertex_descriptor x = target(hn, tm_);
+    put(vpm_, x, K().construct_midpoint_3_object()(pa, pb));
+    put(on_edge, x, static_cast<int>(e));
+    Steiner_vertex<TM> sv{ x, a, b, 0.5 };
+    sv.join_faces = false;
+    steiner.push_back(std::move(sv));
+    cv[static_cast<std::size_t>(cross_[e][m])] = x;
+    split_range(a, x, e, lo, m, cv, on_edge, steiner);
+    split_range(x, b, e, m + 1, hi, cv, on_edge, steiner);
+  }
+  std::array<double, 3> point(vertex_descriptor v) const
+  {
+    const auto p = get(vpm_, v);
+    return { { CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) } };
+  }
+  static double length(const std::array<double, 3>& p, const std::array<double, 3>& q)
+  {
+    return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+  }
+
+  TM& tm_;
+  VPM vpm_;
+  typename boost::property_map<TM, CGAL::dynamic_halfedge_property_t<int> >::type hid_;
+  typename boost::property_map<TM, CGAL::dynamic_face_property_t<int> >::type fid_;
+  std::vector<halfedge_descriptor> eh_, fh_;
+  std::vector<std::array<double, 3> > mid_;
+  std::vector<std::vector<int> > cross_;      // per input edge: crossing ids from source(eh_) to target(eh_)
+  std::vector<std::vector<Chord> > chords_;   // per input face
+  std::vector<Crossing> crossing_;
+  std::vector<int> cpos_;                     // per crossing: its index in cross_ of its edge
+  std::vector<Face_data> fdata_;              // per input face, cached
+  std::vector<std::vector<int> > curve_crossings_;
+  std::map<std::pair<vertex_descriptor, int>, std::pair<halfedge_descriptor, int> > node_curves_;
+  std::vector<double> dist_;
+  std::vector<std::int64_t> pred_;
+  double step_ = 0;                           // the cost of one crossing
+};
+
+/// traces the partition edges as curves crossing the input edges, then refines the mesh once (see above)
+template <class TriangleMesh, class VertexPointMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Error_code trace_paths_overlay(TriangleMesh& tm, VertexPointMap vpm,
+                               const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& nodes,
+                               const std::vector<std::array<std::size_t, 2> >& edges,
+                               const std::vector<std::vector<std::size_t> >& rotation,
+                               std::vector<std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> >& paths,
+                               std::vector<Steiner_vertex<TriangleMesh> >& steiner,
+                               const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  const double max_seconds = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
+                                              std::numeric_limits<double>::infinity());
+  if(!(max_seconds >= 0)) return ERROR_WRONG_PARAMETER;
+  CGAL::Real_timer timer;
+  timer.start();
+  paths.assign(edges.size(), std::vector<vertex_descriptor>());
+  Error_code status = check_triangulated_disk(tm);
+  if(status != OK) return status;
+  const std::size_t max_splits = choose_parameter(get_parameter(np, internal_np::maximum_steiner_vertices),
+                                                  128 * static_cast<std::size_t>(num_edges(tm)) + 10000);
+  const double penalty_units = choose_parameter(get_parameter(np, internal_np::split_penalty), 4.);
+  if(!(penalty_units >= 0) || !std::isfinite(penalty_units)) return ERROR_WRONG_PARAMETER;
+  std::vector<std::size_t> order;
+  {
+    Path_network<TriangleMesh> net(tm);
+    std::vector<std::vector<std::size_t> > loops;
+    status = mark_nodes_and_check_partition(tm, net, nodes, edges, rotation, loops);
+    if(status != OK) return status;
+    if(loops.size() != 1) return ERROR_WRONG_PARAMETER; // a disk only
+    tracing_order(vpm, net, nodes, edges, loops, false, order);
+  }
+  Overlay_tracer<TriangleMesh, VertexPointMap> tracer(tm, vpm);
+  tracer.set_crossing_cost(penalty_units);
+  std::vector<char> traced(edges.size(), 0);
+  auto neighbours = [&](std::size_t i, std::size_t e, int& before, int& after)
+  {
+    const std::vector<std::size_t>& r = rotation[i];
+    const std::size_t k = static_cast<std::size_t>(std::find(r.begin(), r.end(), e) - r.begin());
+    traced_neighbours(r, k, CGAL::is_border(nodes[i], tm) != boost::none, traced, before, after);
+  };
+  for(std::size_t e : order)
+  {
+    if(timer.time() > max_seconds) return ERROR_BUDGET_EXHAUSTED;
+    const std::size_t a = edges[e][0], b = edges[e][1];
+    int ba, aa, bb, ab;
+    neighbours(a, e, ba, aa);
+    neighbours(b, e, bb, ab);
+    // at b the curve arrives: its counterclockwise order around b is the rotation's
+    if(!tracer.trace(static_cast<int>(e), nodes[a], ba, aa, nodes[b], bb, ab)) return ERROR_PATH_TRACING_FAILED;
+    traced[e] = 1;
+    if(tracer.crossings() > max_splits) return ERROR_BUDGET_EXHAUSTED;
+  }
+  std::vector<std::pair<vertex_descriptor, vertex_descriptor> > ends;
+  for(const auto& e : edges) ends.emplace_back(nodes[e[0]], nodes[e[1]]);
+  if(!edges.empty() && !tracer.realize(ends, paths, steiner)) return ERROR_PATH_TRACING_FAILED;
+  if(check_traced_paths(tm, nodes, edges, rotation, paths) != OK) return ERROR_PATH_TRACING_FAILED;
+  return OK;
+}
+
+} // namespace internal
+} // namespace Progressive_embedding
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CONSTRAINED_TRACE_OVERLAY_H

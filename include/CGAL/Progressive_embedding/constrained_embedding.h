@@ -15,8 +15,9 @@
 ///     (internal::partition_domain); a clockwise border is mirrored (x -> -x, exact) so that the
 ///     polygons' counterclockwise order is the orientation of the mesh faces, and mirrored back;
 ///  3. on a Surface_mesh copy, the polygons' interior edges traced as paths of mesh edges
-///     (internal::trace_paths, edge splits where blocked), then the chords along one path or one
-///     straight border side split (no map into a convex polygon keeps them);
+///     (internal::trace_paths, edge splits where blocked; when that runs out of its budget, as curves
+///     over the input edges refined once, internal::trace_paths_overlay), then the chords along one
+///     path or one straight border side split (no map into a convex polygon keeps them);
 ///  4. path vertices placed on their segments by 3D arc length (internal::place_path_vertices):
 ///     in floating point they are only within an ulp of the segment, so each patch border is a
 ///     simple polygon convex up to rounding; a face whose three vertices are on the path network and
@@ -439,7 +440,9 @@ int border_rotation_indices(const TriangleMesh& tm, VertexUVMap uvm, VertexIndex
 ///
 /// The computation runs on a `Surface_mesh` copy: on any error `tm` and `uvm` are left exactly as they were. On
 /// success the edge splits are replayed on `tm` (`Euler::split_edge` at the midpoint, then `Euler::split_face`
-/// joining the new vertex to the opposite corner of each incident face): the input vertices keep their
+/// joining the new vertex to the opposite corner of each incident face; or, when the paths were traced as curves
+/// over the input edges, several midpoint splits along one input edge followed by `Euler::split_face` across the
+/// faces): the input vertices keep their
 /// descriptors and 3D points and come first in the vertex order, the new vertices (at edge midpoints, so on the
 /// input surface) follow; the uv of every vertex is written. The map is certified by `check_embedding()`, every
 /// constrained vertex is bit-exactly at its target and, with `Border_shape::FIXED`, the border bit-exactly
@@ -521,11 +524,12 @@ int border_rotation_indices(const TriangleMesh& tm, VertexUVMap uvm, VertexIndex
 ///   \cgalParamNBegin{maximum_steiner_vertices}
 ///     \cgalParamDescription{the largest number of vertices path tracing may add. The paths are traced as
 ///                           shortest paths first; when these exceed their budget or add more than a tenth of the
-///                           vertices, they are traced again, guided by a drawing of the partition, and the result with
-///                           fewer Steiner vertices is kept. A value given here bounds both tracings}
+///                           vertices, they are traced again as curves over the input edges (meshes without holes),
+///                           then guided by a drawing of the partition, and the result with the fewest Steiner vertices
+///                           is kept. A value given here bounds every tracing}
 ///     \cgalParamType{`std::size_t`}
-///     \cgalParamDefault{shortest paths: 4 times the number of edges plus 1000; guided paths: 32 times the number of
-///                       edges plus 10000}
+///     \cgalParamDefault{shortest paths: 4 times the number of edges plus 1000; curves over the input edges: 128 times
+///                       the number of edges plus 10000; guided paths: 32 times the number of edges plus 10000}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{optimize}
 ///     \cgalParamDescription{whether to optimize the distortion of the certified map (border and constraints fixed)}

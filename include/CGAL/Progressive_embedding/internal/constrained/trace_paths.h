@@ -13,9 +13,11 @@
 //
 // Interface (everything in CGAL::Progressive_embedding::internal unless said otherwise):
 //
-//   Steiner_vertex<TriangleMesh>       { v; a; b; t; }  v = (1-t) a + t b in 3D, a and b the endpoints
-//                                       of the split edge as they were at split time (either may be an
-//                                       earlier Steiner vertex); t is always 0.5 here.
+//   Steiner_vertex<TriangleMesh>       { v; a; b; t; join_faces; diagonals }  v = (1-t) a + t b in 3D, a
+//                                       and b the endpoints of the split edge as they were at split time
+//                                       (either may be an earlier Steiner vertex); t is always 0.5 here;
+//                                       join_faces and diagonals as in refinement.h (here always joined,
+//                                       no diagonal; trace_overlay.h uses the others).
 //   Error_code trace_paths(tm, vpm, nodes, edges, rotation, paths, steiner, np)
 //       tm      : triangulated topological disk, or connected genus-0 surface with several border
 //                 cycles (one of them the domain's outer border, the others its holes; the tracing
@@ -102,8 +104,8 @@
 // plain hop-count shortest paths (the authors' protocol) adds 13962 (62-1540 per run). Partitions
 // whose interior nodes are mirrored relative to the surface force winding paths: 3 and 10 mirrored
 // nodes on an 8k-vertex disk add 84 and 397 Steiner vertices, 50 mirrored nodes about 22k (0.15 s):
-// the paths squeeze through corridors between earlier paths, one split per edge (a known weakness;
-// the split budget turns it into ERROR_BUDGET_EXHAUSTED). An 8k-vertex disk with two holes (every
+// the paths squeeze through corridors between earlier paths, one split per edge (the split budget
+// turns it into ERROR_BUDGET_EXHAUSTED; trace_overlay.h traces such partitions without compounding). An 8k-vertex disk with two holes (every
 // hole vertex a node) and 3, 10, 50 interior nodes: 46, 121 and 193 Steiner vertices, under 45 ms.
 
 #include <CGAL/Progressive_embedding/Error_code.h>

@@ -263,10 +263,8 @@ void turning_vertices(const std::vector<Point_2>& P, std::vector<std::size_t>& t
     const Point_2& a = P[(i + n - 1) % n];
     const Point_2& b = P[i];
     const Point_2& c = P[(i + 1) % n];
-    const double ux = CGAL::to_double(b.x()) - CGAL::to_double(a.x()), uy = CGAL::to_double(b.y()) - CGAL::to_double(a.y());
-    const double vx = CGAL::to_double(c.x()) - CGAL::to_double(b.x()), vy = CGAL::to_double(c.y()) - CGAL::to_double(b.y());
-    const double cross = ux * vy - uy * vx, dot = ux * vx + uy * vy;
-    if(!(dot > 0) || !(std::abs(cross) < corner_turn_margin() * std::sqrt(ux * ux + uy * uy) * std::sqrt(vx * vx + vy * vy)))
+    if(!flat_by_margin(CGAL::to_double(b.x()) - CGAL::to_double(a.x()), CGAL::to_double(b.y()) - CGAL::to_double(a.y()),
+                       CGAL::to_double(c.x()) - CGAL::to_double(b.x()), CGAL::to_double(c.y()) - CGAL::to_double(b.y())))
       turning.push_back(i);
   }
 }
@@ -287,9 +285,8 @@ bool path_corners_turn_by_margin(const Domain_partition& partition, const std::v
       if((sides[f][km] < 0) == (sides[f][k] < 0)) continue; // the border's own corner, or two paths
       if(P[km] >= B.size() || P[k] >= B.size() || P[kp] >= B.size()) continue; // a target: no border side
       const Point_2 &a = B[P[km]], &u = B[P[k]], &b = B[P[kp]];
-      const double ax = CGAL::to_double(u.x()) - CGAL::to_double(a.x()), ay = CGAL::to_double(u.y()) - CGAL::to_double(a.y());
-      const double bx = CGAL::to_double(b.x()) - CGAL::to_double(u.x()), by = CGAL::to_double(b.y()) - CGAL::to_double(u.y());
-      if(!(ax * by - ay * bx > corner_turn_margin() * std::sqrt(ax * ax + ay * ay) * std::sqrt(bx * bx + by * by)))
+      if(!turns_left_by_margin(CGAL::to_double(u.x()) - CGAL::to_double(a.x()), CGAL::to_double(u.y()) - CGAL::to_double(a.y()),
+                               CGAL::to_double(b.x()) - CGAL::to_double(u.x()), CGAL::to_double(b.y()) - CGAL::to_double(u.y())))
         return false;
     }
   }

@@ -186,6 +186,21 @@ namespace internal {
 /// less is flat up to the rounding of the path vertices placed next to it (see partition_domain).
 inline double corner_turn_margin() { return 0x1p-20; }
 
+/// Whether a corner turns left by a sine above corner_turn_margin(), in double precision from its two
+/// edge vectors: (ax, ay) into the corner, (bx, by) out of it.
+inline bool turns_left_by_margin(double ax, double ay, double bx, double by)
+{
+  return ax * by - ay * bx > corner_turn_margin() * std::sqrt(ax * ax + ay * ay) * std::sqrt(bx * bx + by * by);
+}
+
+/// Whether a corner is flat up to corner_turn_margin(): it goes on forwards and the sine of its turn, either
+/// way, is below the margin (same edge vectors as turns_left_by_margin()).
+inline bool flat_by_margin(double ax, double ay, double bx, double by)
+{
+  return ax * bx + ay * by > 0 &&
+         std::abs(ax * by - ay * bx) < corner_turn_margin() * std::sqrt(ax * ax + ay * ay) * std::sqrt(bx * bx + by * by);
+}
+
 /// The target domain cut into convex polygons (see the comment at the top of this file).
 /// Nodes 0..nb-1 are the border points in the given order, nodes nb..nb+nt-1 the targets in the
 /// given order. Every geometric order below is counterclockwise in the plane, whatever the
@@ -364,10 +379,8 @@ Error_code merge_into_convex_polygons(const Points& point, std::size_t nb, std::
   // still decided by the exact orientation. Between two interior edges no margin: such a corner
   // nearly flat comes with a sliver (e.g. a target within rounding of the border), whose refusal
   // would only keep shorter edges.
-  const double margin = corner_turn_margin();
   auto robust_turn = [&](std::size_t p, std::size_t u, std::size_t q) {
-    const double ax = c[u][0] - c[p][0], ay = c[u][1] - c[p][1], bx = c[q][0] - c[u][0], by = c[q][1] - c[u][1];
-    return ax * by - ay * bx > margin * std::sqrt(ax * ax + ay * ay) * std::sqrt(bx * bx + by * by);
+    return turns_left_by_margin(c[u][0] - c[p][0], c[u][1] - c[p][1], c[q][0] - c[u][0], c[q][1] - c[u][1]);
   };
   auto convex_corner = [&](std::size_t p, std::size_t u, std::size_t q, bool at_path) {
     const CGAL::Orientation o = exact_orientation(point(p), point(u), point(q));

@@ -20,6 +20,7 @@
 
 #include <array>
 #include <cstddef>
+#include <iterator>
 #include <unordered_map>
 #include <vector>
 
@@ -184,6 +185,12 @@ Error_code make_indexed_patch(const TriangleMesh& tm, const FaceRange& patch_fac
   std::unordered_map<face_descriptor, std::size_t> fid;
   std::unordered_map<vertex_descriptor, std::size_t> vid;
   std::vector<face_descriptor> F;
+  {
+    const auto n = std::distance(std::begin(patch_faces), std::end(patch_faces));
+    fid.reserve(static_cast<std::size_t>(n));
+    vid.reserve(static_cast<std::size_t>(n) / 2 + 16); // V ~ F/2 + border/2 in a triangulated disk
+    F.reserve(static_cast<std::size_t>(n));
+  }
   for(face_descriptor f : patch_faces)
   {
     if(f == GT::null_face()) return ERROR_WRONG_PARAMETER;

@@ -75,7 +75,7 @@ class Overlay_tracer
   // a chord end: a corner (the input vertex) or a crossing (its id)
   struct End { bool corner; vertex_descriptor v; int crossing; };
   struct Chord { End a, b; };
-  struct Crossing { std::size_t edge; int curve; };
+  struct Crossing { std::size_t edge; };
 
 public:
   Overlay_tracer(TM& tm, VPM vpm)
@@ -106,9 +106,18 @@ public:
   // 3D length between the crossed edges' midpoints
   void set_crossing_cost(double w)
   {
-    double sum = 0;
-    for(std::size_t e = 0; e < eh_.size(); ++e) sum += length(point(source(eh_[e], tm_)), point(target(eh_[e], tm_)));
+    double sum = 0, longest = 0;
+    for(std::size_t e = 0; e < eh_.size(); ++e)
+    {
+      const double l = length(point(source(eh_[e], tm_)), point(target(eh_[e], tm_)));
+      sum += l;
+      longest = (std::max)(longest, l);
+    }
     step_ = w * (eh_.empty() ? 1. : sum / double(eh_.size()));
+    // A move between two edges of a triangle spans at most half its longest edge, so a curve whose
+    // midpoints are D apart makes at least D / (longest / 2) moves: D * (1 + step_ / (longest / 2)),
+    // less one step for the last piece (midpoint to corner), bounds the remaining cost from below.
+    heuristic_factor_ = longest > 0 ? 1. + step_ / (0.5 * longest) : 1.;
   }
 
   // One curve from node vertex u to node vertex v. Sectors: the curve must leave u strictly between
@@ -118,9 +127,13 @@ public:
   bool trace(int curve, vertex_descriptor u, int before_u, int after_u,
              vertex_descriptor v, int before_v, int after_v)
   {
-    // gap states: 2 * (gap_base[e] + i) + side, side 0 entering face(eh[e]), 1 entering the other face
-    std::vector<std::size_t> base(eh_.size() + 1, 0);
+    // gap states: 2 * (base[e] + i) + side, side 0 entering face(eh[e]), 1 entering the other face
+    std::vector<std::size_t>& base = base_;
+    base.assign(eh_.size() + 1, 0);
     for(std::size_t e = 0; e < eh_.size(); ++e) base[e + 1] = base[e] + cross_[e].size() + 1;
+    gap_edge_.resize(base.back());
+    for(std::size_t e = 0; e < eh_.size(); ++e)
+      std::fill(gap_edge_.begin() + static_cast<std::ptrdiff_t>(base[e]), gap_edge_.begin() + static_cast<std::ptrdiff_t>(base[e + 1]), static_cast<int>(e));
     const std::size_t S = 2 * base.back();
     dist_.assign(S, std::numeric_limits<double>::infinity());
     pred_.assign(S, -1);
@@ -138,16 +151,17 @@ public:
       const std::size_t e = static_cast<std::size_t>(get(hid_, o));
       if(is_border(opposite(o, tm_), tm_)) continue; // a curve does not cross the border
       const Face_data& fd = face_data(face(g, tm_));
-      const std::int64_t cu = corner_position(face(g, tm_), u);
+      const std::size_t ku = fd.index(g), ko = fd.index(o);
+      const std::int64_t cu = 2 * fd.off[ku];
       const std::size_t n = cross_[e].size();
       for(std::size_t i = 0; i <= n; ++i) // gap i along o
       {
         if(!secu.contains(j, 2 * static_cast<std::int64_t>(i))) continue;
-        const std::int64_t gp = gap_position(o, i);
+        const std::int64_t gp = fd.gap_position(ko, i);
         if(crosses_any(fd.chords, cu, gp, fd.size)) continue;
         const std::size_t gi = (o == eh_[e]) ? i : n - i;
         const std::size_t state = 2 * (base[e] + gi) + ((o == eh_[e]) ? 1 : 0); // enters the face beyond o
-        relax(q, state, step_ + length(pu, mid_[e]), -2);
+        relax(q, state, step_ + length(pu, mid_[e]), -2, pv);
       }
     }
     double best = std::numeric_limits<double>::infinity();
@@ -155,44 +169,48 @@ public:
     std::size_t guard = 0;
     while(!q.empty() && ++guard <= 64 * S + 1000000)
     {
+      // A* (keys: cost so far plus a lower bound of the rest); stale entries have a larger key
       const QE top = q.top(); q.pop();
-      const double d = top.first;
+      if(top.first >= best) break;
       const std::size_t s = static_cast<std::size_t>(top.second);
-      if(d > dist_[s] || d >= best) { if(d >= best) break; continue; }
       const std::size_t gap = s / 2, side = s % 2;
-      const std::size_t e = static_cast<std::size_t>(std::upper_bound(base.begin(), base.end(), gap) - base.begin()) - 1;
+      const std::size_t e = static_cast<std::size_t>(gap_edge_[gap]);
+      const double d = dist_[s];
+      if(top.first > d + remaining_bound(e, pv)) continue;
       const std::size_t i = gap - base[e], n = cross_[e].size();
       const halfedge_descriptor hf = side == 0 ? eh_[e] : opposite(eh_[e], tm_); // e, seen from the face entered
       if(is_border(hf, tm_)) continue;
       const face_descriptor f = face(hf, tm_);
       const std::size_t ih = (hf == eh_[e]) ? i : n - i; // the gap's index along hf
       const Face_data& fd = face_data(f);
-      const std::int64_t gp = gap_position(hf, ih);
+      const std::size_t kf = fd.index(hf);
+      const std::int64_t gp = fd.gap_position(kf, ih);
       // arrival at v, the corner opposite e
       const halfedge_descriptor hv = next(hf, tm_); // from target(hf) to the opposite corner
       if(target(hv, tm_) == v)
       {
         // v -> source(hf) leaves v in f, whose edge opposite v is hf: the gap's position along hf
         // is its angular position around v
-        const std::size_t j = sv.index_of(next(hv, tm_), tm_);
+        const std::size_t j = sv.index_of(next(hv, tm_));
         if(j != std::size_t(-1) && secv.contains(j, 2 * static_cast<std::int64_t>(ih)) &&
-           !crosses_any(fd.chords, gp, corner_position(f, v), fd.size))
+           !crosses_any(fd.chords, gp, 2 * fd.off[fd.index(next(hv, tm_))], fd.size))
         {
           const double total = d + length(mid_[e], pv);
           if(total < best) { best = total; best_state = static_cast<std::int64_t>(s); }
         }
       }
       // the gaps of the two other edges of f in the same piece of f (no chord between them)
-      const std::size_t kf = fd.index(hf, tm_);
-      for(const std::pair<int, int>& m : fd.members[static_cast<std::size_t>(fd.label[kf][ih])])
+      const std::size_t lf = static_cast<std::size_t>(fd.label[kf][ih]);
+      for(int mi = fd.member_start[lf]; mi < fd.member_start[lf + 1]; ++mi)
       {
+        const std::pair<int, int>& m = fd.members[static_cast<std::size_t>(mi)];
         if(static_cast<std::size_t>(m.first) == kf) continue;
         const halfedge_descriptor hk = fd.h[static_cast<std::size_t>(m.first)];
         if(is_border(opposite(hk, tm_), tm_)) continue;
         const std::size_t ek = static_cast<std::size_t>(get(hid_, hk));
         const std::size_t nk = cross_[ek].size(), jk = static_cast<std::size_t>(m.second);
         const std::size_t gi = (hk == eh_[ek]) ? jk : nk - jk;
-        relax(q, 2 * (base[ek] + gi) + ((hk == eh_[ek]) ? 1 : 0), d + step_ + length(mid_[e], mid_[ek]), static_cast<std::int64_t>(s));
+        relax(q, 2 * (base[ek] + gi) + ((hk == eh_[ek]) ? 1 : 0), d + step_ + length(mid_[e], mid_[ek]), static_cast<std::int64_t>(s), pv);
       }
     }
     if(best_state < 0) return false;
@@ -204,7 +222,7 @@ public:
       if(states.size() > S) return false; // defensive: a cycle would be a bug
     }
     std::reverse(states.begin(), states.end());
-    commit(curve, u, v, states, base);
+    commit(curve, u, v, states);
     return true;
   }
 
@@ -288,7 +306,7 @@ private:
   struct Star
   {
     std::vector<halfedge_descriptor> out;
-    std::size_t index_of(halfedge_descriptor g, const TM&) const
+    std::size_t index_of(halfedge_descriptor g) const
     {
       const auto it = std::find(out.begin(), out.end(), g);
       return it == out.end() ? std::size_t(-1) : static_cast<std::size_t>(it - out.begin());
@@ -332,7 +350,7 @@ private:
     auto key = [&](int c) -> std::int64_t
     {
       const auto& n = node_curves_.at(std::make_pair(u, c)); // (outgoing halfedge, crossing)
-      const std::size_t j = s.index_of(n.first, tm_);
+      const std::size_t j = s.index_of(n.first);
       const halfedge_descriptor o = next(n.first, tm_);
       return static_cast<std::int64_t>(j) * Sector::W + 2 * (position_along(o, n.second) + 1) - 1;
     };
@@ -350,51 +368,15 @@ private:
     return sec;
   }
 
-  // boundary positions in a face, doubled: point k at 2k, the gap after it at 2k+1. Points: corner
-  // source(h0), crossings along h0, corner source(h1), ... with h0 = fh_[f]
-  std::int64_t corner_position(face_descriptor f, vertex_descriptor c)
-  {
-    halfedge_descriptor h = fh_[static_cast<std::size_t>(get(fid_, f))];
-    std::int64_t p = 0;
-    for(int k = 0; k < 3; ++k, h = next(h, tm_))
-    {
-      if(source(h, tm_) == c) return 2 * p;
-      p += 1 + static_cast<std::int64_t>(cross_[static_cast<std::size_t>(get(hid_, h))].size());
-    }
-    return -1;
-  }
-  // offset of the corner source(hk) in the face of hk
-  std::int64_t offset_of(halfedge_descriptor hk)
-  {
-    const face_descriptor f = face(hk, tm_);
-    halfedge_descriptor h = fh_[static_cast<std::size_t>(get(fid_, f))];
-    std::int64_t p = 0, found = -1;
-    for(int k = 0; k < 3; ++k, h = next(h, tm_))
-    {
-      if(h == hk) found = p;
-      p += 1 + static_cast<std::int64_t>(cross_[static_cast<std::size_t>(get(hid_, h))].size());
-    }
-    return found;
-  }
-  // gap i along hk (between its i-th and (i+1)-th crossing, from source(hk)), doubled position
-  std::int64_t gap_position(halfedge_descriptor hk, std::size_t i)
-  {
-    return 2 * (offset_of(hk) + static_cast<std::int64_t>(i)) + 1;
-  }
+  // Boundary positions in a face are doubled: point k at 2k, the gap after it at 2k+1. Points: corner
+  // source(h0), crossings along h0, corner source(h1), ... with h0 = fh_[f] (Face_data::off).
+
   // index of crossing x along hk (from source(hk))
   std::int64_t position_along(halfedge_descriptor hk, int x) const
   {
     const std::size_t e = static_cast<std::size_t>(get(hid_, hk));
     const std::size_t k = static_cast<std::size_t>(cpos_[static_cast<std::size_t>(x)]);
     return (hk == eh_[e]) ? static_cast<std::int64_t>(k) : static_cast<std::int64_t>(cross_[e].size() - 1 - k);
-  }
-  std::int64_t end_position(face_descriptor f, const End& x)
-  {
-    if(x.corner) return corner_position(f, x.v);
-    const std::size_t e = crossing_[static_cast<std::size_t>(x.crossing)].edge;
-    halfedge_descriptor hk = eh_[e];
-    if(face(hk, tm_) != f) hk = opposite(hk, tm_);
-    return 2 * (offset_of(hk) + 1 + position_along(hk, x.crossing));
   }
   // A face's chords as boundary positions, and its pieces: the label of every gap of its three edges
   // (gaps of one piece have one label) and the gaps of each label. The chords are a non-crossing
@@ -405,81 +387,97 @@ private:
   {
     bool valid = false;
     std::array<halfedge_descriptor, 3> h;
+    std::array<std::int64_t, 3> off;                    // undoubled position of the corner source(h[k])
     std::vector<std::array<std::int64_t, 2> > chords;
     std::int64_t size = 0;
     std::array<std::vector<int>, 3> label;             // per edge (in h's order), per gap along it
-    std::vector<std::vector<std::pair<int, int> > > members; // per label: (edge, gap)
-    std::size_t index(halfedge_descriptor g, const TM&) const
-    {
-      return g == h[0] ? 0 : (g == h[1] ? 1 : 2);
-    }
+    std::vector<std::pair<int, int> > members;         // (edge, gap), by label
+    std::vector<int> member_start;                      // per label: its first entry in members
+    std::size_t index(halfedge_descriptor g) const { return g == h[0] ? 0 : (g == h[1] ? 1 : 2); }
+    // gap i along h[k] (between its i-th and (i+1)-th crossing from source(h[k]))
+    std::int64_t gap_position(std::size_t k, std::size_t i) const { return 2 * (off[k] + static_cast<std::int64_t>(i)) + 1; }
   };
+  std::int64_t end_position(const Face_data& fd, const End& x) const
+  {
+    if(x.corner)
+    {
+      for(std::size_t k = 0; k < 3; ++k) if(source(fd.h[k], tm_) == x.v) return 2 * fd.off[k];
+      return -1;
+    }
+    const std::size_t e = crossing_[static_cast<std::size_t>(x.crossing)].edge;
+    const std::size_t k = (get(hid_, fd.h[0]) == static_cast<int>(e)) ? 0 : ((get(hid_, fd.h[1]) == static_cast<int>(e)) ? 1 : 2);
+    return 2 * (fd.off[k] + 1 + position_along(fd.h[k], x.crossing));
+  }
   const Face_data& face_data(face_descriptor f)
   {
     const std::size_t fi = static_cast<std::size_t>(get(fid_, f));
     Face_data& fd = fdata_[fi];
     if(fd.valid) return fd;
-    fd = Face_data();
-    fd.valid = true;
+    fd.valid = true; // the vectors are refilled in place: their storage is kept
     fd.h[0] = fh_[fi]; fd.h[1] = next(fd.h[0], tm_); fd.h[2] = next(fd.h[1], tm_);
-    for(const Chord& c : chords_[fi]) fd.chords.push_back({ { end_position(f, c.a), end_position(f, c.b) } });
     std::int64_t p = 0;
-    std::array<std::int64_t, 3> off;
+    std::array<std::int64_t, 3>& off = fd.off;
     for(int k = 0; k < 3; ++k)
     {
       off[static_cast<std::size_t>(k)] = p;
       p += 1 + static_cast<std::int64_t>(cross_[static_cast<std::size_t>(get(hid_, fd.h[static_cast<std::size_t>(k)]))].size());
     }
     fd.size = 2 * p;
-    // events: (key, kind): kind >= 0 chord end (chord index), kind < 0 gap -1 - g (g = 3 * gap index + edge)
-    const std::int64_t S = std::int64_t(1) << 24;
-    std::vector<std::pair<std::int64_t, std::int64_t> > ev;
-    std::map<std::int64_t, std::vector<std::pair<std::int64_t, std::size_t> > > at_corner; // corner pos -> (partner distance, chord)
+    fd.chords.clear();
+    for(const Chord& c : chords_[fi]) fd.chords.push_back({ { end_position(fd, c.a), end_position(fd, c.b) } });
+    // chord ends by position: a crossing has one, a corner any number, split into sub-points in the
+    // order of decreasing distance to their partners (so that they do not cross). Positions are
+    // visited in order: linear in the face's crossings, no sort but the corners'.
+    std::vector<int>& at = at_scratch_;
+    at.assign(static_cast<std::size_t>(fd.size), -1);
+    for(auto& cc : corner_scratch_) cc.clear();
     for(std::size_t c = 0; c < fd.chords.size(); ++c)
-      for(int t = 0; t < 2; ++t)
+      for(std::size_t t = 0; t < 2; ++t)
       {
-        const std::int64_t a = fd.chords[c][static_cast<std::size_t>(t)], b = fd.chords[c][static_cast<std::size_t>(1 - t)];
-        const bool corner = (a == 2 * off[0] || a == 2 * off[1] || a == 2 * off[2]);
-        if(corner) at_corner[a].push_back(std::make_pair(((b - a) % fd.size + fd.size) % fd.size, c));
-        else ev.push_back(std::make_pair(a * S, static_cast<std::int64_t>(c)));
+        const std::int64_t a = fd.chords[c][t], b = fd.chords[c][1 - t];
+        const std::size_t k = (a == 2 * off[0]) ? 0 : (a == 2 * off[1]) ? 1 : (a == 2 * off[2]) ? 2 : 3;
+        if(k < 3) corner_scratch_[k].push_back(std::make_pair(((b - a) % fd.size + fd.size) % fd.size, static_cast<int>(c)));
+        else at[static_cast<std::size_t>(a)] = static_cast<int>(c);
       }
-    for(auto& ac : at_corner)
-    {
-      // the chord to the farthest partner comes first: the sub-points then do not cross
-      std::sort(ac.second.begin(), ac.second.end(), [](const std::pair<std::int64_t, std::size_t>& x, const std::pair<std::int64_t, std::size_t>& y)
-                { return x.first > y.first; });
-      for(std::size_t k = 0; k < ac.second.size(); ++k)
-        ev.push_back(std::make_pair(ac.first * S + static_cast<std::int64_t>(k), static_cast<std::int64_t>(ac.second[k].second)));
-    }
-    for(int k = 0; k < 3; ++k)
-    {
-      const std::size_t n = cross_[static_cast<std::size_t>(get(hid_, fd.h[static_cast<std::size_t>(k)]))].size();
-      fd.label[static_cast<std::size_t>(k)].assign(n + 1, 0);
-      for(std::size_t i = 0; i <= n; ++i)
-        ev.push_back(std::make_pair((2 * (off[static_cast<std::size_t>(k)] + static_cast<std::int64_t>(i)) + 1) * S,
-                                    -1 - static_cast<std::int64_t>(3 * i + static_cast<std::size_t>(k))));
-    }
-    std::sort(ev.begin(), ev.end());
-    std::vector<char> opened(fd.chords.size(), 0);
-    std::vector<int> stack;
+    std::vector<char>& opened = opened_scratch_;
+    opened.assign(fd.chords.size(), 0);
+    std::vector<int>& stack = stack_scratch_;
+    stack.clear();
     int labels = 1;
-    fd.members.assign(1, std::vector<std::pair<int, int> >());
-    for(const auto& x : ev)
+    auto chord_end = [&](int c)
     {
-      if(x.second >= 0)
+      if(!opened[static_cast<std::size_t>(c)]) { opened[static_cast<std::size_t>(c)] = 1; stack.push_back(labels++); }
+      else if(!stack.empty()) stack.pop_back();
+    };
+    std::vector<std::array<int, 3> >& gaps = gaps_scratch_; // (label, edge, gap), in boundary order
+    gaps.clear();
+    for(std::size_t k = 0; k < 3; ++k)
+    {
+      std::sort(corner_scratch_[k].begin(), corner_scratch_[k].end(),
+                [](const std::pair<std::int64_t, int>& x, const std::pair<std::int64_t, int>& y) { return x.first > y.first; });
+      for(const auto& x : corner_scratch_[k]) chord_end(x.second);
+      const std::size_t m = cross_[static_cast<std::size_t>(get(hid_, fd.h[k]))].size();
+      fd.label[k].resize(m + 1);
+      for(std::size_t i = 0; i <= m; ++i)
       {
-        const std::size_t c = static_cast<std::size_t>(x.second);
-        if(!opened[c]) { opened[c] = 1; stack.push_back(labels++); fd.members.emplace_back(); }
-        else if(!stack.empty()) stack.pop_back();
-      }
-      else
-      {
-        const std::size_t g = static_cast<std::size_t>(-1 - x.second);
+        if(i > 0) // the i-th crossing along h[k]
+        {
+          const int c = at[static_cast<std::size_t>(2 * (off[k] + static_cast<std::int64_t>(i)))];
+          if(c >= 0) chord_end(c);
+        }
         const int l = stack.empty() ? 0 : stack.back();
-        fd.label[g % 3][g / 3] = l;
-        fd.members[static_cast<std::size_t>(l)].push_back(std::make_pair(static_cast<int>(g % 3), static_cast<int>(g / 3)));
+        fd.label[k][i] = l;
+        gaps.push_back(std::array<int, 3>{ { l, static_cast<int>(k), static_cast<int>(i) } });
       }
     }
+    // the gaps of each label, contiguous (counting sort, stable)
+    fd.member_start.assign(static_cast<std::size_t>(labels) + 1, 0);
+    for(const auto& g : gaps) ++fd.member_start[static_cast<std::size_t>(g[0]) + 1];
+    for(std::size_t l = 0; l < static_cast<std::size_t>(labels); ++l) fd.member_start[l + 1] += fd.member_start[l];
+    fd.members.resize(gaps.size());
+    std::vector<int>& fill = stack; // reused: the stack is empty once every chord is closed
+    fill.assign(fd.member_start.begin(), fd.member_start.end() - 1);
+    for(const auto& g : gaps) fd.members[static_cast<std::size_t>(fill[static_cast<std::size_t>(g[0])]++)] = std::make_pair(g[1], g[2]);
     return fd;
   }
   // whether the chord (a, b) crosses one of `ch` (positions on a cycle of length n): their ends
@@ -496,14 +494,19 @@ private:
   }
   void relax(std::priority_queue<std::pair<double, std::int64_t>, std::vector<std::pair<double, std::int64_t> >,
                                  std::greater<std::pair<double, std::int64_t> > >& q,
-             std::size_t s, double d, std::int64_t from)
+             std::size_t s, double d, std::int64_t from, const std::array<double, 3>& target)
   {
     if(!(d < dist_[s])) return;
     dist_[s] = d; pred_[s] = from;
-    q.push(std::make_pair(d, static_cast<std::int64_t>(s)));
+    q.push(std::make_pair(d + remaining_bound(static_cast<std::size_t>(gap_edge_[s / 2]), target), static_cast<std::int64_t>(s)));
   }
-  void commit(int curve, vertex_descriptor u, vertex_descriptor v, const std::vector<std::size_t>& states,
-              const std::vector<std::size_t>& base)
+  // a lower bound of the cost from a gap of input edge e to the corner `target` (consistent: it
+  // falls by at most the cost of a move)
+  double remaining_bound(std::size_t e, const std::array<double, 3>& target) const
+  {
+    return (std::max)(0., heuristic_factor_ * length(mid_[e], target) - step_);
+  }
+  void commit(int curve, vertex_descriptor u, vertex_descriptor v, const std::vector<std::size_t>& states)
   {
     // decode the states: edge, gap index along eh, side
     struct G { std::size_t e, i, side; int id; };
@@ -511,10 +514,10 @@ private:
     for(std::size_t s : states)
     {
       const std::size_t gap = s / 2;
-      const std::size_t e = static_cast<std::size_t>(std::upper_bound(base.begin(), base.end(), gap) - base.begin()) - 1;
-      gs.push_back(G{ e, gap - base[e], s % 2, -1 });
+      const std::size_t e = static_cast<std::size_t>(gap_edge_[gap]);
+      gs.push_back(G{ e, gap - base_[e], s % 2, -1 });
     }
-    for(G& g : gs) { g.id = static_cast<int>(crossing_.size()); crossing_.push_back(Crossing{ g.e, curve }); }
+    for(G& g : gs) { g.id = static_cast<int>(crossing_.size()); crossing_.push_back(Crossing{ g.e }); }
     // insert the crossings: per edge by decreasing gap index, so that earlier indices stay valid
     std::vector<std::size_t> order(gs.size());
     for(std::size_t k = 0; k < order.size(); ++k) order[k] = k;
@@ -599,7 +602,15 @@ private:
   std::map<std::pair<vertex_descriptor, int>, std::pair<halfedge_descriptor, int> > node_curves_;
   std::vector<double> dist_;
   std::vector<std::int64_t> pred_;
+  std::vector<std::size_t> base_;             // per input edge, during a search: its first gap
+  std::vector<int> gap_edge_;                 // per gap, during a search: its input edge
+  // face_data()'s scratch space
+  std::vector<int> at_scratch_, stack_scratch_;
+  std::array<std::vector<std::pair<std::int64_t, int> >, 3> corner_scratch_;
+  std::vector<char> opened_scratch_;
+  std::vector<std::array<int, 3> > gaps_scratch_;
   double step_ = 0;                           // the cost of one crossing
+  double heuristic_factor_ = 1.;              // A*: the lower bound per unit of straight distance
 };
 
 /// traces the partition edges as curves crossing the input edges, then refines the mesh once (see above)

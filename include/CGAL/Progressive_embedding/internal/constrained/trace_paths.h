@@ -219,7 +219,10 @@ struct Path_network
   std::vector<char> border_vertex;
   std::vector<int> node_of;     // node index or -1
   std::vector<int> path_of;     // path whose interior holds the vertex, or -1
-  std::unordered_set<std::uint64_t> path_edges;
+  // a path edge has an interior path vertex, whose two neighbours along its path are kept, or it is
+  // a whole path of one edge (looked up by hashing: rare). The queries are the tracers' inner loop.
+  std::vector<std::array<int, 2> > path_neighbours;
+  std::unordered_set<std::uint64_t> one_edge_paths;
 
   explicit Path_network(TM& m) : tm(m), vid(get(CGAL::dynamic_vertex_property_t<int>(), m))
   {
@@ -233,15 +236,26 @@ struct Path_network
     border_vertex.push_back(CGAL::is_border(v, tm) ? 1 : 0);
     node_of.push_back(-1);
     path_of.push_back(-1);
+    path_neighbours.push_back(std::array<int, 2>{ { -1, -1 } });
     return i;
   }
   int id(vertex_descriptor v) const { return get(vid, v); }
   bool blocked(int i) const { return border_vertex[i] || node_of[i] >= 0 || path_of[i] >= 0; }
-  bool is_path_edge(int a, int b) const { return path_edges.count(vertex_pair_key(a, b)) != 0; }
+  bool is_path_edge(int a, int b) const
+  {
+    if(path_of[a] >= 0) return path_neighbours[a][0] == b || path_neighbours[a][1] == b;
+    if(path_of[b] >= 0) return path_neighbours[b][0] == a || path_neighbours[b][1] == a;
+    return !one_edge_paths.empty() && one_edge_paths.count(vertex_pair_key(a, b)) != 0;
+  }
   void add_path(const std::vector<vertex_descriptor>& p, int index)
   {
-    for(std::size_t k = 0; k + 1 < p.size(); ++k) path_edges.insert(vertex_pair_key(id(p[k]), id(p[k + 1])));
-    for(std::size_t k = 1; k + 1 < p.size(); ++k) path_of[id(p[k])] = index;
+    if(p.size() == 2) one_edge_paths.insert(vertex_pair_key(id(p[0]), id(p[1])));
+    for(std::size_t k = 1; k + 1 < p.size(); ++k)
+    {
+      const int i = id(p[k]);
+      path_of[i] = index;
+      path_neighbours[i] = std::array<int, 2>{ { id(p[k - 1]), id(p[k + 1]) } };
+    }
   }
   // a chord: an edge between two blocked vertices that is neither a path edge nor a border edge
   bool is_chord(halfedge_descriptor h) const
@@ -441,6 +455,8 @@ Error_code label_patches(const TM& tm,
   const std::size_t none = std::size_t(-1);
   for(face_descriptor f : faces(tm)) put(face_patch, f, none);
   Error_code status = OK;
+  // per vertex id: the last patch that counted it, the last patch whose border walk met it
+  std::vector<std::size_t> counted(net.vd.size(), none), walked(net.vd.size(), none);
   for(face_descriptor f0 : faces(tm))
   {
     if(get(face_patch, f0) != none) continue;
@@ -463,22 +479,27 @@ Error_code label_patches(const TM& tm,
     }
     P.number_of_faces = members.size();
     // vertices of the patch
-    std::unordered_set<int> pv;
+    std::size_t nv = 0;
     for(face_descriptor f : members)
-      for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) pv.insert(net.id(v));
+      for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm))
+      {
+        const std::size_t i = static_cast<std::size_t>(net.id(v));
+        if(counted[i] != pi) { counted[i] = pi; ++nv; }
+      }
     const std::size_t ne = (3 * members.size() + bh.size()) / 2;
-    bool disk = (pv.size() + members.size() == ne + 1) && !bh.empty();
+    bool disk = (nv + members.size() == ne + 1) && !bh.empty();
     // the border cycle from a corner (or any border halfedge)
     if(disk)
     {
       halfedge_descriptor start = bh.front();
       for(halfedge_descriptor h : bh) if(net.node_of[net.id(source(h, tm))] >= 0) { start = h; break; }
       halfedge_descriptor h = start;
-      std::unordered_set<int> seen;
       std::size_t guard = 0;
       do
       {
-        if(!seen.insert(net.id(source(h, tm))).second) { disk = false; break; }
+        const std::size_t i = static_cast<std::size_t>(net.id(source(h, tm)));
+        if(walked[i] == pi) { disk = false; break; }
+        walked[i] = pi;
         const int n = net.node_of[net.id(source(h, tm))];
         if(n >= 0) { P.corners.push_back(static_cast<std::size_t>(n)); P.corner_positions.push_back(P.border.size()); }
         P.border.push_back(h);

@@ -522,10 +522,11 @@ int border_rotation_indices(const TriangleMesh& tm, VertexUVMap uvm, VertexIndex
 ///     \cgalParamDescription{the largest number of vertices path tracing may add. The paths are traced as
 ///                           shortest paths first; when these exceed their budget or add more than a tenth of the
 ///                           vertices, they are traced again as curves over the input edges (meshes without holes),
-///                           then guided by a drawing of the partition, and the result with the fewest Steiner vertices
-///                           is kept. A value given here bounds every tracing}
+///                           then guided by a drawing of the partition (unless the curves added more than 4 times
+///                           the mesh's vertices), and the result with the fewest Steiner vertices is kept. A value
+///                           given here bounds every tracing}
 ///     \cgalParamType{`std::size_t`}
-///     \cgalParamDefault{shortest paths: 4 times the number of edges plus 1000; curves over the input edges: 128 times
+///     \cgalParamDefault{shortest paths: 4 times the number of vertices plus 1000; curves over the input edges: 128 times
 ///                       the number of edges plus 10000; guided paths: 32 times the number of edges plus 10000}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{optimize}
@@ -874,7 +875,9 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     const std::size_t unset = std::size_t(-1);
     const std::size_t user_max = choose_parameter(get_parameter(np, internal_np::maximum_steiner_vertices), unset);
     const std::size_t ne = static_cast<std::size_t>(num_edges(work));
-    const std::size_t first_max = user_max != unset ? user_max : 4 * ne + 1000;
+    // the shortest paths won with at most 1.35 times the mesh's vertices added (measured: 67 polygon
+    // maps, 60 runs with 50 jittered or random targets); beyond 4 times, the other tracings take over
+    const std::size_t first_max = user_max != unset ? user_max : 4 * static_cast<std::size_t>(num_vertices(work)) + 1000;
     const std::size_t guided_max = user_max != unset ? user_max : 32 * ne + 10000;
     const Work before_tracing = work;
     ec = internal::trace_paths(work, wvpm, nodes, partition.edges, partition.rotation, paths, steiner,
@@ -922,8 +925,9 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
       // mesh's vertices, each with a quarter of its time, at least 1 s: on winding partitions (targets in
       // an order unrelated to the surface) they compound and run out of their budgets, slowly. Measured
       // after the overlay tracing: they won 5 times in 67 maps onto Hilbert, star and spiral borders
-      // (where it had added 1.0 to 1.8 times the vertices) and once in 18 with 50 jittered targets (0.85
-      // times), never where it had added more (up to 36 times with 50 random targets).
+      // (where it had added 1.0 to 1.8 times the vertices), once in 18 runs with 50 jittered targets
+      // (0.85 times) and once in 30 with 50 random targets (10.9 times: 76k instead of 110k vertices),
+      // where they cost 1 to 2.7 s per run on the 20k-vertex meshes.
       const bool guided_after_overlay = best_steiner.size() <= 4 * num_vertices(before_tracing);
       const double guided_seconds = stats.overlay_tracing_kept ? (std::max)(1., 0.25 * (timer.time() - t_overlay_start)) : -1;
       struct Guided_variant { double disk_factor; bool interior_first; };
@@ -1039,13 +1043,14 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
   stats.patches = patches.size();
   std::vector<std::vector<wface> > patch_faces(patches.size());
   for(wface f : faces(work)) patch_faces[get(fpatch, f)].push_back(f);
+  internal::Patch_slots<Work> slots(work);
   for(std::size_t p = 0; p < patches.size(); ++p)
   {
     if(!(remaining() > 0)) return finish(ERROR_BUDGET_EXHAUSTED);
     Progressive_embedding_statistics pst;
     ec = internal::embed_patch_impl(work, patch_faces[p], wuv,
                                     parameters::statistics(&pst, parameters::weights(wts).maximum_running_time(remaining())),
-                                    true);
+                                    true, &slots);
     if(pst.collapses > 0 || pst.insertions > 0) ++stats.repaired_patches;
     if(ec != OK)
     {

@@ -160,10 +160,11 @@ Error_code tutte_interior_translated(const Indexed_disk<TriangleMesh>& disk, VPM
 // then (the caller splits the chords along one side beforehand); Tutte and the repair run as for a
 // convex border, and the same exact certificate (every face strictly oriented like the border,
 // border unchanged and simple) proves the map one-to-one by the degree argument, which needs a
-// simple border only, not a convex one.
+// simple border only, not a convex one. `slots`: see make_indexed_patch() (many patches of one mesh).
 template <typename TriangleMesh, typename FaceRange, typename VertexUVMap, typename NamedParameters>
 Error_code embed_patch_impl(const TriangleMesh& tm, const FaceRange& patch_faces, VertexUVMap uvm,
-                            const NamedParameters& np, bool simple_border)
+                            const NamedParameters& np, bool simple_border,
+                            Patch_slots<TriangleMesh>* slots = nullptr)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -197,7 +198,7 @@ Error_code embed_patch_impl(const TriangleMesh& tm, const FaceRange& patch_faces
 
   // the patch, its border polygon (exact classification) and its flat chords
   internal::Indexed_disk<TriangleMesh> disk;
-  ec = internal::make_indexed_patch(tm, patch_faces, disk);
+  ec = internal::make_indexed_patch(tm, patch_faces, disk, slots);
   if(ec != OK) return ec;
   const std::size_t nv = disk.number_of_vertices(), nb = disk.border.size();
   if(nb < 3) return ERROR_BORDER_TOO_SHORT;

@@ -226,14 +226,20 @@ struct Path_network
 
   explicit Path_network(TM& m) : tm(m), vid(get(CGAL::dynamic_vertex_property_t<int>(), m))
   {
-    for(vertex_descriptor v : vertices(tm)) add_vertex(v);
+    const std::size_t n = static_cast<std::size_t>(num_vertices(tm));
+    vd.reserve(n); border_vertex.reserve(n); node_of.reserve(n); path_of.reserve(n); path_neighbours.reserve(n);
+    for(vertex_descriptor v : vertices(tm)) add_vertex(v, false);
+    // the border vertices from the border halfedges: one pass, not one turn around every vertex
+    for(halfedge_descriptor h : halfedges(tm))
+      if(CGAL::is_border(h, tm)) border_vertex[static_cast<std::size_t>(id(target(h, tm)))] = 1;
   }
-  int add_vertex(vertex_descriptor v)
+  int add_vertex(vertex_descriptor v) { return add_vertex(v, CGAL::is_border(v, tm) != boost::none); }
+  int add_vertex(vertex_descriptor v, bool on_border)
   {
     const int i = static_cast<int>(vd.size());
     put(vid, v, i);
     vd.push_back(v);
-    border_vertex.push_back(CGAL::is_border(v, tm) ? 1 : 0);
+    border_vertex.push_back(on_border ? 1 : 0);
     node_of.push_back(-1);
     path_of.push_back(-1);
     path_neighbours.push_back(std::array<int, 2>{ { -1, -1 } });

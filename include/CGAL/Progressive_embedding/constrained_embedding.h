@@ -926,8 +926,8 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
       // an order unrelated to the surface) they compound and run out of their budgets, slowly. Measured
       // after the overlay tracing: they won 5 times in 67 maps onto Hilbert, star and spiral borders
       // (where it had added 1.0 to 1.8 times the vertices), once in 18 runs with 50 jittered targets
-      // (0.85 times) and once in 30 with 50 random targets (10.9 times: 76k instead of 110k vertices),
-      // where they cost 1 to 2.7 s per run on the 20k-vertex meshes.
+      // (0.85 times), never in 30 with 50 random targets (10 to 36 times), where they cost 1 to 2.7 s
+      // per run on the 20k-vertex meshes.
       const bool guided_after_overlay = best_steiner.size() <= 4 * num_vertices(before_tracing);
       const double guided_seconds = stats.overlay_tracing_kept ? (std::max)(1., 0.25 * (timer.time() - t_overlay_start)) : -1;
       struct Guided_variant { double disk_factor; bool interior_first; };

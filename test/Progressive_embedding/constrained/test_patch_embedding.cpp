@@ -519,7 +519,20 @@ int refused(const std::string& data)
   std::size_t i = 0;
   for(auto v : vertices(m)) put(uv, v, Epick::Point_2(double(i++), -1.5));
   place_on_square<Epick>(uv, B, o, false);
+  // the indexing with the mesh's slots (the constrained pipeline's) gives the same verdict and the
+  // same disk as with hash maps, and leaves every slot cleared
+  PE::internal::Patch_slots<Mesh> slots(m);
   auto expect = [&](const std::vector<fd_t<Mesh> >& Q, PE::Error_code expected, const char* what) -> int {
+    PE::internal::Indexed_disk<Mesh> dh, ds;
+    const PE::Error_code eh = PE::internal::make_indexed_patch(m, Q, dh);
+    const PE::Error_code es = PE::internal::make_indexed_patch(m, Q, ds, &slots);
+    CHECK(eh == es, what << ": indexing with slots: " << PE::get_error_name(es) << ", with hash maps: " << PE::get_error_name(eh));
+    CHECK(eh != PE::OK || (dh.vertices == ds.vertices && dh.faces == ds.faces && dh.border == ds.border),
+          what << ": the same indexed patch with slots");
+    std::size_t dirty = 0;
+    for(auto f : faces(m)) dirty += get(slots.face, f) != 0;
+    for(auto v : vertices(m)) dirty += get(slots.vertex, v) != 0;
+    CHECK(dirty == 0, what << ": " << dirty << " slots left set");
     const auto before = snapshot(m, uv);
     const PE::Error_code ec = PE::embed_patch(m, Q, uv);
     std::cout << "  " << what << ": " << PE::get_error_name(ec) << std::endl;

@@ -106,18 +106,9 @@ public:
   // 3D length between the crossed edges' midpoints
   void set_crossing_cost(double w)
   {
-    double sum = 0, longest = 0;
-    for(std::size_t e = 0; e < eh_.size(); ++e)
-    {
-      const double l = length(point(source(eh_[e], tm_)), point(target(eh_[e], tm_)));
-      sum += l;
-      longest = (std::max)(longest, l);
-    }
+    double sum = 0;
+    for(std::size_t e = 0; e < eh_.size(); ++e) sum += length(point(source(eh_[e], tm_)), point(target(eh_[e], tm_)));
     step_ = w * (eh_.empty() ? 1. : sum / double(eh_.size()));
-    // A move between two edges of a triangle spans at most half its longest edge, so a curve whose
-    // midpoints are D apart makes at least D / (longest / 2) moves: D * (1 + step_ / (longest / 2)),
-    // less one step for the last piece (midpoint to corner), bounds the remaining cost from below.
-    heuristic_factor_ = longest > 0 ? 1. + step_ / (0.5 * longest) : 1.;
   }
 
   // One curve from node vertex u to node vertex v. Sectors: the curve must leave u strictly between
@@ -161,7 +152,7 @@ public:
         if(crosses_any(fd.chords, cu, gp, fd.size)) continue;
         const std::size_t gi = (o == eh_[e]) ? i : n - i;
         const std::size_t state = 2 * (base[e] + gi) + ((o == eh_[e]) ? 1 : 0); // enters the face beyond o
-        relax(q, state, step_ + length(pu, mid_[e]), -2, pv);
+        relax(q, state, step_ + length(pu, mid_[e]), -2);
       }
     }
     double best = std::numeric_limits<double>::infinity();
@@ -169,14 +160,13 @@ public:
     std::size_t guard = 0;
     while(!q.empty() && ++guard <= 64 * S + 1000000)
     {
-      // A* (keys: cost so far plus a lower bound of the rest); stale entries have a larger key
       const QE top = q.top(); q.pop();
-      if(top.first >= best) break;
+      const double d = top.first;
+      if(d >= best) break;
       const std::size_t s = static_cast<std::size_t>(top.second);
+      if(d > dist_[s]) continue; // stale
       const std::size_t gap = s / 2, side = s % 2;
       const std::size_t e = static_cast<std::size_t>(gap_edge_[gap]);
-      const double d = dist_[s];
-      if(top.first > d + remaining_bound(e, pv)) continue;
       const std::size_t i = gap - base[e], n = cross_[e].size();
       const halfedge_descriptor hf = side == 0 ? eh_[e] : opposite(eh_[e], tm_); // e, seen from the face entered
       if(is_border(hf, tm_)) continue;
@@ -210,7 +200,7 @@ public:
         const std::size_t ek = static_cast<std::size_t>(get(hid_, hk));
         const std::size_t nk = cross_[ek].size(), jk = static_cast<std::size_t>(m.second);
         const std::size_t gi = (hk == eh_[ek]) ? jk : nk - jk;
-        relax(q, 2 * (base[ek] + gi) + ((hk == eh_[ek]) ? 1 : 0), d + step_ + length(mid_[e], mid_[ek]), static_cast<std::int64_t>(s), pv);
+        relax(q, 2 * (base[ek] + gi) + ((hk == eh_[ek]) ? 1 : 0), d + step_ + length(mid_[e], mid_[ek]), static_cast<std::int64_t>(s));
       }
     }
     if(best_state < 0) return false;
@@ -494,17 +484,11 @@ private:
   }
   void relax(std::priority_queue<std::pair<double, std::int64_t>, std::vector<std::pair<double, std::int64_t> >,
                                  std::greater<std::pair<double, std::int64_t> > >& q,
-             std::size_t s, double d, std::int64_t from, const std::array<double, 3>& target)
+             std::size_t s, double d, std::int64_t from)
   {
     if(!(d < dist_[s])) return;
     dist_[s] = d; pred_[s] = from;
-    q.push(std::make_pair(d + remaining_bound(static_cast<std::size_t>(gap_edge_[s / 2]), target), static_cast<std::int64_t>(s)));
-  }
-  // a lower bound of the cost from a gap of input edge e to the corner `target` (consistent: it
-  // falls by at most the cost of a move)
-  double remaining_bound(std::size_t e, const std::array<double, 3>& target) const
-  {
-    return (std::max)(0., heuristic_factor_ * length(mid_[e], target) - step_);
+    q.push(std::make_pair(d, static_cast<std::int64_t>(s)));
   }
   void commit(int curve, vertex_descriptor u, vertex_descriptor v, const std::vector<std::size_t>& states)
   {
@@ -610,7 +594,6 @@ private:
   std::vector<char> opened_scratch_;
   std::vector<std::array<int, 3> > gaps_scratch_;
   double step_ = 0;                           // the cost of one crossing
-  double heuristic_factor_ = 1.;              // A*: the lower bound per unit of straight distance
 };
 
 /// traces the partition edges as curves crossing the input edges, then refines the mesh once (see above)

@@ -506,7 +506,7 @@ Error_code label_patches(const TM& tm,
         const std::size_t i = static_cast<std::size_t>(net.id(source(h, tm)));
         if(walked[i] == pi) { disk = false; break; }
         walked[i] = pi;
-        const int n = net.node_of[net.id(source(h, tm))];
+        const int n = net.node_of[i];
         if(n >= 0) { P.corners.push_back(static_cast<std::size_t>(n)); P.corner_positions.push_back(P.border.size()); }
         P.border.push_back(h);
         // next border halfedge of the patch: turn around target(h) inside the patch

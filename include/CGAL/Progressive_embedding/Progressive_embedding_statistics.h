@@ -30,7 +30,7 @@ struct Progressive_embedding_statistics
   std::size_t barycenter_placements = 0;
   /// vertices re-inserted
   std::size_t insertions = 0;
-  /// restarts with a lower energy threshold after a failed insertion (floating point only)
+  /// restarts with a higher area floor (more faces collapsed) after a failed insertion (floating point only)
   std::size_t restarts = 0;
   /// insertions that found no candidate at first and needed extra smoothing (0 in exact arithmetic, Lemma A.11)
   std::size_t insertions_with_extra_smoothing = 0;

@@ -1040,6 +1040,8 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
   auto fpatch = get(CGAL::dynamic_face_property_t<std::size_t>(), work);
   ec = internal::label_patches(work, nodes, paths, fpatch, patches);
   if(ec != OK) return finish(ec);
+  // one patch per polygon (the overlay tracing leaves this postcondition to this labelling)
+  if(!holes && patches.size() != partition.polygons.size()) return finish(ERROR_PATH_TRACING_FAILED);
   stats.patches = patches.size();
   std::vector<std::vector<wface> > patch_faces(patches.size());
   for(wface f : faces(work)) patch_faces[get(fpatch, f)].push_back(f);

@@ -219,7 +219,8 @@ Error_code repair_disk_map(const Indexed_disk<TriangleMesh>& disk, const std::ve
 ///   \cgalParamNBegin{minimum_area_ratio}
 ///     \cgalParamDescription{faces whose area is below this fraction of the mean face area are collapsed too: in floating point
 ///       they leave too few bits for insertions nearby; larger values trade speed for quality (scaled like the energy
-///       threshold on short edges between border vertices)}
+///       threshold on short edges between border vertices). When an insertion fails in floating point, the run
+///       restarts with a higher floor (10^4 times higher up to 1e-4, then 1e-3, 1e-2 and 0.1)}
 ///     \cgalParamType{`double` in [0, 1)}
 ///     \cgalParamDefault{1e-12 in floating point, 0 with an exact number type}
 ///   \cgalParamNEnd

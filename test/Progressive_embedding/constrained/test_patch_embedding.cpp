@@ -389,13 +389,16 @@ int repaired_patch()
 //    place on the grid of doubles there;
 //  - patch_border_cluster.off: 2.6 across, with runs of border vertices less than 1e-6 apart
 //    (edges down to 8e-13): faces on those edges can meet neither the repair's energy
-//    threshold nor its area floor, both relative to the mean face, wherever they are placed.
+//    threshold nor its area floor, both relative to the mean face, wherever they are placed;
+//  - patch_needle.off: a triangle 270 x 3200 ulps wide holding 132 interior vertices: valid faces of
+//    a few ulps^2 are left in clusters whose Newton steps round to no move (the smoothing then steps
+//    to a neighbouring double) and that only the higher area floors (1e-3 to 0.1 of the mean) collapse.
 template <class Mesh>
 int crowded_patches()
 {
   std::cout << "[" << mesh_name<Mesh>() << "] crowded patches of constrained maps" << std::endl;
   const std::string data = (std::filesystem::path(__FILE__).parent_path().parent_path() / "data").string();
-  for(const char* name : { "patch_small_far.off", "patch_border_cluster.off" })
+  for(const char* name : { "patch_small_far.off", "patch_border_cluster.off", "patch_needle.off" })
   {
     Mesh m;
     CHECK(read_mesh(data + "/" + name, m), name << ": read");

@@ -8,7 +8,9 @@
 // One vertex at a time Newton descent on the symmetric Dirichlet energy of its
 // incident faces (2x2 Hessian projected to SPD, internal/newton_step.h), with a flip-free
 // backtracking line search: a step is accepted only if every incident face stays positively
-// oriented under the exact predicate and the energy decreases.
+// oriented under the exact predicate and the energy decreases. In double, when the step rounds
+// to no move (stars a few ulps wide, as in patches of constrained maps a few hundred ulps across),
+// the neighbouring doubles in the step's quadrant are tried instead.
 
 #include <CGAL/Progressive_embedding/internal/symmetric_dirichlet.h>
 #include <CGAL/Progressive_embedding/internal/newton_step.h>
@@ -19,6 +21,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -134,7 +137,7 @@ public:
     for(int k = 0; k < 30; ++k, t *= 0.5)
     {
       const Point_2 xn(x.x() + make_ft<FT>(t * d[0]), x.y() + make_ft<FT>(t * d[1]));
-      if(same(xn, x)) return false;
+      if(same(xn, x)) return (k == 0) ? lattice_step(v, x, E0, d) : false;
       const double En = star_energy(xn);
       if(En < E0)
       {
@@ -144,6 +147,31 @@ public:
       }
     }
     return false;
+  }
+
+  // The Newton step is below the resolution of the number type (the star is a few ulps wide):
+  // tries the neighbouring representable points in the direction's quadrant.
+  bool lattice_step(vertex_descriptor v, const Point_2& x, double E0, const double d[2])
+  {
+    if(!std::is_same<FT, double>::value) return false;
+    const double xx = CGAL::to_double(x.x()), xy = CGAL::to_double(x.y());
+    const double sx = d[0] > 0 ? 1 : (d[0] < 0 ? -1 : 0), sy = d[1] > 0 ? 1 : (d[1] < 0 ? -1 : 0);
+    const double inf = std::numeric_limits<double>::infinity();
+    double best = E0; Point_2 best_p = x;
+    const double cand[3][2] = {{sx, sy}, {sx, 0}, {0, sy}};
+    for(const auto& c : cand)
+    {
+      if(c[0] == 0 && c[1] == 0) continue;
+      const double nx = c[0] == 0 ? xx : std::nextafter(xx, c[0] * inf);
+      const double ny = c[1] == 0 ? xy : std::nextafter(xy, c[1] * inf);
+      const Point_2 xn(make_ft<FT>(nx), make_ft<FT>(ny));
+      const double En = star_energy(xn);
+      if(En < best) { best = En; best_p = xn; }
+    }
+    if(!(best < E0)) return false;
+    m.point(v) = best_p;
+    ++steps_accepted;
+    return best < E0 * (1 - relative_tolerance);
   }
 
   // At most `passes` passes of one step per vertex of `vs` (skipping those for which `is_fixed`

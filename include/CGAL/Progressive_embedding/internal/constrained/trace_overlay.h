@@ -18,7 +18,9 @@
 //
 //   Error_code trace_paths_overlay(tm, vpm, nodes, edges, rotation, paths, steiner, np)
 //       The interface, preconditions, postconditions and errors of trace_paths() (trace_paths.h), for a
-//       triangulated disk; np: maximum_steiner_vertices (default 128 * number of edges + 10000),
+//       triangulated disk, except that the patches are not labelled before OK is returned (a full pass
+//       over the refined mesh, which constrained_embedding() makes anyway): the caller checks them,
+//       with label_patches() or check_traced_paths(); np: maximum_steiner_vertices (default 128 * number of edges + 10000),
 //       CGAL::parameters::maximum_running_time, split_penalty (the cost of one crossing, in mean edge
 //       lengths, added to the curve's 3D length between edge midpoints; default 4).
 //
@@ -654,7 +656,7 @@ Error_code trace_paths_overlay(TriangleMesh& tm, VertexPointMap vpm,
   std::vector<std::pair<vertex_descriptor, vertex_descriptor> > ends;
   for(const auto& e : edges) ends.emplace_back(nodes[e[0]], nodes[e[1]]);
   if(!edges.empty() && !tracer.realize(ends, paths, steiner)) return ERROR_PATH_TRACING_FAILED;
-  if(check_traced_paths(tm, nodes, edges, rotation, paths) != OK) return ERROR_PATH_TRACING_FAILED;
+  if(check_traced_paths(tm, nodes, edges, rotation, paths, nullptr, false) != OK) return ERROR_PATH_TRACING_FAILED;
   return OK;
 }
 

@@ -524,13 +524,15 @@ Error_code label_patches(const TM& tm,
 }
 
 /// checks the postconditions of `trace_paths()`; `number_of_patches` (if not null) receives the count.
+/// Without `check_patches`, only the paths and their rotations are checked, not the patches they bound
+/// (a full labelling of the mesh, for callers that label the patches themselves).
 template <class TM>
 Error_code check_traced_paths(const TM& tm,
                               const std::vector<typename boost::graph_traits<TM>::vertex_descriptor>& nodes,
                               const std::vector<std::array<std::size_t, 2> >& edges,
                               const std::vector<std::vector<std::size_t> >& rotation,
                               const std::vector<std::vector<typename boost::graph_traits<TM>::vertex_descriptor> >& paths,
-                              std::size_t* number_of_patches = nullptr)
+                              std::size_t* number_of_patches = nullptr, bool check_patches = true)
 {
   typedef boost::graph_traits<TM> GT;
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
@@ -579,6 +581,7 @@ Error_code check_traced_paths(const TM& tm,
     for(std::size_t k = 0; k < order.size(); ++k)
       if(order[(shift + k) % order.size()] != rotation[i][k]) return ERROR_PATH_TRACING_FAILED;
   }
+  if(!check_patches) return OK;
   // patches: disks, one per polygon (Euler: 1 - nodes + interior edges + border sides)
   std::size_t B = 0;
   for(std::size_t i = 0; i < nodes.size(); ++i) if(CGAL::is_border(nodes[i], tm)) ++B;

@@ -43,7 +43,7 @@ public:
     double time_budget = std::numeric_limits<double>::infinity();
     bool verbose = false;
     std::function<bool(double)> callback;
-    int restarts = 4;
+    int restarts = 8;
     double initial_min_area_ratio = 1e-12;
     bool min_area_ratio_given = false;
   };
@@ -71,8 +71,10 @@ public:
   // positions: by input index (in: the map to repair; out: the repaired map on OK); faces: input
   // faces; on_border: per input index; border_area: the area inside the border polygon.
   // When an insertion fails in floating point (the map has clusters of valid faces too
-  // small for the precision left), the run restarts from the input with an area floor
-  // 10^4 times higher, so that those clusters are collapsed too (at most `restarts` times).
+  // small for the precision left), the run restarts from the input with a higher area floor
+  // (10^4 times, then from 1e-4 of the mean area 10 times: 1e-3 to 0.1), so that those clusters
+  // are collapsed too (at most `restarts` times). The last floors matter for patches only a few
+  // hundred ulps wide, whose faces are a few ulps^2 even where valid.
   template <class Face_range>
   Error_code run(std::vector<Point_2>& positions, const Face_range& faces, const std::vector<char>& on_border,
                  const FT& border_area)
@@ -87,8 +89,8 @@ public:
     {
       ec = run_once(positions, faces, on_border, border_area, min_area_ratio);
       if(ec != ERROR_INSERTION_FAILED) break;
-      min_area_ratio = (min_area_ratio == 0) ? 1e-16 : min_area_ratio * 1e4;
-      if(min_area_ratio > 1e-3) break;
+      min_area_ratio = (min_area_ratio == 0) ? 1e-16 : min_area_ratio * (min_area_ratio < 1e-5 ? 1e4 : 10);
+      if(min_area_ratio > 0.5) break;
       ++counters.restarts;
       if(opt.verbose) std::cerr << "[pe] restart: faces of area below " << min_area_ratio << " x mean are collapsed too\n";
     }

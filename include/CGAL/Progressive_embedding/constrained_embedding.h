@@ -1052,7 +1052,7 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     Progressive_embedding_statistics pst;
     ec = internal::embed_patch_impl(work, patch_faces[p], wuv,
                                     parameters::statistics(&pst, parameters::weights(wts).maximum_running_time(remaining())),
-                                    true, &slots);
+                                    true, &slots, false);
     if(pst.collapses > 0 || pst.insertions > 0) ++stats.repaired_patches;
     if(ec != OK)
     {

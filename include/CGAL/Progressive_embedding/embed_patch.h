@@ -161,10 +161,12 @@ Error_code tutte_interior_translated(const Indexed_disk<TriangleMesh>& disk, VPM
 // convex border, and the same exact certificate (every face strictly oriented like the border,
 // border unchanged and simple) proves the map one-to-one by the degree argument, which needs a
 // simple border only, not a convex one. `slots`: see make_indexed_patch() (many patches of one mesh).
+// `report_distortion`: whether the statistics' report gets the areas and energies of the patch (three
+// more passes over it; the constrained pipeline certifies and measures the whole map afterwards).
 template <typename TriangleMesh, typename FaceRange, typename VertexUVMap, typename NamedParameters>
 Error_code embed_patch_impl(const TriangleMesh& tm, const FaceRange& patch_faces, VertexUVMap uvm,
                             const NamedParameters& np, bool simple_border,
-                            Patch_slots<TriangleMesh>* slots = nullptr)
+                            Patch_slots<TriangleMesh>* slots = nullptr, bool report_distortion = true)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -282,7 +284,7 @@ Error_code embed_patch_impl(const TriangleMesh& tm, const FaceRange& patch_faces
                          && r.clockwise == (orientation < 0)
                          && internal::count_wrong_faces(disk, pos, orientation, orient) == 0;
   r.overlap_checked = r.overlap_by_degree_argument = certified;
-  if(stats_out)
+  if(stats_out && report_distortion)
   {
     internal::Face_areas areas;
     internal::area_pass(disk, samples, o, areas);

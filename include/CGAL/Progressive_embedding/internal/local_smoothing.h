@@ -158,9 +158,12 @@ public:
     const double sx = d[0] > 0 ? 1 : (d[0] < 0 ? -1 : 0), sy = d[1] > 0 ? 1 : (d[1] < 0 ? -1 : 0);
     const double inf = std::numeric_limits<double>::infinity();
     double best = E0; Point_2 best_p = x;
+    // the diagonal neighbour, and the two axis neighbours when the step has both components
     const double cand[3][2] = {{sx, sy}, {sx, 0}, {0, sy}};
-    for(const auto& c : cand)
+    const int candidates = (sx != 0 && sy != 0) ? 3 : 1;
+    for(int k = 0; k < candidates; ++k)
     {
+      const double* c = cand[k];
       if(c[0] == 0 && c[1] == 0) continue;
       const double nx = c[0] == 0 ? xx : std::nextafter(xx, c[0] * inf);
       const double ny = c[1] == 0 ? xy : std::nextafter(xy, c[1] * inf);

@@ -574,7 +574,7 @@ py::tuple py_constrain(const py::object& V, const py::object& F, const py::objec
     PE::Error_code ec;
     {
       Stopwatch a(last_timing.algorithm_seconds);
-      ec = PE::constrained_embedding(w.mesh, cons, w.uv,
+      ec = PE::constrained_embedding<CGAL::Parallel_if_available_tag>(w.mesh, cons, w.uv,
         PE::parameters::border_shape(shape,
         PE::parameters::weights(wts,
         PE::parameters::optimize(optimize,

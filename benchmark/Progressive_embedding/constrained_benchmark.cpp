@@ -149,6 +149,9 @@ std::string fmt(double x, int prec = 3)
   return o.str();
 }
 
+// --sequential: constrained_embedding<CGAL::Sequential_tag> (the patches one after the other)
+bool sequential = false;
+
 // constrained_embedding() on a copy of `m0`, whose "v:uv" property holds the border
 Row run(const SM& m0, const std::vector<std::pair<vertex_descriptor, K::Point_2> >& constraints,
         bool optimize, double budget, std::size_t max_steiner)
@@ -161,8 +164,13 @@ Row run(const SM& m0, const std::vector<std::pair<vertex_descriptor, K::Point_2>
   // PE_VERBOSE=1 in the environment: constrained_embedding() reports its phases on std::cerr
   const bool verbose = std::getenv("PE_VERBOSE") != nullptr;
   const auto np = PE::parameters::optimize(optimize, PE::parameters::statistics(&st, CGAL::parameters::maximum_running_time(budget).verbose(verbose)));
-  const PE::Error_code ec = max_steiner ? PE::constrained_embedding(m, constraints, uv, PE::parameters::maximum_steiner_vertices(max_steiner, np))
-                                        : PE::constrained_embedding(m, constraints, uv, np);
+  PE::Error_code ec;
+  if(sequential)
+    ec = max_steiner ? PE::constrained_embedding(m, constraints, uv, PE::parameters::maximum_steiner_vertices(max_steiner, np))
+                     : PE::constrained_embedding(m, constraints, uv, np);
+  else
+    ec = max_steiner ? PE::constrained_embedding<CGAL::Parallel_if_available_tag>(m, constraints, uv, PE::parameters::maximum_steiner_vertices(max_steiner, np))
+                     : PE::constrained_embedding<CGAL::Parallel_if_available_tag>(m, constraints, uv, np);
   Row r;
   r.peak_mb = peak_rss_mb();
   r.status = PE::get_error_name(ec);
@@ -204,7 +212,8 @@ int main(int argc, char** argv)
   {
     std::cerr << "usage: constrained_benchmark DATA_DIR OUT_PREFIX [--meshes a.off,b.off] [--seeds S] [--counts 3,10,50]\n"
                  "       [--min-vertices N] [--max-vertices N] [--no-disks] [--no-closed] [--optimize-seeds K] [--seeds-large S] [--budget S]\n"
-                 "       [--max-steiner N] [--targets layout,jittered,random] [--jitter D]\n";
+                 "       [--max-steiner N] [--targets layout,jittered,random] [--jitter D] [--sequential]\n"
+                 "  --sequential: patches embedded one after the other (default: in parallel, CGAL::Parallel_if_available_tag)\n";
     return 2;
   }
   const std::string data = argv[1], out = argv[2];
@@ -234,6 +243,7 @@ int main(int argc, char** argv)
     else if(a == "--jitter" && has) jitter = std::atof(argv[++i]);
     else if(a == "--max-steiner" && has) max_steiner = std::stoul(argv[++i]);
     else if(a == "--no-disks") disks = false;
+    else if(a == "--sequential") sequential = true;
     else if(a == "--no-closed") closed = false;
     else { std::cerr << "constrained_benchmark: unknown option " << a << "\n"; return 2; }
   }
@@ -351,7 +361,8 @@ int main(int argc, char** argv)
   std::ofstream md(out + ".md");
   md << "# constrained_embedding(): the MatchMaker++ protocol on libcgal-demo meshes\n\n"
      << "Generated " << date << " by `constrained_benchmark` (" << sysconf(_SC_NPROCESSORS_ONLN)
-     << " cores; load average " << load[0] << " at the end). Disks as they are; closed genus-0 meshes cut open around "
+     << " cores; load average " << load[0] << " at the end; patches embedded "
+     << (sequential ? "sequentially" : "in parallel") << "). Disks as they are; closed genus-0 meshes cut open around "
         "the Tutte-failure protocol's face for the seed. Border: the square [-1.5, 2.5]^2 by 3D arc length. K "
         "constraints: K random interior vertices, the first three at (0,0), (1,0), (0,1) (targets `fixed`, K = 3); for K > 3 "
         "either at random points of [-1, 2]^2 (`random`: an arbitrary layout, the paths must wind), at their places "

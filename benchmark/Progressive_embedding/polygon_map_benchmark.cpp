@@ -222,8 +222,8 @@ void run_child(const Input& in, const std::string& shape, unsigned seed, double 
     auto turns = m.add_property_map<vertex_descriptor, int>("v:bench_turns", 0).first;
     if(shape == "own") PE::border_rotation_indices(m, uv, turns);
     const auto npt = PE::parameters::vertex_rotation_index_map(turns, np);
-    const PE::Error_code ec = max_steiner ? PE::constrained_embedding(m, C, uv, PE::parameters::maximum_steiner_vertices(max_steiner, npt))
-                                          : PE::constrained_embedding(m, C, uv, npt);
+    const PE::Error_code ec = max_steiner ? PE::constrained_embedding<CGAL::Parallel_if_available_tag>(m, C, uv, PE::parameters::maximum_steiner_vertices(max_steiner, npt))
+                                          : PE::constrained_embedding<CGAL::Parallel_if_available_tag>(m, C, uv, npt);
     r.peak_mb = pe_bench::peak_rss_mb();
     r.status = PE::get_error_name(ec);
     r.v_out = m.number_of_vertices();

@@ -77,7 +77,7 @@ int cmd_constrain(const Arguments& a)
   Picture picture;
   picture.has_patches = true;
   picture.patches = in.mesh.add_property_map<face_descriptor, int>("f:pe_patch", -1).first;
-  const PE::Error_code ec = PE::constrained_embedding(in.mesh, constraints, in.uv,
+  const PE::Error_code ec = PE::constrained_embedding<CGAL::Parallel_if_available_tag>(in.mesh, constraints, in.uv,
     PE::parameters::border_shape(s.border,
       PE::parameters::weights(s.weights,
         PE::parameters::optimize(!a.has("--no-optimize"),

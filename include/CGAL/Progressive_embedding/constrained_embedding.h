@@ -49,6 +49,8 @@
 #include <CGAL/Progressive_embedding/internal/constrained/trace_paths.h>
 #include <CGAL/Progressive_embedding/internal/constrained/trace_overlay.h>
 #include <CGAL/Progressive_embedding/internal/constrained/patch_chords.h>
+#include <CGAL/Progressive_embedding/internal/constrained/embed_patches.h>
+#include <CGAL/Progressive_embedding/internal/parallel_for.h>
 #include <CGAL/Progressive_embedding/internal/constrained/refinement.h>
 #include <CGAL/Progressive_embedding/internal/constrained/holes.h>
 
@@ -473,6 +475,10 @@ int border_rotation_indices(const TriangleMesh& tm, VertexUVMap uvm, VertexIndex
 /// down; `pe constrain` reads them so from its input). The border is then triangulated with these
 /// `rotation_indices` and the map is an immersion as above.
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag` (`CGAL::Parallel_if_available_tag` picks
+///         the latter when TBB is linked): with `CGAL::Parallel_tag` and a floating-point uv number type the patches
+///         are mapped in parallel (they are independent: the result is bit-for-bit the sequential one), and
+///         `optimize_distortion()` runs with the same tag. Exact number types always run sequentially.
 /// \tparam TriangleMesh a model of `MutableFaceGraph` (triangles)
 /// \tparam ConstraintRange a range of `std::pair<vertex_descriptor, Point_2>` (`Point_2` the uv map's value type)
 /// \tparam VertexUVMap a model of `ReadWritePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
@@ -574,7 +580,7 @@ int border_rotation_indices(const TriangleMesh& tm, VertexUVMap uvm, VertexIndex
 ///         `ERROR_BUDGET_EXHAUSTED` (time or Steiner budget), `ERROR_PATH_TRACING_FAILED`, the errors of the patch
 ///         embeddings (`ERROR_DEGENERATE_CHORD`, `ERROR_COLLAPSE_FAILED`, `ERROR_INSERTION_FAILED`, ...), or
 ///         `ERROR_INVALID_EMBEDDING` when a certificate fails.
-template <class TriangleMesh, class ConstraintRange, class VertexUVMap,
+template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class ConstraintRange, class VertexUVMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constraints, VertexUVMap uvm,
                                  const NamedParameters& np = CGAL::parameters::default_values())
@@ -999,27 +1005,38 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
   for(std::size_t k = 0; k < nb; ++k) wborder.push_back(to_work.at(disk.vertices[disk.border[k]]));
   for(std::size_t k = 0; k < nb; ++k) put(wuv, wborder[k], Bfull[k]);
   for(std::size_t i = 0; i < T.size(); ++i) put(wuv, nodes[nbn + i], T[i]);
-  for(std::size_t e = 0; e < paths.size(); ++e)
   {
-    const std::vector<wvertex>& P = paths[e];
-    if(P.size() < 3) continue;
-    // 3D arc-length fractions of the interior path vertices
-    std::vector<double> len(1, 0.);
-    for(std::size_t k = 0; k + 1 < P.size(); ++k)
-      len.push_back(len.back() + std::sqrt(CGAL::to_double(CGAL::squared_distance(get(wvpm, P[k]), get(wvpm, P[k + 1])))));
-    std::vector<double> fractions;
-    for(std::size_t k = 1; k + 1 < P.size(); ++k)
-    {
-      double f = len.back() > 0 ? len[k] / len.back() : double(k) / double(P.size() - 1);
-      if(!(f >= 0)) f = 0;
-      if(f > 1) f = 1;
-      if(!fractions.empty() && f < fractions.back()) f = fractions.back();
-      fractions.push_back(f);
-    }
-    std::vector<Point_2> positions;
-    ec = internal::place_path_vertices(partition, B, T, e, fractions, positions);
-    if(ec != OK) return finish(ec);
-    for(std::size_t k = 1; k + 1 < P.size(); ++k) put(wuv, P[k], positions[k - 1]);
+    // each path writes its own interior vertices: the paths are placed in parallel with Parallel_tag
+    std::vector<Error_code> placed(paths.size(), OK);
+    typedef typename Traits::FT FT_uv;
+    std::vector<std::size_t> order(paths.size()); // longest first: the workers end together
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return paths[a].size() > paths[b].size(); });
+    internal::for_each_index<ConcurrencyTag, FT_uv>(
+      paths.size(), internal::number_of_workers<ConcurrencyTag, FT_uv>(paths.size(), internal::max_patch_workers),
+      [&](std::size_t k, int) {
+        const std::size_t e = order[k];
+        const std::vector<wvertex>& P = paths[e];
+        if(P.size() < 3) return;
+        // 3D arc-length fractions of the interior path vertices
+        std::vector<double> len(1, 0.);
+        for(std::size_t k = 0; k + 1 < P.size(); ++k)
+          len.push_back(len.back() + std::sqrt(CGAL::to_double(CGAL::squared_distance(get(wvpm, P[k]), get(wvpm, P[k + 1])))));
+        std::vector<double> fractions;
+        for(std::size_t k = 1; k + 1 < P.size(); ++k)
+        {
+          double f = len.back() > 0 ? len[k] / len.back() : double(k) / double(P.size() - 1);
+          if(!(f >= 0)) f = 0;
+          if(f > 1) f = 1;
+          if(!fractions.empty() && f < fractions.back()) f = fractions.back();
+          fractions.push_back(f);
+        }
+        std::vector<Point_2> positions;
+        placed[e] = internal::place_path_vertices(partition, B, T, e, fractions, positions);
+        if(placed[e] != OK) return;
+        for(std::size_t k = 1; k + 1 < P.size(); ++k) put(wuv, P[k], positions[k - 1]);
+      });
+    for(Error_code pe : placed) if(pe != OK) return finish(pe);
   }
   {
     // A face whose three vertices lie on the path network is fixed by the placement above; when
@@ -1045,30 +1062,24 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
   stats.patches = patches.size();
   std::vector<std::vector<wface> > patch_faces(patches.size());
   for(wface f : faces(work)) patch_faces[get(fpatch, f)].push_back(f);
-  internal::Patch_slots<Work> slots(work);
-  for(std::size_t p = 0; p < patches.size(); ++p)
+  const internal::Patch_phase_result patch_phase =
+    internal::embed_patches<ConcurrencyTag>(work, patch_faces, wuv, wts, remaining);
+  stats.repaired_patches += patch_phase.repaired_patches;
+  if(patch_phase.status != OK)
   {
-    if(!(remaining() > 0)) return finish(ERROR_BUDGET_EXHAUSTED);
-    Progressive_embedding_statistics pst;
-    ec = internal::embed_patch_impl(work, patch_faces[p], wuv,
-                                    parameters::statistics(&pst, parameters::weights(wts).maximum_running_time(remaining())),
-                                    true, &slots, false);
-    if(pst.collapses > 0 || pst.insertions > 0) ++stats.repaired_patches;
-    if(ec != OK)
+    if(verbose)
     {
-      if(verbose)
-      {
-        const std::streamsize precision = std::cerr.precision(17); // bit-exact: the failures are about rounding
-        std::cerr << "[constrained_embedding] patch " << p << " (" << patch_faces[p].size() << " faces): "
-                  << get_error_message(ec) << "; border:";
-        for(auto h : patches[p].border)
-          std::cerr << " (" << CGAL::to_double(get(wuv, target(h, work)).x()) << ", "
-                    << CGAL::to_double(get(wuv, target(h, work)).y()) << ")";
-        std::cerr << std::endl;
-        std::cerr.precision(precision);
-      }
-      return finish(ec);
+      const std::size_t p = patch_phase.failed_patch;
+      const std::streamsize precision = std::cerr.precision(17); // bit-exact: the failures are about rounding
+      std::cerr << "[constrained_embedding] patch " << p << " (" << patch_faces[p].size() << " faces): "
+                << get_error_message(patch_phase.status) << "; border:";
+      for(auto h : patches[p].border)
+        std::cerr << " (" << CGAL::to_double(get(wuv, target(h, work)).x()) << ", "
+                  << CGAL::to_double(get(wuv, target(h, work)).y()) << ")";
+      std::cerr << std::endl;
+      std::cerr.precision(precision);
     }
+    return finish(patch_phase.status);
   }
   stats.seconds_patches = timer.time() - t_patches;
 
@@ -1139,7 +1150,7 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     std::vector<wvertex> fixed(nodes.begin() + nbn, nodes.end());
     stats.optimized = true;
     stats.optimization_status =
-      optimize_distortion(work, wuv, parameters::optimization_statistics(&stats.optimization,
+      optimize_distortion<ConcurrencyTag>(work, wuv, parameters::optimization_statistics(&stats.optimization,
                                        parameters::constrained_vertices(fixed).maximum_running_time(remaining())));
     stats.seconds_optimization = timer.time() - t_opt;
     // OK / ERROR_BUDGET_EXHAUSTED: a certified, improved map was written; otherwise nothing was

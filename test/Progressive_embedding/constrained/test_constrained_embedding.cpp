@@ -373,6 +373,62 @@ PE_TEST_GROUP(constrained_embedding_winding)
   return EXIT_SUCCESS;
 }
 
+// Parallel_tag maps the patches (and places the path vertices) in parallel: the map is bit-for-bit the
+// sequential one, since each patch's map depends on its border only. Winding paths give many patches
+// and long paths; then a small case with the (parallel) optimization, certified.
+PE_TEST_GROUP(constrained_embedding_parallel)
+{
+  typedef boost::graph_traits<Surface_mesh>::vertex_descriptor VD;
+  Surface_mesh m0;
+  if(!read_mesh(data_dir + "/meshes/mushroom.off", m0)) return EXIT_FAILURE;
+  auto uv0 = m0.add_property_map<VD, Epick::Point_2>("v:test_uv", Epick::Point_2(0, 0)).first; // copied with the mesh
+  CHECK(shaped_border(m0, uv0, PE::Border_shape::SQUARE), "border placed");
+  const auto C = random_constraints<Epick>(m0, uv0, 30, 1u);
+  std::vector<std::vector<Epick::Point_2> > results;
+  std::vector<std::size_t> repaired;
+  for(int parallel = 0; parallel < 2; ++parallel)
+  {
+    Surface_mesh m = m0;
+    auto uv = m.property_map<VD, Epick::Point_2>("v:test_uv").first;
+    PE::Constrained_embedding_statistics st;
+    const auto np = PE::parameters::statistics(&st, PE::parameters::maximum_steiner_vertices(100000).optimize(false));
+    const PE::Error_code ec = parallel ? PE::constrained_embedding<CGAL::Parallel_if_available_tag>(m, C, uv, np)
+                                       : PE::constrained_embedding<CGAL::Sequential_tag>(m, C, uv, np);
+    std::cout << (parallel ? "parallel" : "sequential") << ": " << PE::get_error_message(ec) << ", Steiner "
+              << st.steiner_vertices << ", patches " << st.patches << " (" << st.repaired_patches << " repaired), "
+              << st.seconds_patches << " s in the patch phase" << std::endl;
+    CHECK(ec == PE::OK, "constrained_embedding OK");
+    CHECK(PE::check_embedding(m, uv).is_valid(), "certified");
+    CHECK(st.patches > 20, "many patches: " << st.patches);
+    for(const auto& c : C) CHECK(get(uv, c.first) == c.second, "constraint bit-exact");
+    results.emplace_back();
+    for(auto v : vertices(m)) results.back().push_back(get(uv, v));
+    repaired.push_back(st.repaired_patches);
+  }
+  CHECK(results[0].size() == results[1].size(), "same refinement");
+  std::size_t differ = 0;
+  for(std::size_t i = 0; i < results[0].size(); ++i)
+    if(!(results[0][i].x() == results[1][i].x() && results[0][i].y() == results[1][i].y())) ++differ;
+  CHECK(differ == 0, "parallel map bit-for-bit the sequential one (" << differ << " vertices differ)");
+  CHECK(repaired[0] == repaired[1], "same repaired patch count");
+  {
+    Surface_mesh m;
+    if(!read_mesh(data_dir + "/meshes/lion-head.off", m)) return EXIT_FAILURE;
+    auto uv = make_uv_map(m, Epick::Point_2());
+    for(auto v : vertices(m)) put(uv, v, Epick::Point_2(0, 0));
+    CHECK(shaped_border(m, uv, PE::Border_shape::SQUARE), "border placed");
+    const auto C10 = random_constraints<Epick>(m, uv, 10, 3u);
+    PE::Constrained_embedding_statistics st;
+    const PE::Error_code ec = PE::constrained_embedding<CGAL::Parallel_if_available_tag>(m, C10, uv, PE::parameters::statistics(&st));
+    std::cout << "lion-head, 10 constraints, parallel, optimized: " << PE::get_error_message(ec) << ", mean SD "
+              << st.report_before_optimization.mean_energy_3d << " -> " << st.report.mean_energy_3d << std::endl;
+    CHECK(ec == PE::OK && st.optimized && PE::check_embedding(m, uv).is_valid(), "optimized in parallel, certified");
+    CHECK(st.report.mean_energy_3d <= st.report_before_optimization.mean_energy_3d, "the optimization lowered the energy");
+    for(const auto& c : C10) CHECK(get(uv, c.first) == c.second, "constraint bit-exact");
+  }
+  return EXIT_SUCCESS;
+}
+
 PE_TEST_GROUP(constrained_embedding_gmpq)
 {
   // a small triangulated grid disk, uv in exact rationals

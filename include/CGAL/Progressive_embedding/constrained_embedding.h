@@ -113,6 +113,10 @@ struct Constrained_embedding_statistics
   std::size_t patches = 0;
   /// patches whose Tutte map needed the progressive embedding repair
   std::size_t repaired_patches = 0;
+  /// patches mapped as one with neighbours, into the union of their polygons, the paths between them free: the
+  /// fallback for a patch that could not be mapped into its polygon (a needle a few ulps wide holding many
+  /// vertices, when targets lie within a few ulps of each other); counts the failed patches and their partners
+  std::size_t merged_patches = 0;
   /// seconds spent validating the input and placing the border
   double seconds_validation = 0;
   /// seconds spent partitioning the target domain into convex polygons
@@ -433,7 +437,10 @@ int border_rotation_indices(const TriangleMesh& tm, VertexUVMap uvm, VertexIndex
 /// non-crossing paths of edges between the corresponding vertices (edges are split at their midpoints where a path
 /// is blocked, and where an edge joins two vertices of one path or of one straight border side); the path
 /// vertices are placed on their segments by 3D arc length; each patch is mapped into its polygon (Tutte's map,
-/// repaired by the progressive embedding when not valid in floating point). The whole map is then certified by
+/// repaired by the progressive embedding when not valid in floating point). A patch that cannot be mapped so (its
+/// polygon a needle too thin for its vertices in floating point, when targets lie within a few ulps of each other)
+/// is mapped together with neighbouring patches into the union of their polygons, the paths between them free
+/// and every constrained vertex still on the union's border. The whole map is then certified by
 /// `check_embedding()` and its distortion optimized (`optimize_distortion()`) with the border and the constrained
 /// vertices fixed, and certified again.
 ///
@@ -557,7 +564,9 @@ int border_rotation_indices(const TriangleMesh& tm, VertexUVMap uvm, VertexIndex
 ///                           patch they lie in (the labels are taken from the refined working copy, whose faces are
 ///                           those of the refined `tm`); the optimization changes no label. Two faces sharing an edge
 ///                           have different patches only if the edge is on a traced path; with holes, a patch
-///                           that lay inside a hole has no face. Nothing is written on error.}
+///                           that lay inside a hole has no face. The faces of patches mapped as one with their
+///                           neighbours (`Constrained_embedding_statistics::merged_patches`) keep their labels but lie
+///                           in the union of the polygons. Nothing is written on error.}
 ///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor` as
 ///                    key type and an integral value type (the index is converted by `static_cast`); it must accept the
 ///                    faces the refinement adds to `tm` (a `Surface_mesh` property map, a dynamic property map)}
@@ -1062,9 +1071,34 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
   stats.patches = patches.size();
   std::vector<std::vector<wface> > patch_faces(patches.size());
   for(wface f : faces(work)) patch_faces[get(fpatch, f)].push_back(f);
-  const internal::Patch_phase_result patch_phase =
+  internal::Patch_phase_result patch_phase =
     internal::embed_patches<ConcurrencyTag>(work, patch_faces, wuv, wts, remaining);
   stats.repaired_patches += patch_phase.repaired_patches;
+  if(patch_phase.status != OK && patch_phase.status != ERROR_BUDGET_EXHAUSTED)
+  {
+    // no room in a patch's polygon: mapped with a neighbour into the union of their polygons
+    std::vector<char> excluded(patches.size(), 0), is_node(num_vertices(work), 0);
+    for(wvertex v : nodes) is_node[static_cast<std::size_t>(v)] = 1;
+    Error_code merge_ec = OK;
+    for(std::size_t p : patch_phase.failed)
+    {
+      if(excluded[p]) continue; // mapped with an earlier failed patch
+      std::vector<std::size_t> with;
+      excluded[p] = 1;
+      merge_ec = internal::merge_failed_patch(work, patch_faces, fpatch, is_node, p, wuv, wts, remaining, excluded, with);
+      if(verbose)
+      {
+        std::cerr << "[constrained_embedding] patch " << p << " (" << patch_faces[p].size() << " faces) with its neighbours: ";
+        if(merge_ec == OK) { std::cerr << "mapped with patch(es)"; for(std::size_t q : with) std::cerr << ' ' << q; }
+        else std::cerr << get_error_message(merge_ec);
+        std::cerr << std::endl;
+      }
+      if(merge_ec != OK) break;
+      for(std::size_t q : with) excluded[q] = 1;
+      stats.merged_patches += 1 + with.size();
+    }
+    if(merge_ec == OK) patch_phase.status = OK;
+  }
   if(patch_phase.status != OK)
   {
     if(verbose)

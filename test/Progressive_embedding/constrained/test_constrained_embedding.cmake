@@ -5,6 +5,7 @@ pe_constrained_test(constrained_embedding_cut_closed "constrained;matchmaker" 60
 pe_constrained_test(constrained_embedding_polyhedron "constrained;matchmaker")
 pe_constrained_test(constrained_embedding_winding "constrained;matchmaker" 600)
 pe_constrained_test(constrained_embedding_parallel "constrained;matchmaker;parallel" 600)
+pe_constrained_test(constrained_embedding_needles "constrained;matchmaker")
 pe_constrained_test(constrained_embedding_gmpq "constrained;matchmaker")
 pe_constrained_test(constrained_embedding_errors "constrained;matchmaker")
 pe_constrained_test(constrained_embedding_holes "constrained;matchmaker;holes" 600)

@@ -21,6 +21,8 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <set>
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -426,6 +428,58 @@ PE_TEST_GROUP(constrained_embedding_parallel)
     CHECK(st.report.mean_energy_3d <= st.report_before_optimization.mean_energy_3d, "the optimization lowered the energy");
     for(const auto& c : C10) CHECK(get(uv, c.first) == c.second, "constraint bit-exact");
   }
+  return EXIT_SUCCESS;
+}
+
+// Targets a few ulps apart: dino (cut open around the Tutte-failure protocol's face for seed 2), 50
+// interior vertices pinned at their places in its Tutte map on the square [-1.5, 2.5]^2, a map that
+// crushes a region into 1e-14. Two patches are needles a few hundred ulps long and an ulp wide holding
+// about 120 vertices: no double lies inside them for some. They are mapped with neighbouring patches
+// into the union of their polygons (merged_patches), the whole map certified, the constraints exact.
+PE_TEST_GROUP(constrained_embedding_needles)
+{
+  typedef boost::graph_traits<Surface_mesh>::vertex_descriptor VD;
+  typedef boost::graph_traits<Surface_mesh>::face_descriptor FD;
+  Surface_mesh m;
+  if(!read_mesh(data_dir + "/meshes/dino.off", m)) return EXIT_FAILURE;
+  const unsigned seed = 2;
+  {
+    std::vector<FD> F(faces(m).begin(), faces(m).end());
+    const FD f = F[PE::internal::thingi_face_index(F.size(), seed)];
+    std::set<FD> doomed;
+    for(VD v : CGAL::vertices_around_face(halfedge(f, m), m))
+      for(FD g : CGAL::faces_around_target(halfedge(v, m), m))
+        if(g != Surface_mesh::null_face()) doomed.insert(g);
+    for(FD g : doomed) CGAL::Euler::remove_face(halfedge(g, m), m);
+    m.collect_garbage();
+  }
+  auto uv = m.add_property_map<VD, Epick::Point_2>("v:test_uv", Epick::Point_2(0, 0)).first;
+  CHECK(PE::tutte_embedding(m, Surface_mesh::null_halfedge(), uv, PE::parameters::border_shape(PE::Border_shape::SQUARE)) == PE::OK,
+        "Tutte map");
+  for(VD v : vertices(m)) put(uv, v, Epick::Point_2(4 * get(uv, v).x() - 1.5, 4 * get(uv, v).y() - 1.5));
+  std::vector<VD> pick;
+  for(VD v : vertices(m)) if(!CGAL::is_border(v, m)) pick.push_back(v);
+  std::mt19937 gen(seed * 1000u + 50u);
+  std::shuffle(pick.begin(), pick.end(), gen);
+  std::vector<std::pair<VD, Epick::Point_2> > C;
+  std::set<std::pair<double, double> > used;
+  auto inside = [](double x) { return std::min(2.4, std::max(-1.4, x)); };
+  for(std::size_t j = 0; j < pick.size() && C.size() < 50; ++j)
+  {
+    const Epick::Point_2 t(inside(get(uv, pick[j]).x()), inside(get(uv, pick[j]).y()));
+    if(used.insert({ t.x(), t.y() }).second) C.emplace_back(pick[j], t);
+  }
+  CHECK(C.size() == 50, "50 distinct targets");
+  PE::Constrained_embedding_statistics st;
+  const PE::Error_code ec = PE::constrained_embedding(m, C, uv, PE::parameters::statistics(&st).optimize(false));
+  std::cout << "dino seed 2, 50 layout targets: " << PE::get_error_message(ec) << ", Steiner " << st.steiner_vertices
+            << ", patches " << st.patches << ", merged " << st.merged_patches << ", min area "
+            << st.report.min_signed_area << std::endl;
+  CHECK(ec == PE::OK, "constrained_embedding OK");
+  CHECK(st.merged_patches >= 2, "needles mapped with their neighbours: " << st.merged_patches);
+  const PE::Embedding_report r = PE::check_embedding(m, uv);
+  CHECK(r.is_valid() && r.flipped == 0 && r.degenerate == 0 && r.overlapping_pairs == 0, "certified valid");
+  for(const auto& c : C) CHECK(get(uv, c.first) == c.second, "constraint bit-exact");
   return EXIT_SUCCESS;
 }
 

@@ -14,9 +14,18 @@
 // sequential: their reference-counted handles are shared by neighbouring patches.
 //
 // The result does not depend on the order: each patch's map is a function of its border alone.
-// On failure, the error of the failed patch with the lowest index is returned (the other
-// workers stop at their next patch), so the sequential and parallel runs report the same patch
-// whenever only one can fail.
+// Every patch is tried (but once the time budget is exhausted the workers stop): the failed ones
+// are listed, and the error of the lowest index is returned, the same in sequential and parallel.
+//
+// merge_failed_patch(work, patch_faces, face_patch, is_node, failed, uvm, weights, remaining, excluded,
+// merged_with): the fallback for a patch whose polygon has no room for its vertices (a needle a few
+// ulps wide, when targets lie within a few ulps of each other). The patch is mapped together with
+// neighbours across its paths, into the union of their polygons, the vertices of the paths between
+// them free: the neighbour with the largest polygon first, then, while the map fails, the largest
+// neighbour of the union, up to max_merged_patches patches. A neighbour is added only if every node
+// (constrained vertex, border point) stays on the union's border, its uv fixed; `excluded` patches
+// (merged already) are not added. The union's map has the certificate of embed_patch_impl() (simple
+// border, every face strictly positive); the whole map is certified afterwards as before.
 
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/Progressive_embedding_statistics.h>
@@ -26,8 +35,12 @@
 
 #include <CGAL/Progressive_embedding/internal/parallel_for.h>
 
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/helpers.h>
+
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstddef>
 #include <memory>
 #include <numeric>
@@ -41,7 +54,8 @@ namespace internal {
 struct Patch_phase_result
 {
   Error_code status = OK;
-  std::size_t failed_patch = std::size_t(-1); // with status != OK
+  std::size_t failed_patch = std::size_t(-1); // with status != OK: the lowest index of `failed`
+  std::vector<std::size_t> failed;            // the patches not mapped, increasing
   std::size_t repaired_patches = 0;           // patches whose Tutte map needed collapses or insertions
 };
 
@@ -62,7 +76,7 @@ Patch_phase_result embed_patches(Mesh& work, const std::vector<std::vector<typen
 
   auto embed_one = [&](std::size_t p, Patch_slots<Mesh>& slots)
   {
-    if(failed.load(std::memory_order_relaxed)) return; // another patch failed: the result is an error anyway
+    if(failed.load(std::memory_order_relaxed)) return; // out of time: the result is an error anyway
     ran[p] = 1;
     if(!(remaining() > 0)) { status[p] = ERROR_BUDGET_EXHAUSTED; failed = true; return; }
     Progressive_embedding_statistics pst;
@@ -70,7 +84,7 @@ Patch_phase_result embed_patches(Mesh& work, const std::vector<std::vector<typen
                                  parameters::statistics(&pst, parameters::weights(weights).maximum_running_time(remaining())),
                                  true, &slots, false);
     repaired[p] = (pst.collapses > 0 || pst.insertions > 0);
-    if(status[p] != OK) failed = true;
+    if(status[p] == ERROR_BUDGET_EXHAUSTED) failed = true;
   };
 
   // Patch_slots hold a property of the mesh: created here, before any thread runs
@@ -88,9 +102,99 @@ Patch_phase_result embed_patches(Mesh& work, const std::vector<std::vector<typen
   for(std::size_t p = 0; p < n; ++p)
   {
     if(ran[p] && repaired[p]) ++result.repaired_patches;
-    if(ran[p] && status[p] != OK && result.status == OK) { result.status = status[p]; result.failed_patch = p; }
+    if(!ran[p] || status[p] == OK) continue;
+    if(result.status == OK) { result.status = status[p]; result.failed_patch = p; }
+    result.failed.push_back(p);
   }
   return result;
+}
+
+// twice the signed area of the polygon bounding a patch (its border vertices' uv, in double)
+template <class Mesh, class UVMap>
+double patch_polygon_area(const Mesh& work, const std::vector<typename boost::graph_traits<Mesh>::face_descriptor>& faces,
+                          UVMap uvm)
+{
+  double a = 0;
+  for(auto f : faces) // the sum of the faces' areas is the polygon's area for any valid map; here, for ordering
+  {
+    const auto h = halfedge(f, work);
+    const auto p = get(uvm, source(h, work)), q = get(uvm, target(h, work)), r = get(uvm, target(next(h, work), work));
+    a += (CGAL::to_double(q.x()) - CGAL::to_double(p.x())) * (CGAL::to_double(r.y()) - CGAL::to_double(p.y()))
+       - (CGAL::to_double(q.y()) - CGAL::to_double(p.y())) * (CGAL::to_double(r.x()) - CGAL::to_double(p.x()));
+  }
+  return a;
+}
+
+// Maximum number of patches mapped as one by merge_failed_patch().
+constexpr std::size_t max_merged_patches = 8;
+
+template <class Mesh, class FacePatchMap, class UVMap, class Remaining>
+Error_code merge_failed_patch(Mesh& work, const std::vector<std::vector<typename boost::graph_traits<Mesh>::face_descriptor> >& patch_faces,
+                              FacePatchMap face_patch, const std::vector<char>& is_node, std::size_t failed, UVMap uvm,
+                              Weights weights, Remaining remaining, const std::vector<char>& excluded,
+                              std::vector<std::size_t>& merged_with)
+{
+  typedef typename boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  std::vector<std::size_t> region(1, failed);
+  auto in_region = [&](std::size_t q) { return std::find(region.begin(), region.end(), q) != region.end(); };
+  // the region's neighbours across paths (not mesh border edges), not excluded
+  auto neighbours = [&]()
+  {
+    std::vector<std::size_t> result;
+    for(std::size_t r : region)
+      for(face_descriptor f : patch_faces[r])
+        for(auto h : CGAL::halfedges_around_face(halfedge(f, work), work))
+        {
+          const auto o = opposite(h, work);
+          if(CGAL::is_border(o, work)) continue;
+          const std::size_t q = static_cast<std::size_t>(get(face_patch, face(o, work)));
+          if(!excluded[q] && !in_region(q) && std::find(result.begin(), result.end(), q) == result.end()) result.push_back(q);
+        }
+    return result;
+  };
+  // every node of the union stays on its border (its target is fixed): some face around it is outside
+  auto nodes_on_border = [&](std::size_t q)
+  {
+    for(face_descriptor f : patch_faces[q])
+      for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, work), work))
+      {
+        if(!is_node[static_cast<std::size_t>(v)]) continue;
+        bool outside = false;
+        for(auto h : CGAL::halfedges_around_target(halfedge(v, work), work))
+        {
+          if(CGAL::is_border(h, work)) { outside = true; break; }
+          const std::size_t g = static_cast<std::size_t>(get(face_patch, face(h, work)));
+          if(g != q && !in_region(g)) { outside = true; break; }
+        }
+        if(!outside) return false;
+      }
+    return true;
+  };
+  Error_code ec = ERROR_INVALID_EMBEDDING;
+  while(region.size() < max_merged_patches)
+  {
+    if(!(remaining() > 0)) return ERROR_BUDGET_EXHAUSTED;
+    // the neighbour with the largest polygon (valid maps: their areas; refused ones keep the placement's uv)
+    std::size_t best = std::size_t(-1);
+    double best_area = -1;
+    for(std::size_t q : neighbours())
+    {
+      const double area = std::abs(patch_polygon_area(work, patch_faces[q], uvm));
+      if(area > best_area && nodes_on_border(q)) { best = q; best_area = area; }
+    }
+    if(best == std::size_t(-1)) break;
+    region.push_back(best);
+    std::vector<face_descriptor> faces;
+    for(std::size_t r : region) faces.insert(faces.end(), patch_faces[r].begin(), patch_faces[r].end());
+    Progressive_embedding_statistics pst;
+    ec = embed_patch_impl(work, faces, uvm,
+                          parameters::statistics(&pst, parameters::weights(weights).maximum_running_time(remaining())),
+                          true, static_cast<Patch_slots<Mesh>*>(nullptr), false);
+    if(ec == OK) { merged_with.assign(region.begin() + 1, region.end()); return OK; }
+    if(ec == ERROR_BUDGET_EXHAUSTED) return ec;
+  }
+  return ec;
 }
 
 } // namespace internal

@@ -85,14 +85,7 @@ bool is_closed_genus_0(const SM& m)
 // removes the protocol's face for the seed and every face sharing a vertex with it
 bool cut_open(SM& m, unsigned seed)
 {
-  std::vector<face_descriptor> F(faces(m).begin(), faces(m).end());
-  const face_descriptor f = F[PE::internal::thingi_face_index(F.size(), seed)];
-  std::set<face_descriptor> doomed;
-  for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, m), m))
-    for(face_descriptor g : CGAL::faces_around_target(halfedge(v, m), m))
-      if(g != SM::null_face()) doomed.insert(g);
-  for(face_descriptor g : doomed) CGAL::Euler::remove_face(halfedge(g, m), m);
-  m.collect_garbage();
+  PE::internal::remove_protocol_face_star(m, seed);
   return is_disk(m);
 }
 

@@ -17,6 +17,7 @@
 #include <array>
 #include <cmath>
 #include <random>
+#include <set>
 #include <vector>
 
 namespace CGAL {
@@ -106,6 +107,24 @@ Error_code thingi_cut(Mesh& m, unsigned seed,
   for(auto v : CGAL::vertices_around_face(halfedge(f, m), m)) pinned[k++] = v;
   CGAL::Euler::remove_face(halfedge(f, m), m);
   return OK;
+}
+
+// The constrained-map protocol's cut of a closed mesh: removes the Tutte-failure protocol's face for
+// `seed` and every face sharing a vertex with it (a wider hole than thingi_cut(): no border vertex
+// of degree 2), then collects the garbage (a Surface_mesh).
+template <class Mesh>
+void remove_protocol_face_star(Mesh& m, unsigned seed)
+{
+  typedef typename boost::graph_traits<Mesh>::face_descriptor fd;
+  std::vector<fd> F(faces(m).first, faces(m).second);
+  if(F.empty()) return;
+  const fd f = F[thingi_face_index(F.size(), seed)];
+  std::set<fd> doomed;
+  for(auto v : CGAL::vertices_around_face(halfedge(f, m), m))
+    for(fd g : CGAL::faces_around_target(halfedge(v, m), m))
+      if(g != boost::graph_traits<Mesh>::null_face()) doomed.insert(g);
+  for(fd g : doomed) CGAL::Euler::remove_face(halfedge(g, m), m);
+  m.collect_garbage();
 }
 
 } // namespace internal

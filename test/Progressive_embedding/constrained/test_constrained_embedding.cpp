@@ -439,20 +439,10 @@ PE_TEST_GROUP(constrained_embedding_parallel)
 PE_TEST_GROUP(constrained_embedding_needles)
 {
   typedef boost::graph_traits<Surface_mesh>::vertex_descriptor VD;
-  typedef boost::graph_traits<Surface_mesh>::face_descriptor FD;
   Surface_mesh m;
   if(!read_mesh(data_dir + "/meshes/dino.off", m)) return EXIT_FAILURE;
   const unsigned seed = 2;
-  {
-    std::vector<FD> F(faces(m).begin(), faces(m).end());
-    const FD f = F[PE::internal::thingi_face_index(F.size(), seed)];
-    std::set<FD> doomed;
-    for(VD v : CGAL::vertices_around_face(halfedge(f, m), m))
-      for(FD g : CGAL::faces_around_target(halfedge(v, m), m))
-        if(g != Surface_mesh::null_face()) doomed.insert(g);
-    for(FD g : doomed) CGAL::Euler::remove_face(halfedge(g, m), m);
-    m.collect_garbage();
-  }
+  PE::internal::remove_protocol_face_star(m, seed);
   auto uv = m.add_property_map<VD, Epick::Point_2>("v:test_uv", Epick::Point_2(0, 0)).first;
   CHECK(PE::tutte_embedding(m, Surface_mesh::null_halfedge(), uv, PE::parameters::border_shape(PE::Border_shape::SQUARE)) == PE::OK,
         "Tutte map");

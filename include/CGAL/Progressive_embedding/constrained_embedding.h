@@ -483,9 +483,11 @@ int border_rotation_indices(const TriangleMesh& tm, VertexUVMap uvm, VertexIndex
 /// `rotation_indices` and the map is an immersion as above.
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag` (`CGAL::Parallel_if_available_tag` picks
-///         the latter when TBB is linked): with `CGAL::Parallel_tag` and a floating-point uv number type the patches
-///         are mapped in parallel (they are independent: the result is bit-for-bit the sequential one), and
-///         `optimize_distortion()` runs with the same tag. Exact number types always run sequentially.
+///         the latter when TBB is linked): with `CGAL::Parallel_tag` and a floating-point uv number type the path
+///         vertices are placed and the patches mapped in parallel (they are independent: the certified map before the
+///         optimization is bit-for-bit the sequential one), and `optimize_distortion()` runs with the same tag (its
+///         parallel sweeps move the vertices in another order: the optimized map may differ from the sequential one in
+///         the last digits of its energy). Exact number types always run sequentially.
 /// \tparam TriangleMesh a model of `MutableFaceGraph` (triangles)
 /// \tparam ConstraintRange a range of `std::pair<vertex_descriptor, Point_2>` (`Point_2` the uv map's value type)
 /// \tparam VertexUVMap a model of `ReadWritePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`

@@ -53,7 +53,7 @@ namespace internal {
 // what embed_patches() reports
 struct Patch_phase_result
 {
-  Error_code status = OK;
+  Error_code status = OK;                     // ERROR_BUDGET_EXHAUSTED if any patch ran out of time
   std::size_t failed_patch = std::size_t(-1); // with status != OK: the lowest index of `failed`
   std::vector<std::size_t> failed;            // the patches not mapped, increasing
   std::size_t repaired_patches = 0;           // patches whose Tutte map needed collapses or insertions
@@ -106,6 +106,7 @@ Patch_phase_result embed_patches(Mesh& work, const std::vector<std::vector<typen
     if(result.status == OK) { result.status = status[p]; result.failed_patch = p; }
     result.failed.push_back(p);
   }
+  if(failed) result.status = ERROR_BUDGET_EXHAUSTED; // out of time: no fallback either
   return result;
 }
 

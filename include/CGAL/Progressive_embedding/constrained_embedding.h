@@ -485,9 +485,9 @@ int border_rotation_indices(const TriangleMesh& tm, VertexUVMap uvm, VertexIndex
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag` (`CGAL::Parallel_if_available_tag` picks
 ///         the latter when TBB is linked): with `CGAL::Parallel_tag` and a floating-point uv number type the path
 ///         vertices are placed and the patches mapped in parallel (they are independent: the certified map before the
-///         optimization is bit-for-bit the sequential one), and `optimize_distortion()` runs with the same tag (its
-///         parallel sweeps move the vertices in another order: the optimized map may differ from the sequential one in
-///         the last digits of its energy). Exact number types always run sequentially.
+///         optimization is bit-for-bit the sequential one), and `optimize_distortion()` runs with the same tag (it
+///         moves the vertices of one colour class at a time, which share no face: the same sweeps as in sequence).
+///         Exact number types always run sequentially.
 /// \tparam TriangleMesh a model of `MutableFaceGraph` (triangles)
 /// \tparam ConstraintRange a range of `std::pair<vertex_descriptor, Point_2>` (`Point_2` the uv map's value type)
 /// \tparam VertexUVMap a model of `ReadWritePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`

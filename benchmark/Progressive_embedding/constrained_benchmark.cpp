@@ -157,13 +157,11 @@ Row run(const SM& m0, const std::vector<std::pair<vertex_descriptor, K::Point_2>
   // PE_VERBOSE=1 in the environment: constrained_embedding() reports its phases on std::cerr
   const bool verbose = std::getenv("PE_VERBOSE") != nullptr;
   const auto np = PE::parameters::optimize(optimize, PE::parameters::statistics(&st, CGAL::parameters::maximum_running_time(budget).verbose(verbose)));
-  PE::Error_code ec;
-  if(sequential)
-    ec = max_steiner ? PE::constrained_embedding(m, constraints, uv, PE::parameters::maximum_steiner_vertices(max_steiner, np))
-                     : PE::constrained_embedding(m, constraints, uv, np);
-  else
-    ec = max_steiner ? PE::constrained_embedding<CGAL::Parallel_if_available_tag>(m, constraints, uv, PE::parameters::maximum_steiner_vertices(max_steiner, np))
-                     : PE::constrained_embedding<CGAL::Parallel_if_available_tag>(m, constraints, uv, np);
+  auto call = [&](auto tag, const auto& params) {
+    return max_steiner ? PE::constrained_embedding<decltype(tag)>(m, constraints, uv, PE::parameters::maximum_steiner_vertices(max_steiner, params))
+                       : PE::constrained_embedding<decltype(tag)>(m, constraints, uv, params);
+  };
+  const PE::Error_code ec = sequential ? call(CGAL::Sequential_tag(), np) : call(CGAL::Parallel_if_available_tag(), np);
   Row r;
   r.peak_mb = peak_rss_mb();
   r.status = PE::get_error_name(ec);

@@ -110,13 +110,14 @@ Patch_phase_result embed_patches(Mesh& work, const std::vector<std::vector<typen
   return result;
 }
 
-// twice the signed area of the polygon bounding a patch (its border vertices' uv, in double)
+// twice the signed area of a patch under the current uv (the sum over its faces, in double): the area
+// of its polygon when its map is valid
 template <class Mesh, class UVMap>
 double patch_polygon_area(const Mesh& work, const std::vector<typename boost::graph_traits<Mesh>::face_descriptor>& faces,
                           UVMap uvm)
 {
   double a = 0;
-  for(auto f : faces) // the sum of the faces' areas is the polygon's area for any valid map; here, for ordering
+  for(auto f : faces)
   {
     const auto h = halfedge(f, work);
     const auto p = get(uvm, source(h, work)), q = get(uvm, target(h, work)), r = get(uvm, target(next(h, work), work));
@@ -188,9 +189,7 @@ Error_code merge_failed_patch(Mesh& work, const std::vector<std::vector<typename
     region.push_back(best);
     std::vector<face_descriptor> faces;
     for(std::size_t r : region) faces.insert(faces.end(), patch_faces[r].begin(), patch_faces[r].end());
-    Progressive_embedding_statistics pst;
-    ec = embed_patch_impl(work, faces, uvm,
-                          parameters::statistics(&pst, parameters::weights(weights).maximum_running_time(remaining())),
+    ec = embed_patch_impl(work, faces, uvm, parameters::weights(weights).maximum_running_time(remaining()),
                           true, static_cast<Patch_slots<Mesh>*>(nullptr), false);
     if(ec == OK) { merged_with.assign(region.begin() + 1, region.end()); return OK; }
     if(ec == ERROR_BUDGET_EXHAUSTED) return ec;

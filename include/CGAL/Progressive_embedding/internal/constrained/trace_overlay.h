@@ -24,7 +24,8 @@
 //       CGAL::parameters::maximum_running_time, split_penalty (the cost of one crossing, in mean edge
 //       lengths, added to the curve's 3D length between edge midpoints; default 4).
 //
-// State: per input edge, the curves crossing it in order along the edge; per input face, its chords
+// State: per input edge, the curves crossing it in order along the edge (gap ids that survive later
+// insertions: the first gap of an edge, or the gap after a crossing); per input face, its chords
 // (curve pieces: corner node to crossing, or crossing to crossing on another edge). A search state is a
 // gap of an input edge (between two consecutive crossings) with the face the curve enters; a move
 // inside a face adds a chord that must cross none of the face's chords (chords of a triangle with their
@@ -91,6 +92,7 @@ public:
       put(hid_, h, static_cast<int>(eh_.size()));
       put(hid_, opposite(h, tm_), static_cast<int>(eh_.size()));
       eh_.push_back(h);
+      ends_.push_back({ { source(h, tm_), target(h, tm_) } });
       const auto p = get(vpm_, source(h, tm_)), q = get(vpm_, target(h, tm_));
       mid_.push_back({ { 0.5 * (CGAL::to_double(p.x()) + CGAL::to_double(q.x())),
                          0.5 * (CGAL::to_double(p.y()) + CGAL::to_double(q.y())),
@@ -100,6 +102,19 @@ public:
     for(face_descriptor f : faces(tm_)) { put(fid_, f, static_cast<int>(fh_.size())); fh_.push_back(halfedge(f, tm_)); }
     chords_.resize(fh_.size());
     fdata_.resize(fh_.size());
+    // what the search reads per state, gathered so that it touches no mesh record
+    side_.resize(2 * eh_.size());
+    for(std::size_t e = 0; e < eh_.size(); ++e)
+      for(std::size_t side = 0; side < 2; ++side)
+      {
+        const halfedge_descriptor hf = side == 0 ? eh_[e] : opposite(eh_[e], tm_);
+        Side& sd = side_[2 * e + side];
+        if(is_border(hf, tm_)) continue;
+        sd.face = get(fid_, face(hf, tm_));
+        const halfedge_descriptor h0 = fh_[static_cast<std::size_t>(sd.face)];
+        sd.k = hf == h0 ? 0 : (hf == next(h0, tm_) ? 1 : 2);
+        sd.apex = target(next(hf, tm_), tm_);
+      }
   }
 
   std::size_t crossings() const { return crossing_.size(); }
@@ -120,16 +135,14 @@ public:
   bool trace(int curve, vertex_descriptor u, int before_u, int after_u,
              vertex_descriptor v, int before_v, int after_v)
   {
-    // gap states: 2 * (base[e] + i) + side, side 0 entering face(eh[e]), 1 entering the other face
-    std::vector<std::size_t>& base = base_;
-    base.assign(eh_.size() + 1, 0);
-    for(std::size_t e = 0; e < eh_.size(); ++e) base[e + 1] = base[e] + cross_[e].size() + 1;
-    gap_edge_.resize(base.back());
-    for(std::size_t e = 0; e < eh_.size(); ++e)
-      std::fill(gap_edge_.begin() + static_cast<std::ptrdiff_t>(base[e]), gap_edge_.begin() + static_cast<std::ptrdiff_t>(base[e + 1]), static_cast<int>(e));
-    const std::size_t S = 2 * base.back();
-    dist_.assign(S, std::numeric_limits<double>::infinity());
-    pred_.assign(S, -1);
+    // gap states: 2 * gap_id(e, i) + side, side 0 entering face(eh[e]), 1 entering the other face
+    const std::size_t S = 2 * (eh_.size() + crossing_.size());
+    if(label_.size() < S) label_.resize(S);
+    if(++stamp_ == 0) // wrapped around: no label may look current
+    {
+      for(Label& l : label_) l.stamp = 0;
+      stamp_ = 1;
+    }
     typedef std::pair<double, std::int64_t> QE;
     std::priority_queue<QE, std::vector<QE>, std::greater<QE> > q;
     const Star su = star(u), sv = star(v);
@@ -143,7 +156,7 @@ public:
       const halfedge_descriptor o = next(g, tm_); // the edge opposite u, from the vertex after u
       const std::size_t e = static_cast<std::size_t>(get(hid_, o));
       if(is_border(opposite(o, tm_), tm_)) continue; // a curve does not cross the border
-      const Face_data& fd = face_data(face(g, tm_));
+      const Face_data& fd = face_data(static_cast<std::size_t>(get(fid_, face(g, tm_))));
       const std::size_t ku = fd.index(g), ko = fd.index(o);
       const std::int64_t cu = 2 * fd.off[ku];
       const std::size_t n = cross_[e].size();
@@ -153,7 +166,7 @@ public:
         const std::int64_t gp = fd.gap_position(ko, i);
         if(crosses_any(fd.chords, cu, gp, fd.size)) continue;
         const std::size_t gi = (o == eh_[e]) ? i : n - i;
-        const std::size_t state = 2 * (base[e] + gi) + ((o == eh_[e]) ? 1 : 0); // enters the face beyond o
+        const std::size_t state = 2 * gap_id(e, gi) + ((o == eh_[e]) ? 1 : 0); // enters the face beyond o
         relax(q, state, step_ + length(pu, mid_[e]), -2);
       }
     }
@@ -166,21 +179,22 @@ public:
       const double d = top.first;
       if(d >= best) break;
       const std::size_t s = static_cast<std::size_t>(top.second);
-      if(d > dist_[s]) continue; // stale
-      const std::size_t gap = s / 2, side = s % 2;
-      const std::size_t e = static_cast<std::size_t>(gap_edge_[gap]);
-      const std::size_t i = gap - base[e], n = cross_[e].size();
-      const halfedge_descriptor hf = side == 0 ? eh_[e] : opposite(eh_[e], tm_); // e, seen from the face entered
-      if(is_border(hf, tm_)) continue;
-      const face_descriptor f = face(hf, tm_);
-      const std::size_t ih = (hf == eh_[e]) ? i : n - i; // the gap's index along hf
-      const Face_data& fd = face_data(f);
-      const std::size_t kf = fd.index(hf);
+      if(d > label_[s].dist) continue; // stale (queued in this search: its label is current)
+      const std::size_t side = s % 2;
+      std::size_t e, i;
+      decode_gap(s / 2, e, i);
+      const Side& sd = side_[2 * e + side]; // e, seen from the face entered
+      if(sd.face < 0) continue;
+      const std::size_t n = cross_[e].size();
+      const std::size_t ih = side == 0 ? i : n - i; // the gap's index along hf
+      const Face_data& fd = face_data(static_cast<std::size_t>(sd.face));
+      const std::size_t kf = sd.k;
       const std::int64_t gp = fd.gap_position(kf, ih);
       // arrival at v, the corner opposite e
-      const halfedge_descriptor hv = next(hf, tm_); // from target(hf) to the opposite corner
-      if(target(hv, tm_) == v)
+      if(sd.apex == v)
       {
+        const halfedge_descriptor hf = side == 0 ? eh_[e] : opposite(eh_[e], tm_);
+        const halfedge_descriptor hv = next(hf, tm_); // from target(hf) to the opposite corner
         // v -> source(hf) leaves v in f, whose edge opposite v is hf: the gap's position along hf
         // is its angular position around v
         const std::size_t j = sv.index_of(next(hv, tm_));
@@ -195,20 +209,15 @@ public:
       const std::size_t lf = static_cast<std::size_t>(fd.label[kf][ih]);
       for(int mi = fd.member_start[lf]; mi < fd.member_start[lf + 1]; ++mi)
       {
-        const std::pair<int, int>& m = fd.members[static_cast<std::size_t>(mi)];
-        if(static_cast<std::size_t>(m.first) == kf) continue;
-        const halfedge_descriptor hk = fd.h[static_cast<std::size_t>(m.first)];
-        if(is_border(opposite(hk, tm_), tm_)) continue;
-        const std::size_t ek = static_cast<std::size_t>(get(hid_, hk));
-        const std::size_t nk = cross_[ek].size(), jk = static_cast<std::size_t>(m.second);
-        const std::size_t gi = (hk == eh_[ek]) ? jk : nk - jk;
-        relax(q, 2 * (base[ek] + gi) + ((hk == eh_[ek]) ? 1 : 0), d + step_ + length(mid_[e], mid_[ek]), static_cast<std::int64_t>(s));
+        const Member& m = fd.members[static_cast<std::size_t>(mi)];
+        if(m.k == kf || m.state == no_state) continue; // the gap's own edge, or the border
+        relax(q, m.state, d + step_ + fd.length[kf][m.k], static_cast<std::int64_t>(s));
       }
     }
     if(best_state < 0) return false;
     // the states, from u to v
     std::vector<std::size_t> states;
-    for(std::int64_t s = best_state; s >= 0; s = pred_[static_cast<std::size_t>(s)])
+    for(std::int64_t s = best_state; s >= 0; s = label_[static_cast<std::size_t>(s)].pred)
     {
       states.push_back(static_cast<std::size_t>(s));
       if(states.size() > S) return false; // defensive: a cycle would be a bug
@@ -225,23 +234,59 @@ public:
                std::vector<std::vector<vertex_descriptor> >& paths, std::vector<Steiner_vertex<TM> >& steiner)
   {
     std::vector<vertex_descriptor> cv(crossing_.size());
+    // per crossing, the halfedge ending at its vertex along eh_[e] (in face(eh_[e])) and against it
+    std::vector<halfedge_descriptor> in_along(crossing_.size()), in_against(crossing_.size());
     // input edge of every vertex added (-1: an input vertex)
     auto on_edge = get(CGAL::dynamic_vertex_property_t<int>(), tm_);
     for(vertex_descriptor w : vertices(tm_)) put(on_edge, w, -1);
     const std::size_t first = steiner.size();
     for(std::size_t e = 0; e < eh_.size(); ++e)
     {
-      if(cross_[e].empty()) continue;
-      split_range(source(eh_[e], tm_), target(eh_[e], tm_), e, 0, cross_[e].size(), cv, on_edge, steiner);
+      const std::vector<int>& xs = cross_[e];
+      if(xs.empty()) continue;
+      split_range(ends_[e][0], ends_[e][1], e, 0, xs.size(), cv, on_edge, steiner);
+      vertex_descriptor p = ends_[e][0];
+      for(std::size_t k = 0; k < xs.size(); ++k)
+      {
+        const vertex_descriptor x = cv[static_cast<std::size_t>(xs[k])];
+        in_along[static_cast<std::size_t>(xs[k])] = halfedge(p, x, tm_).first;
+        p = x;
+      }
+      p = ends_[e][1];
+      for(std::size_t k = xs.size(); k-- > 0; )
+      {
+        const vertex_descriptor x = cv[static_cast<std::size_t>(xs[k])];
+        in_against[static_cast<std::size_t>(xs[k])] = halfedge(p, x, tm_).first;
+        p = x;
+      }
     }
     if(steiner.size() == first) return paths.empty();
+    // Each chord becomes an edge across its face. Between two crossings, the halfedges ending at them
+    // in that face are known: no walk around the face (as long as its crossings) to find them. From a
+    // corner, which may have several chords in one face, the edge is found by a walk (connect_in_face()).
     std::vector<std::pair<vertex_descriptor, vertex_descriptor> > diagonals;
     for(std::size_t f = 0; f < chords_.size(); ++f)
       for(const Chord& c : chords_[f])
       {
         const vertex_descriptor a = c.a.corner ? c.a.v : cv[static_cast<std::size_t>(c.a.crossing)];
         const vertex_descriptor b = c.b.corner ? c.b.v : cv[static_cast<std::size_t>(c.b.crossing)];
-        if(!connect_in_face(a, b, tm_)) return false;
+        if(c.a.corner || c.b.corner)
+        {
+          if(!connect_in_face(a, b, tm_)) return false;
+        }
+        else
+        {
+          auto in_face = [&](int x)
+          {
+            const std::size_t e = crossing_[static_cast<std::size_t>(x)].edge;
+            return side_[2 * e].face == static_cast<int>(f) ? in_along[static_cast<std::size_t>(x)]
+                                                            : in_against[static_cast<std::size_t>(x)];
+          };
+          // as connect_in_face(a, b) would (the same refined mesh)
+          const halfedge_descriptor h1 = in_face(c.a.crossing), h2 = in_face(c.b.crossing);
+          if(face(h1, tm_) != face(h2, tm_) || next(h1, tm_) == h2 || next(h2, tm_) == h1) return false;
+          CGAL::Euler::split_face(h1, h2, tm_);
+        }
         diagonals.emplace_back(a, b);
       }
     // faces of more than three vertices: ears whose new edge does not lie along one input edge
@@ -252,8 +297,7 @@ public:
       if(ea < 0 && eb < 0) return true; // two corners of one input face: joined by an input edge
       const int ep = ea >= 0 ? ea : eb;
       const vertex_descriptor c = ea >= 0 ? b : a;
-      const halfedge_descriptor h = eh_[static_cast<std::size_t>(ep)];
-      return source(h, tm_) == c || target(h, tm_) == c;
+      return ends_[static_cast<std::size_t>(ep)][0] == c || ends_[static_cast<std::size_t>(ep)][1] == c;
     };
     std::vector<face_descriptor> work(faces(tm_).begin(), faces(tm_).end());
     std::size_t guard = 0;
@@ -363,6 +407,20 @@ private:
   // Boundary positions in a face are doubled: point k at 2k, the gap after it at 2k+1. Points: corner
   // source(h0), crossings along h0, corner source(h1), ... with h0 = fh_[f] (Face_data::off).
 
+  // Gaps have ids that stay valid while crossings are inserted: the first gap of input edge e (from
+  // source(eh_[e])) is e, the gap after crossing x is E + x (E input edges).
+  std::size_t gap_id(std::size_t e, std::size_t i) const
+  {
+    return i == 0 ? e : eh_.size() + static_cast<std::size_t>(cross_[e][i - 1]);
+  }
+  // the input edge of a gap and its index along eh_[e]
+  void decode_gap(std::size_t g, std::size_t& e, std::size_t& i) const
+  {
+    if(g < eh_.size()) { e = g; i = 0; return; }
+    const std::size_t x = g - eh_.size();
+    e = crossing_[x].edge;
+    i = static_cast<std::size_t>(cpos_[x]) + 1;
+  }
   // index of crossing x along hk (from source(hk))
   std::int64_t position_along(halfedge_descriptor hk, int x) const
   {
@@ -375,6 +433,10 @@ private:
   // matching of the boundary once a corner with several chords is split into one point per chord
   // (ordered so that they do not cross); along the boundary, each chord's first end opens a piece and
   // its second closes it, like parentheses. Cached until a curve crosses one of the face's edges.
+  static constexpr std::size_t no_state = std::size_t(-1);
+  // a gap of a face's edge h[k] (the j-th along it) and the search state entering the face beyond it
+  // (no_state: beyond is the border)
+  struct Member { std::size_t k, j, state; };
   struct Face_data
   {
     bool valid = false;
@@ -383,8 +445,9 @@ private:
     std::vector<std::array<std::int64_t, 2> > chords;
     std::int64_t size = 0;
     std::array<std::vector<int>, 3> label;             // per edge (in h's order), per gap along it
-    std::vector<std::pair<int, int> > members;         // (edge, gap), by label
+    std::vector<Member> members;                        // by label
     std::vector<int> member_start;                      // per label: its first entry in members
+    std::array<std::array<double, 3>, 3> length;        // between the midpoints of the input edges h[k], h[m]
     std::size_t index(halfedge_descriptor g) const { return g == h[0] ? 0 : (g == h[1] ? 1 : 2); }
     // gap i along h[k] (between its i-th and (i+1)-th crossing from source(h[k]))
     std::int64_t gap_position(std::size_t k, std::size_t i) const { return 2 * (off[k] + static_cast<std::int64_t>(i)) + 1; }
@@ -400,13 +463,15 @@ private:
     const std::size_t k = (get(hid_, fd.h[0]) == static_cast<int>(e)) ? 0 : ((get(hid_, fd.h[1]) == static_cast<int>(e)) ? 1 : 2);
     return 2 * (fd.off[k] + 1 + position_along(fd.h[k], x.crossing));
   }
-  const Face_data& face_data(face_descriptor f)
+  const Face_data& face_data(std::size_t fi)
   {
-    const std::size_t fi = static_cast<std::size_t>(get(fid_, f));
     Face_data& fd = fdata_[fi];
     if(fd.valid) return fd;
     fd.valid = true; // the vectors are refilled in place: their storage is kept
     fd.h[0] = fh_[fi]; fd.h[1] = next(fd.h[0], tm_); fd.h[2] = next(fd.h[1], tm_);
+    for(std::size_t k = 0; k < 3; ++k)
+      for(std::size_t m = 0; m < 3; ++m)
+        fd.length[k][m] = length(mid_[static_cast<std::size_t>(get(hid_, fd.h[k]))], mid_[static_cast<std::size_t>(get(hid_, fd.h[m]))]);
     std::int64_t p = 0;
     std::array<std::int64_t, 3>& off = fd.off;
     for(int k = 0; k < 3; ++k)
@@ -469,7 +534,19 @@ private:
     fd.members.resize(gaps.size());
     std::vector<int>& fill = stack; // reused: the stack is empty once every chord is closed
     fill.assign(fd.member_start.begin(), fd.member_start.end() - 1);
-    for(const auto& g : gaps) fd.members[static_cast<std::size_t>(fill[static_cast<std::size_t>(g[0])]++)] = std::make_pair(g[1], g[2]);
+    for(const auto& g : gaps)
+    {
+      const std::size_t k = static_cast<std::size_t>(g[1]), j = static_cast<std::size_t>(g[2]);
+      const halfedge_descriptor hk = fd.h[k];
+      std::size_t state = no_state;
+      if(!is_border(opposite(hk, tm_), tm_))
+      {
+        const std::size_t ek = static_cast<std::size_t>(get(hid_, hk));
+        const bool along = hk == eh_[ek];
+        state = 2 * gap_id(ek, along ? j : cross_[ek].size() - j) + (along ? 1 : 0);
+      }
+      fd.members[static_cast<std::size_t>(fill[static_cast<std::size_t>(g[0])]++)] = Member{ k, j, state };
+    }
     return fd;
   }
   // whether the chord (a, b) crosses one of `ch` (positions on a cycle of length n): their ends
@@ -488,8 +565,9 @@ private:
                                  std::greater<std::pair<double, std::int64_t> > >& q,
              std::size_t s, double d, std::int64_t from)
   {
-    if(!(d < dist_[s])) return;
-    dist_[s] = d; pred_[s] = from;
+    Label& l = label_[s];
+    if(l.stamp == stamp_ && !(d < l.dist)) return;
+    l.dist = d; l.pred = from; l.stamp = stamp_;
     q.push(std::make_pair(d, static_cast<std::int64_t>(s)));
   }
   void commit(int curve, vertex_descriptor u, vertex_descriptor v, const std::vector<std::size_t>& states)
@@ -499,9 +577,9 @@ private:
     std::vector<G> gs;
     for(std::size_t s : states)
     {
-      const std::size_t gap = s / 2;
-      const std::size_t e = static_cast<std::size_t>(gap_edge_[gap]);
-      gs.push_back(G{ e, gap - base_[e], s % 2, -1 });
+      std::size_t e, i;
+      decode_gap(s / 2, e, i);
+      gs.push_back(G{ e, i, s % 2, -1 });
     }
     for(G& g : gs) { g.id = static_cast<int>(crossing_.size()); crossing_.push_back(Crossing{ g.e }); }
     // insert the crossings: per edge by decreasing gap index, so that earlier indices stay valid
@@ -578,6 +656,7 @@ private:
   typename boost::property_map<TM, CGAL::dynamic_halfedge_property_t<int> >::type hid_;
   typename boost::property_map<TM, CGAL::dynamic_face_property_t<int> >::type fid_;
   std::vector<halfedge_descriptor> eh_, fh_;
+  std::vector<std::array<vertex_descriptor, 2> > ends_; // per input edge: source and target of eh_ (realize() splits eh_)
   std::vector<std::array<double, 3> > mid_;
   std::vector<std::vector<int> > cross_;      // per input edge: crossing ids from source(eh_) to target(eh_)
   std::vector<std::vector<Chord> > chords_;   // per input face
@@ -586,10 +665,13 @@ private:
   std::vector<Face_data> fdata_;              // per input face, cached
   std::vector<std::vector<int> > curve_crossings_;
   std::map<std::pair<vertex_descriptor, int>, std::pair<halfedge_descriptor, int> > node_curves_;
-  std::vector<double> dist_;
-  std::vector<std::int64_t> pred_;
-  std::vector<std::size_t> base_;             // per input edge, during a search: its first gap
-  std::vector<int> gap_edge_;                 // per gap, during a search: its input edge
+  // per input edge e and side (0: seen from face(eh_[e]), 1: from the other face)
+  struct Side { int face = -1; std::size_t k = 0; vertex_descriptor apex; }; // face index (-1: border), index of e in Face_data::h, corner opposite e
+  std::vector<Side> side_;
+  // search labels, current when `stamp` is the search's (no reset of every state per search)
+  struct Label { double dist = 0; std::int64_t pred = -1; std::uint32_t stamp = 0; };
+  std::vector<Label> label_;
+  std::uint32_t stamp_ = 0;
   // face_data()'s scratch space
   std::vector<int> at_scratch_, stack_scratch_;
   std::array<std::vector<std::pair<std::int64_t, int> >, 3> corner_scratch_;

@@ -11,7 +11,8 @@
 # --benchmark  also runs pe_benchmark again on the failing corpus runs (study_tutte_failures.tsv)
 #              and the generated grids: progressive_embedding.{csv,md} and, with --optimize,
 #              progressive_embedding_optimized.{csv,md} (tens of minutes).
-# --constrained also runs constrained_benchmark again: constrained_embedding*.{csv,md} (about 15 minutes).
+# --constrained also runs constrained_benchmark again: constrained_embedding*.{csv,md} (about 10 minutes;
+# the timed tables run each case 3 times and keep the median time).
 # --polygons   also runs polygon_benchmark (polygon_triangulation.{csv,md}, about 2 minutes) and
 #              polygon_map_benchmark (polygon_maps.{csv,md}: maps onto Hilbert, star and spiral borders,
 #              about 15 minutes); --polygon-obj adds an OBJ disk with texture coordinates (repeatable).
@@ -72,9 +73,9 @@ if [ "$constrained" = 1 ]; then
   # exits 1 when a run did not end certified (the tables list those runs): keep the tables anyway
   meshes=retinal.off,dino.off,homer.off,camel.off,bear_bis.off,man.off,diplodocus.off,mushroom.off,lion-head.off,mannequin-devil.off
   "$build/bin/constrained_benchmark" "$build/cgal_data/data" "$results/constrained_embedding" \
-    --meshes "$meshes" --seeds 10 --counts 3 --optimize-seeds 0 --budget 60 || true
+    --meshes "$meshes" --seeds 10 --counts 3 --optimize-seeds 0 --budget 60 --repeat 3 || true
   "$build/bin/constrained_benchmark" "$build/cgal_data/data" "$results/constrained_embedding_many" \
-    --meshes "$meshes" --seeds 3 --counts 10,50 --optimize-seeds 0 --budget 60 || true
+    --meshes "$meshes" --seeds 3 --counts 10,50 --optimize-seeds 0 --budget 60 --repeat 3 || true
   "$build/bin/constrained_benchmark" "$build/cgal_data/data" "$results/constrained_embedding_optimized" \
     --meshes retinal.off,dino.off,homer.off,mushroom.off,lion-head.off --seeds 1 --counts 3,10 --targets layout \
     --optimize-seeds 1 --budget 120 || true

@@ -541,7 +541,7 @@ int border_rotation_indices(const TriangleMesh& tm, VertexUVMap uvm, VertexIndex
 ///                           the mesh's vertices), and the result with the fewest Steiner vertices is kept. A value
 ///                           given here bounds every tracing}
 ///     \cgalParamType{`std::size_t`}
-///     \cgalParamDefault{shortest paths: 4 times the number of vertices plus 1000; curves over the input edges: 128 times
+///     \cgalParamDefault{shortest paths: 2 times the number of vertices plus 1000; curves over the input edges: 128 times
 ///                       the number of edges plus 10000; guided paths: 32 times the number of edges plus 10000}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{optimize}

@@ -434,13 +434,14 @@ private:
   // (ordered so that they do not cross); along the boundary, each chord's first end opens a piece and
   // its second closes it, like parentheses. Cached until a curve crosses one of the face's edges.
   static constexpr std::size_t no_state = std::size_t(-1);
-  // a gap of a face's edge h[k] (the j-th along it) and the search state entering the face beyond it
-  // (no_state: beyond is the border)
-  struct Member { std::size_t k, j, state; };
+  // a gap of a face's edge h[k]: k and the search state entering the face beyond it (no_state: beyond
+  // is the border)
+  struct Member { std::size_t k, state; };
   struct Face_data
   {
     bool valid = false;
     std::array<halfedge_descriptor, 3> h;
+    std::array<std::size_t, 3> e;                       // the input edge of h[k]
     std::array<std::int64_t, 3> off;                    // undoubled position of the corner source(h[k])
     std::vector<std::array<std::int64_t, 2> > chords;
     std::int64_t size = 0;
@@ -460,7 +461,7 @@ private:
       return -1;
     }
     const std::size_t e = crossing_[static_cast<std::size_t>(x.crossing)].edge;
-    const std::size_t k = (get(hid_, fd.h[0]) == static_cast<int>(e)) ? 0 : ((get(hid_, fd.h[1]) == static_cast<int>(e)) ? 1 : 2);
+    const std::size_t k = fd.e[0] == e ? 0 : (fd.e[1] == e ? 1 : 2);
     return 2 * (fd.off[k] + 1 + position_along(fd.h[k], x.crossing));
   }
   const Face_data& face_data(std::size_t fi)
@@ -469,15 +470,15 @@ private:
     if(fd.valid) return fd;
     fd.valid = true; // the vectors are refilled in place: their storage is kept
     fd.h[0] = fh_[fi]; fd.h[1] = next(fd.h[0], tm_); fd.h[2] = next(fd.h[1], tm_);
+    for(std::size_t k = 0; k < 3; ++k) fd.e[k] = static_cast<std::size_t>(get(hid_, fd.h[k]));
     for(std::size_t k = 0; k < 3; ++k)
-      for(std::size_t m = 0; m < 3; ++m)
-        fd.length[k][m] = length(mid_[static_cast<std::size_t>(get(hid_, fd.h[k]))], mid_[static_cast<std::size_t>(get(hid_, fd.h[m]))]);
+      for(std::size_t m = 0; m < 3; ++m) fd.length[k][m] = length(mid_[fd.e[k]], mid_[fd.e[m]]);
     std::int64_t p = 0;
     std::array<std::int64_t, 3>& off = fd.off;
     for(int k = 0; k < 3; ++k)
     {
       off[static_cast<std::size_t>(k)] = p;
-      p += 1 + static_cast<std::int64_t>(cross_[static_cast<std::size_t>(get(hid_, fd.h[static_cast<std::size_t>(k)]))].size());
+      p += 1 + static_cast<std::int64_t>(cross_[fd.e[static_cast<std::size_t>(k)]].size());
     }
     fd.size = 2 * p;
     fd.chords.clear();
@@ -513,7 +514,7 @@ private:
       std::sort(corner_scratch_[k].begin(), corner_scratch_[k].end(),
                 [](const std::pair<std::int64_t, int>& x, const std::pair<std::int64_t, int>& y) { return x.first > y.first; });
       for(const auto& x : corner_scratch_[k]) chord_end(x.second);
-      const std::size_t m = cross_[static_cast<std::size_t>(get(hid_, fd.h[k]))].size();
+      const std::size_t m = cross_[fd.e[k]].size();
       fd.label[k].resize(m + 1);
       for(std::size_t i = 0; i <= m; ++i)
       {
@@ -541,11 +542,11 @@ private:
       std::size_t state = no_state;
       if(!is_border(opposite(hk, tm_), tm_))
       {
-        const std::size_t ek = static_cast<std::size_t>(get(hid_, hk));
+        const std::size_t ek = fd.e[k];
         const bool along = hk == eh_[ek];
         state = 2 * gap_id(ek, along ? j : cross_[ek].size() - j) + (along ? 1 : 0);
       }
-      fd.members[static_cast<std::size_t>(fill[static_cast<std::size_t>(g[0])]++)] = Member{ k, j, state };
+      fd.members[static_cast<std::size_t>(fill[static_cast<std::size_t>(g[0])]++)] = Member{ k, state };
     }
     return fd;
   }

@@ -6,4 +6,5 @@ cd "$(dirname "$0")/.."
 scripts/setup.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON -DPROGRESSIVE_EMBEDDING_PYTHON=ON
 cmake --build build -j2
-ctest --test-dir build --output-on-failure
+# two tests at a time (the machine has 2 cores); the tests that must run alone say so (RUN_SERIAL)
+ctest --test-dir build --output-on-failure -j2

@@ -20,11 +20,12 @@
 //   constrained_benchmark DATA_DIR OUT_PREFIX [--meshes a.off,b.off] [--seeds S] [--counts 3,10,50]
 //        [--min-vertices N] [--max-vertices N] [--no-disks] [--no-closed] [--optimize-seeds K]
 //        [--seeds-large S] [--budget SECONDS] [--max-steiner N] [--targets layout,jittered,random] [--jitter D]
-//        [--sequential] [--repeat R]
+//        [--sequential] [--repeat R] [--no-coarsen]
 //
 // --repeat R: every constrained run R times, the row of the median time to the certified map kept (the
 // host is shared and its timings noisy; the maps are the same, a failure in any repeat is kept).
 // --seeds-large S: only seeds < S for K > 3 (default: all).
+// --no-coarsen: the added vertices are all kept (constrained_embedding()'s coarsening off), for A/B runs.
 // Writes OUT_PREFIX.csv (one row per run) and OUT_PREFIX.md (per mesh and constraint count: medians
 // over the seeds; totals). The optimization (and its unconstrained reference) runs on seeds < K
 // (default 3); every run is certified before optimizing, and the time to the certified map is the sum
@@ -109,11 +110,12 @@ struct Row
   std::string kind, mesh, targets;
   unsigned seed = 0;
   std::size_t count = 0, v_in = 0, v_out = 0, steiner = 0, chord_splits = 0, paths = 0, patches = 0, repaired = 0;
+  std::size_t inserted = 0, removed = 0; // added vertices before the coarsening, and removed by it (steiner: kept)
   std::string status;
   bool certified = false, optimized = false;
   double constraint_error = 0;
   double t_validation = 0, t_partition = 0, t_tracing = 0, t_patches = 0, t_certification = 0, t_certified = 0,
-         t_optimization = 0, t_output = 0, t_total = 0, peak_mb = 0;
+         t_optimization = 0, t_coarsening = 0, t_output = 0, t_total = 0, peak_mb = 0;
   double mean_before = 0, max_before = 0, mean_after = 0, max_after = 0;
   std::size_t iterations = 0;
   std::string optimization_status;
@@ -149,6 +151,8 @@ std::string fmt(double x, int prec = 3)
 bool sequential = false;
 // --repeat R: each constrained run R times (the median time kept)
 int repeat = 1;
+// --no-coarsen: constrained_embedding()'s coarsening off
+bool coarsen = true;
 
 // constrained_embedding() on a copy of `m0`, whose "v:uv" property holds the border
 Row run(const SM& m0, const std::vector<std::pair<vertex_descriptor, K::Point_2> >& constraints,
@@ -161,7 +165,8 @@ Row run(const SM& m0, const std::vector<std::pair<vertex_descriptor, K::Point_2>
   // max_steiner 0: constrained_embedding()'s default budgets
   // PE_VERBOSE=1 in the environment: constrained_embedding() reports its phases on std::cerr
   const bool verbose = std::getenv("PE_VERBOSE") != nullptr;
-  const auto np = PE::parameters::optimize(optimize, PE::parameters::statistics(&st, CGAL::parameters::maximum_running_time(budget).verbose(verbose)));
+  const auto np = PE::parameters::optimize(optimize, PE::parameters::coarsen(coarsen,
+                   PE::parameters::statistics(&st, CGAL::parameters::maximum_running_time(budget).verbose(verbose))));
   auto call = [&](auto tag, const auto& params) {
     return max_steiner ? PE::constrained_embedding<decltype(tag)>(m, constraints, uv, PE::parameters::maximum_steiner_vertices(max_steiner, params))
                        : PE::constrained_embedding<decltype(tag)>(m, constraints, uv, params);
@@ -172,11 +177,12 @@ Row run(const SM& m0, const std::vector<std::pair<vertex_descriptor, K::Point_2>
   r.status = PE::get_error_name(ec);
   r.count = constraints.size();
   r.v_in = st.input_vertices; r.v_out = st.output_vertices; r.steiner = st.steiner_vertices;
+  r.inserted = st.steiner_vertices_inserted; r.removed = st.steiner_vertices_removed;
   r.chord_splits = st.chord_splits; r.paths = st.paths; r.patches = st.patches; r.repaired = st.repaired_patches;
   r.t_validation = st.seconds_validation; r.t_partition = st.seconds_partition; r.t_tracing = st.seconds_tracing;
   r.t_patches = st.seconds_patches; r.t_certification = st.seconds_certification;
   r.t_certified = r.t_validation + r.t_partition + r.t_tracing + r.t_patches + r.t_certification;
-  r.t_optimization = st.seconds_optimization; r.t_output = st.seconds_output; r.t_total = st.seconds_total;
+  r.t_optimization = st.seconds_optimization; r.t_coarsening = st.seconds_coarsening; r.t_output = st.seconds_output; r.t_total = st.seconds_total;
   r.optimized = st.optimized;
   r.optimization_status = st.optimized ? PE::get_error_name(st.optimization_status) : "-";
   r.iterations = st.optimization.iterations;
@@ -188,7 +194,8 @@ Row run(const SM& m0, const std::vector<std::pair<vertex_descriptor, K::Point_2>
   if(ec == PE::OK)
   {
     const PE::Embedding_report rep = PE::check_embedding(m, uv);
-    r.certified = rep.status == PE::OK && rep.flipped == 0 && rep.degenerate == 0 && rep.border_simple;
+    // the whole certificate: positive faces, finite, simple border, no overlapping pair
+    r.certified = rep.is_valid();
     double err = 0;
     for(const auto& c : constraints)
     {
@@ -208,7 +215,7 @@ int main(int argc, char** argv)
   {
     std::cerr << "usage: constrained_benchmark DATA_DIR OUT_PREFIX [--meshes a.off,b.off] [--seeds S] [--counts 3,10,50]\n"
                  "       [--min-vertices N] [--max-vertices N] [--no-disks] [--no-closed] [--optimize-seeds K] [--seeds-large S] [--budget S]\n"
-                 "       [--max-steiner N] [--targets layout,jittered,random] [--jitter D] [--sequential] [--repeat R]\n"
+                 "       [--max-steiner N] [--targets layout,jittered,random] [--jitter D] [--sequential] [--repeat R] [--no-coarsen]\n"
                  "  --sequential: patches embedded one after the other (default: in parallel, CGAL::Parallel_if_available_tag)\n"
                  "  --repeat R: each run R times, the one of median time to the certified map kept (default 1)\n";
     return 2;
@@ -241,6 +248,7 @@ int main(int argc, char** argv)
     else if(a == "--max-steiner" && has) max_steiner = std::stoul(argv[++i]);
     else if(a == "--no-disks") disks = false;
     else if(a == "--sequential") sequential = true;
+    else if(a == "--no-coarsen") coarsen = false;
     else if(a == "--repeat" && has) repeat = std::max(1, std::atoi(argv[++i]));
     else if(a == "--no-closed") closed = false;
     else { std::cerr << "constrained_benchmark: unknown option " << a << "\n"; return 2; }
@@ -347,7 +355,8 @@ int main(int argc, char** argv)
   csv << "kind,mesh,seed,constraints,targets,vertices_in,vertices_out,steiner,added_percent,chord_splits,paths,patches,"
          "repaired_patches,status,certified,constraint_error,s_validation,s_partition,s_tracing,s_patches,"
          "s_certification,s_certified_map,s_optimization,s_output,s_total,peak_rss_mb,optimized,optimization_status,"
-         "iterations,mean_sd_before,max_sd_before,mean_sd_after,max_sd_after,unconstrained_mean_sd\n";
+         "iterations,mean_sd_before,max_sd_before,mean_sd_after,max_sd_after,unconstrained_mean_sd,steiner_inserted,"
+         "steiner_removed,s_coarsening\n";
   csv << std::setprecision(6);
   for(const Row& r : rows)
     csv << r.kind << ',' << r.mesh << ',' << r.seed << ',' << r.count << ',' << r.targets << ',' << r.v_in << ',' << r.v_out << ','
@@ -357,7 +366,8 @@ int main(int argc, char** argv)
         << r.t_patches << ',' << r.t_certification << ',' << r.t_certified << ',' << r.t_optimization << ','
         << r.t_output << ',' << r.t_total << ',' << r.peak_mb << ',' << (r.optimized ? 1 : 0) << ','
         << r.optimization_status << ',' << r.iterations << ',' << r.mean_before << ',' << r.max_before << ','
-        << r.mean_after << ',' << r.max_after << ',' << r.unconstrained_mean << '\n';
+        << r.mean_after << ',' << r.max_after << ',' << r.unconstrained_mean << ',' << r.inserted << ',' << r.removed << ','
+        << r.t_coarsening << '\n';
 
   // Markdown: per (mesh, count) medians over the seeds
   std::size_t ok = 0, certified = 0, exact = 0;
@@ -382,14 +392,15 @@ int main(int argc, char** argv)
         "in the Tutte map on the same border (`layout`: the surface's own layout, as feature alignment gives), or there "
         "moved by up to " << jitter << " in x and y (`jittered`: nearby constraints may swap, which the Tutte map's "
         "compressed regions make frequent). Time to the certified map: validation, partition, path tracing, patch embeddings and the "
-        "certificate (before the optimization). Symmetric Dirichlet energies against the 3D triangles (an isometry "
+        "certificate (before the optimization). Added vertices: inserted by the refinement, removed again by the "
+        "coarsening after the optimization (" << (coarsen ? "on" : "off: `--no-coarsen`") << "), kept in the output. Symmetric Dirichlet energies against the 3D triangles (an isometry "
         "scores 4), optimized with border and constraints fixed, next to the optimized map with no constraint on the "
         "same border.\n\n"
      << "- runs: " << rows.size() << "; OK: " << ok << "; certified again by check_embedding(): " << certified
      << "; every constraint bit-exact: " << exact << "\n\n"
      << "Per mesh and constraint count, medians over the seeds (optimization: the seeds where it ran).\n\n"
-     << "| mesh | kind | K | targets | vertices in | seeds OK | Steiner | added % | paths | patches | certified map s | peak MB | optimize s | mean SD after | unconstrained mean SD |\n"
-     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+     << "| mesh | kind | K | targets | vertices in | seeds OK | inserted | removed | kept | added % | vertices out | paths | patches | certified map s | peak MB | optimize s | mean SD after | unconstrained mean SD |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   std::map<std::tuple<std::string, std::size_t, std::string>, std::vector<const Row*> > groups;
   std::vector<std::tuple<std::string, std::size_t, std::string> > order;
   for(const Row& r : rows)
@@ -401,20 +412,22 @@ int main(int argc, char** argv)
   for(const auto& key : order)
   {
     const auto& g = groups[key];
-    std::vector<double> steiner, added, paths, patches, tcert, peak, topt, mean, umean;
+    std::vector<double> steiner, inserted, removed, vout, added, paths, patches, tcert, peak, topt, mean, umean;
     std::size_t good = 0;
     for(const Row* r : g)
     {
       if(r->status != "OK") continue;
       ++good;
-      steiner.push_back(double(r->steiner)); added.push_back(100.0 * double(r->steiner) / double(r->v_in));
+      steiner.push_back(double(r->steiner)); inserted.push_back(double(r->inserted)); removed.push_back(double(r->removed));
+      vout.push_back(double(r->v_out)); added.push_back(100.0 * double(r->steiner) / double(r->v_in));
       paths.push_back(double(r->paths)); patches.push_back(double(r->patches));
       tcert.push_back(r->t_certified); peak.push_back(r->peak_mb);
       if(r->optimized) { topt.push_back(r->t_optimization); mean.push_back(r->mean_after); }
       if(r->unconstrained_mean >= 0) umean.push_back(r->unconstrained_mean);
     }
     md << "| " << std::get<0>(key) << " | " << g.front()->kind << " | " << std::get<1>(key) << " | " << std::get<2>(key) << " | " << g.front()->v_in << " | " << good
-       << "/" << g.size() << " | " << fmt(median(steiner), 4) << " | " << fmt(median(added)) << " | " << fmt(median(paths))
+       << "/" << g.size() << " | " << fmt(median(inserted), 4) << " | " << fmt(median(removed), 4) << " | "
+       << fmt(median(steiner), 4) << " | " << fmt(median(added)) << " | " << fmt(median(vout), 6) << " | " << fmt(median(paths))
        << " | " << fmt(median(patches)) << " | " << fmt(median(tcert)) << " | " << fmt(median(peak), 4) << " | "
        << fmt(median(topt)) << " | " << fmt(median(mean), 4) << " | " << fmt(median(umean), 4) << " |\n";
   }

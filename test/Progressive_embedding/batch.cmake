@@ -8,6 +8,7 @@ if(TARGET pe AND Python3_EXECUTABLE)
     add_test(NAME batch_${_group}
              COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/batch_runs.py $<TARGET_FILE:pe> ${PE_DATA_DIR}
                      ${CMAKE_CURRENT_BINARY_DIR}/batch_runs ${_group})
-    set_tests_properties(batch_${_group} PROPERTIES TIMEOUT 120 LABELS "batch")
+    # alone: the groups share ${CMAKE_CURRENT_BINARY_DIR}/batch_runs, and `limits` kills children at their time limit
+    set_tests_properties(batch_${_group} PROPERTIES TIMEOUT 120 LABELS "batch" RUN_SERIAL TRUE)
   endforeach()
 endif()

@@ -26,7 +26,7 @@ def run(argv):
     return p.returncode, p.stdout.decode(errors="replace")
 
 def without_times(obj):
-    return {k: v for k, v in obj.items() if k not in TIME_KEYS and not k.startswith("seconds_")}
+    return {k: v for k, v in obj.items() if k not in TIME_KEYS and not k.startswith("seconds_") and not k.endswith("_seconds")}
 
 def main():
     if len(sys.argv) != 4:

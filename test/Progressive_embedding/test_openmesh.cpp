@@ -142,8 +142,11 @@ int test_optimize(const std::string& data)
 }
 
 // constrained map: the mesh is refined by OpenMesh's own Euler operations (through CGAL's graph
-// traits), constraints bit-exact, original vertices unchanged, new vertices on their edges
-int test_constrained(const std::string& data)
+// traits), constraints bit-exact, original vertices unchanged, new vertices on their edges. With 12
+// scattered targets the refinement runs (vertices inserted, asserted); without the coarsening they are
+// all kept, with it some are removed again (OpenMesh marks them deleted: its garbage collection
+// compacts the mesh, the input vertices first and unchanged).
+int constrained_case(const std::string& data, std::size_t count, bool coarsen)
 {
   Om_mesh m;
   if(!read_om(data + "/meshes/mushroom.off", m)) return EXIT_FAILURE;
@@ -152,26 +155,52 @@ int test_constrained(const std::string& data)
   const Om_point_map vpm{ &m };
   for(auto v : vertices(m)) p0.push_back(get(vpm, v));
   auto uv = make_uv_map(m, Point_2());
-  // three interior vertices, far apart in index
+  // interior vertices far apart in index, targets on a 4 x 3 lattice in an order unrelated to the surface
   std::vector<std::pair<VD, Point_2> > C;
-  const Point_2 targets[3] = { Point_2(0.25, 0.25), Point_2(0.75, 0.3), Point_2(0.4, 0.75) };
   std::size_t k = 0;
   for(auto v : vertices(m))
-    if(k < 3 && !CGAL::is_border(v, m) && v.idx() >= int(k * n0 / 3)) C.emplace_back(v, targets[k++]);
-  CHECK(C.size() == 3, "three interior vertices");
+    if(k < count && !CGAL::is_border(v, m) && v.idx() >= int(k * n0 / count))
+    {
+      const std::size_t j = (7 * k + 3) % count; // a permutation of the lattice points (7 and 12 coprime)
+      C.emplace_back(v, Point_2(0.2 + 0.2 * double(j % 4), 0.25 + 0.25 * double(j / 4)));
+      ++k;
+    }
+  CHECK(C.size() == count, "interior vertices");
   std::vector<PE::Steiner_point<VD> > steiner;
   PE::Constrained_embedding_statistics st;
   const PE::Error_code ec = PE::constrained_embedding(m, C, uv, PE::parameters::border_shape(PE::Border_shape::SQUARE)
-                                                                   .vertex_point_map(vpm).statistics(&st).steiner_points(&steiner));
+                                                                   .vertex_point_map(vpm).statistics(&st).steiner_points(&steiner)
+                                                                   .coarsen(coarsen));
   const PE::Embedding_report r = PE::check_embedding(m, uv);
-  std::cout << "[OpenMesh] mushroom, 3 constraints: " << PE::get_error_name(ec) << ", " << n0 << " -> " << num_vertices(m)
-            << " vertices, " << r.summary() << std::endl;
+  std::cout << "[OpenMesh] mushroom, " << count << " constraints" << (coarsen ? "" : ", no coarsening") << ": "
+            << PE::get_error_name(ec) << ", " << n0 << " -> " << st.output_vertices << " vertices (" << st.steiner_vertices_inserted
+            << " inserted, " << st.steiner_vertices_removed << " removed), " << r.summary() << std::endl;
   CHECK(ec == PE::OK && r.is_valid() && r.flipped == 0 && r.degenerate == 0, "certified");
   for(const auto& c : C) CHECK(get(uv, c.first) == c.second, "constraint bit-exact");
-  CHECK(num_vertices(m) == n0 + steiner.size(), "one Steiner point per added vertex");
+  CHECK(st.steiner_vertices_inserted > 0, "the refinement ran: vertices were inserted");
+  CHECK(st.steiner_vertices + st.steiner_vertices_removed == st.steiner_vertices_inserted, "kept + removed = inserted");
+  CHECK(steiner.size() == st.steiner_vertices, "one Steiner point per kept vertex");
+  if(!coarsen) CHECK(st.steiner_vertices_removed == 0 && st.steiner_vertices > 0, "every inserted vertex kept");
+  std::size_t live = 0;
+  for(auto v : vertices(m)) { (void)v; ++live; }
+  CHECK(live == n0 + st.steiner_vertices && st.output_vertices == live, "the mesh has the kept vertices");
+  if(st.steiner_vertices_removed > 0)
+  {
+    CHECK(num_vertices(m) == n0 + st.steiner_vertices_inserted, "removed vertices marked deleted until the garbage collection");
+    m.garbage_collection();
+    CHECK(num_vertices(m) == n0 + st.steiner_vertices, "compacted");
+  }
   std::size_t i = 0;
   for(auto v : vertices(m))
     if(i < n0) { CHECK(get(vpm, v) == p0[i], "original vertex kept"); ++i; }
+  CHECK(PE::check_embedding(m, uv).is_valid(), "certified after the garbage collection");
+  return EXIT_SUCCESS;
+}
+
+int test_constrained(const std::string& data)
+{
+  RUN(constrained_case(data, 12, false));
+  RUN(constrained_case(data, 12, true));
   return EXIT_SUCCESS;
 }
 

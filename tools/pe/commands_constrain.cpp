@@ -73,6 +73,8 @@ int cmd_constrain(const Arguments& a)
   const std::size_t vertices_in = in.mesh.number_of_vertices();
 
   const Budget budget(a);
+  // the optimization of a heavily refined map can run for a long time: it gets a budget of its own
+  const double optimize_seconds = a.real("--optimize-time", 30.);
   PE::Constrained_embedding_statistics st;
   Picture picture;
   picture.has_patches = true;
@@ -81,15 +83,24 @@ int cmd_constrain(const Arguments& a)
     PE::parameters::border_shape(s.border,
       PE::parameters::weights(s.weights,
         PE::parameters::optimize(!a.has("--no-optimize"),
+        PE::parameters::optimization_time_limit(optimize_seconds,
           PE::parameters::statistics(&st,
             PE::parameters::face_patch_map(picture.patches,
               PE::parameters::vertex_rotation_index_map(turns,
-                CGAL::parameters::maximum_running_time(budget.remaining()))))))));
+                CGAL::parameters::maximum_running_time(budget.remaining())))))))));
+  // the coarsening removes added vertices again: compact the mesh so that vertex indices follow the
+  // output order (the input vertices, never removed, keep theirs)
+  if(ec == PE::OK && in.mesh.has_garbage()) in.mesh.collect_garbage();
   run.result.add("steiner_vertices", st.steiner_vertices);
+  run.result.add("steiner_vertices_inserted", st.steiner_vertices_inserted);
+  run.result.add("steiner_vertices_removed", st.steiner_vertices_removed);
   run.result.add("paths", st.paths);
   run.result.add("patches", st.patches);
   run.summary << "vertices " << vertices_in << " -> " << in.mesh.number_of_vertices() << " (" << st.steiner_vertices
-              << " Steiner), " << st.paths << " paths, " << st.patches << " patches";
+              << " Steiner";
+  if(st.steiner_vertices_removed > 0)
+    run.summary << ", " << st.steiner_vertices_inserted << " inserted, " << st.steiner_vertices_removed << " removed by the coarsening";
+  run.summary << "), " << st.paths << " paths, " << st.patches << " patches";
   if(ec != PE::OK)
   {
     run.summary << "; ";
@@ -127,6 +138,18 @@ int cmd_constrain(const Arguments& a)
         in.vt_to_v.push_back(in.positions.size() - 1);
       }
   run.result.add("optimized", st.optimized);
+  if(st.optimized)
+  {
+    const bool stopped = st.optimization_status == PE::ERROR_BUDGET_EXHAUSTED;
+    run.result.add("optimization_budget", optimize_seconds);
+    run.result.add("optimization_seconds", st.seconds_optimization);
+    run.result.add("optimization_iterations", st.optimization.iterations);
+    run.result.add("optimization_converged", st.optimization.converged);
+    run.summary << ", optimized in " << seconds_string(st.seconds_optimization) << " ("
+                << (st.optimization.converged ? "converged" : stopped ? "stopped at its budget" : "not converged")
+                << ", mean symmetric Dirichlet " << format_number(st.report_before_optimization.mean_energy_3d) << " -> "
+                << format_number(st.report.mean_energy_3d) << ")";
+  }
   run.result.add("status", "OK");
   run.result.add("seconds", run.timer.seconds());
   run.summary << ", constraint error " << format_number(error) << ", " << seconds_string(run.timer.seconds()) << "; ";

@@ -106,6 +106,8 @@ const Option_spec option_table[] = {
     "ERROR_BUDGET_EXHAUSTED); an optimization stops there, with its valid map. batch: the wall time of\n"
     "each mesh (default 600), whose process is killed then (status timeout)",
     0, 1e9 },
+  { "--optimize-time", Kind::REAL, "SECONDS",
+    "constrain: seconds the optimization may take; it stops there with its certified map (default 30)", 0, 1e9 },
   { "--no-progress", Kind::FLAG, "", "no progress bar (it is drawn on terminals only, for runs over a second)" },
   { "--no-optimize", Kind::FLAG, "", "repair only: skip the distortion optimization" },
   { "--optimize", Kind::FLAG, "", "optimize the distortion after repairing (the default)" },
@@ -165,10 +167,11 @@ const std::vector<Command_spec>& command_table()
       "lower the symmetric Dirichlet distortion of the valid uv map of IN without leaving the valid maps;\n"
       "the border (unless --free-border) and the vertices of --fix are kept bit-exactly", cmd_optimize },
     { "constrain", "IN OUT.obj", 2, 2, 1,
-      { "--fix", "--border", "--weights", "--no-optimize", "--svg", "--time-limit", "--no-progress" },
+      { "--fix", "--border", "--weights", "--no-optimize", "--optimize-time", "--svg", "--time-limit", "--no-progress" },
       "a map in which the vertices of --fix land bit-exactly on their targets (MatchMaker++: the mesh is\n"
       "refined by Steiner vertices on its edges where needed, new vertices written after the input's),\n"
-      "certified, then optimized (unless --no-optimize); the border from the vt of IN, or --border\n"
+      "certified, then optimized (unless --no-optimize; for at most --optimize-time seconds), then the added\n"
+      "vertices that the map can do without removed again; the border from the vt of IN, or --border\n"
       "circle|square|triangle (needed without vt); --svg draws the patches, the paths between them and\n"
       "the constrained vertices. Without --fix (or with an empty file) only the border is prescribed; a vt\n"
       "border may be non-convex: simple (an embedding) or weakly self-overlapping (an immersion, certified\n"

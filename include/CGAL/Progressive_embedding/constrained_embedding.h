@@ -27,8 +27,12 @@
 ///     strictly positive, border simple and unchanged);
 ///  5. the whole map certified by check_embedding() (positive faces + simple fixed border: one-to-
 ///     one), then optimize_distortion() with border and constrained vertices fixed, certified again;
+///     then the coarsening (internal/constrained/coarsen.h): each added vertex, latest first, is
+///     removed into an end of the edge it split wherever every face of the fan is strictly positive
+///     (exact), and the map is certified again;
 ///  6. the edge splits replayed on the caller's mesh (internal::replay_splits; same split
-///     convention), the uv of every vertex written.
+///     convention), then the coarsening's removals (internal::replay_removals), the uv of every
+///     vertex written.
 /// Holes: filled with fans on the copy (internal::fill_holes), the regions the fans became removed
 /// after step 5's first certificate (tracked through the splits), then certified multiply connected.
 /// Nothing of the caller's mesh or uv map is touched before step 6, which cannot fail.
@@ -53,6 +57,7 @@
 #include <CGAL/Progressive_embedding/internal/parallel_for.h>
 #include <CGAL/Progressive_embedding/internal/constrained/refinement.h>
 #include <CGAL/Progressive_embedding/internal/constrained/holes.h>
+#include <CGAL/Progressive_embedding/internal/constrained/coarsen.h>
 
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -93,6 +98,10 @@ struct Constrained_embedding_statistics
   std::size_t output_vertices = 0;
   /// vertices added by edge splits (path tracing and chord splits)
   std::size_t steiner_vertices = 0;
+  /// vertices added by the refinement before the coarsening (`steiner_vertices` counts those kept)
+  std::size_t steiner_vertices_inserted = 0;
+  /// added vertices removed again by the coarsening (`coarsen` named parameter)
+  std::size_t steiner_vertices_removed = 0;
   /// of which added to split chords after tracing: chords along one path or border side, and chords of
   /// faces whose three vertices are on the paths and which the rounding of the path vertices left flat
   std::size_t chord_splits = 0;
@@ -129,6 +138,8 @@ struct Constrained_embedding_statistics
   double seconds_certification = 0;
   /// seconds spent optimizing the distortion
   double seconds_optimization = 0;
+  /// seconds spent coarsening the certified map
+  double seconds_coarsening = 0;
   /// seconds spent replaying the refinement on the input mesh and writing the uv map
   double seconds_output = 0;
   /// seconds in all
@@ -442,13 +453,19 @@ int border_rotation_indices(const TriangleMesh& tm, VertexUVMap uvm, VertexIndex
 /// is mapped together with neighbouring patches into the union of their polygons, the paths between them free
 /// and every constrained vertex still on the union's border. The whole map is then certified by
 /// `check_embedding()` and its distortion optimized (`optimize_distortion()`) with the border and the constrained
-/// vertices fixed, and certified again.
+/// vertices fixed, and certified again. Last, the <b>coarsening</b> removes the added vertices that the map can do
+/// without: each one, latest first, is removed and its star replaced by the fan from an end of the edge it split,
+/// wherever every face of that fan is strictly positive (exact orientation); nothing else moves, so the border and
+/// the constraints stay bit-exact, and the whole map is certified again (`Constrained_embedding_statistics` counts the
+/// vertices inserted, removed and kept). Each face of such a fan lies in an input face, so the output is still a
+/// refinement of the input surface.
 ///
 /// The computation runs on a `Surface_mesh` copy: on any error `tm` and `uvm` are left exactly as they were. On
 /// success the edge splits are replayed on `tm` (`Euler::split_edge` at the midpoint, then `Euler::split_face`
 /// joining the new vertex to the opposite corner of each incident face; or, when the paths were traced as curves
 /// over the input edges, several midpoint splits along one input edge followed by `Euler::split_face` across the
-/// faces): the input vertices keep their
+/// faces), then the coarsening's removals (`Euler::remove_center_vertex`, then `Euler::split_face` for the fan; a
+/// `Surface_mesh` keeps the removed vertices as garbage until `collect_garbage()`): the input vertices keep their
 /// descriptors and 3D points and come first in the vertex order, the new vertices (at edge midpoints, so on the
 /// input surface) follow; the uv of every vertex is written. The map is certified by `check_embedding()`, every
 /// constrained vertex is bit-exactly at its target and, with `Border_shape::FIXED`, the border bit-exactly
@@ -549,6 +566,19 @@ int border_rotation_indices(const TriangleMesh& tm, VertexUVMap uvm, VertexIndex
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{optimization_time_limit}
+///     \cgalParamDescription{seconds (wall clock) for the optimization: it stops there with its certified, improved map
+///                           (`Constrained_embedding_statistics::optimization_status` is then `ERROR_BUDGET_EXHAUSTED`,
+///                           and `optimization` says how far it went); the call still returns `OK`}
+///     \cgalParamType{`double` (negative or NaN: `ERROR_WRONG_PARAMETER`)}
+///     \cgalParamDefault{what is left of `maximum_running_time`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{coarsen}
+///     \cgalParamDescription{whether to remove, after the optimization, the added vertices that the certified map can
+///                           do without (see above)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{statistics}
 ///     \cgalParamDescription{receives counts, times and certificates}
 ///     \cgalParamType{`Constrained_embedding_statistics*`}
@@ -568,7 +598,9 @@ int border_rotation_indices(const TriangleMesh& tm, VertexUVMap uvm, VertexIndex
 ///                           have different patches only if the edge is on a traced path; with holes, a patch
 ///                           that lay inside a hole has no face. The faces of patches mapped as one with their
 ///                           neighbours (`Constrained_embedding_statistics::merged_patches`) keep their labels but lie
-///                           in the union of the polygons. Nothing is written on error.}
+///                           in the union of the polygons. The coarsening deflects the paths through the vertices it keeps: each face of a
+///                           fan takes the patch of the face it replaces, so a patch may then fall into several pieces
+///                           (`coarsen(false)` keeps the patches as traced). Nothing is written on error.}
 ///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor` as
 ///                    key type and an integral value type (the index is converted by `static_cast`); it must accept the
 ///                    faces the refinement adds to `tm` (a `Surface_mesh` property map, a dynamic property map)}
@@ -627,10 +659,14 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
   const Border_shape shape = choose_parameter(get_parameter(np, internal_np::border_shape), Border_shape::FIXED);
   const Weights wts = choose_parameter(get_parameter(np, internal_np::weights), Weights::UNIFORM);
   const bool optimize = choose_parameter(get_parameter(np, internal_np::optimize), true);
+  const bool coarsen = choose_parameter(get_parameter(np, internal_np::coarsen), true);
   const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   const double max_seconds = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
                                               std::numeric_limits<double>::infinity());
   if(!(max_seconds >= 0)) return ERROR_WRONG_PARAMETER;
+  const double optimization_seconds = choose_parameter(get_parameter(np, internal_np::optimization_time_limit),
+                                                       std::numeric_limits<double>::infinity());
+  if(!(optimization_seconds >= 0)) return ERROR_WRONG_PARAMETER;
   auto remaining = [&]() { return std::max(0., max_seconds - timer.time()); };
   auto finish = [&](Error_code ec) { stats.seconds_total = timer.time(); return ec; };
 
@@ -1188,7 +1224,7 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     stats.optimized = true;
     stats.optimization_status =
       optimize_distortion<ConcurrencyTag>(work, wuv, parameters::optimization_statistics(&stats.optimization,
-                                       parameters::constrained_vertices(fixed).maximum_running_time(remaining())));
+                                       parameters::constrained_vertices(fixed).maximum_running_time((std::min)(remaining(), optimization_seconds))));
     stats.seconds_optimization = timer.time() - t_opt;
     // OK / ERROR_BUDGET_EXHAUSTED: a certified, improved map was written; otherwise nothing was
     stats.report = check_embedding(work, wuv, parameters::multiply_connected(holes, parameters::check_overlap(!immersed)));
@@ -1201,6 +1237,52 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
         return finish(ERROR_INVALID_EMBEDDING);
     }
     else if(!stats.report.is_valid()) return finish(ERROR_INVALID_EMBEDDING);
+  }
+
+  // ---- 5b. coarsening: added vertices that the certified map can do without are removed -------
+  std::vector<internal::Vertex_removal<wvertex> > removals;
+  stats.steiner_vertices_inserted = steiner.size();
+  if(coarsen && !immersed && !steiner.empty())
+  {
+    const double t_coarsen = timer.time();
+    const CGAL::Orientation positive = stats.report.clockwise ? CGAL::RIGHT_TURN : CGAL::LEFT_TURN;
+    std::vector<wvertex> link;
+    std::vector<char> done(steiner.size(), 0);
+    // latest first (they split edges between earlier vertices); a removal can free an earlier
+    // refusal, so the passes repeat while they remove something (each removes at least one vertex)
+    for(std::size_t pass = 0; pass < steiner.size(); ++pass)
+    {
+      std::size_t removed = 0;
+      for(std::size_t k = steiner.size(); k-- > 0;)
+      {
+        const auto& sv = steiner[k];
+        if(done[k] || work.is_removed(sv.v) || CGAL::is_border(sv.v, work)) continue;
+        for(wvertex a : { sv.a, sv.b })
+        {
+          if(work.is_removed(a) || !internal::can_remove_into(work, wuv, orient, positive, sv.v, a, link)) continue;
+          // each fan face (a, x, y) takes the patch of the face (s, x, y) it replaces
+          std::vector<std::size_t> fan_labels;
+          for(std::size_t j = 1; j + 1 < link.size(); ++j)
+            fan_labels.push_back(get(fpatch, face(halfedge(link[j], link[j + 1], work).first, work)));
+          if(internal::remove_into(work, sv.v, a) != OK) return finish(ERROR_INVALID_EMBEDDING); // cannot happen
+          for(std::size_t j = 1; j + 1 < link.size(); ++j)
+            put(fpatch, face(halfedge(link[j], link[j + 1], work).first, work), fan_labels[j - 1]);
+          removals.push_back({ sv.v, a });
+          done[k] = 1;
+          ++removed;
+          break;
+        }
+      }
+      if(removed == 0) break;
+    }
+    stats.steiner_vertices_removed = removals.size();
+    // every face of every fan was tested positive, exactly; the whole map is certified again
+    stats.report = check_embedding(work, wuv, parameters::multiply_connected(holes));
+    stats.seconds_coarsening = timer.time() - t_coarsen;
+    if(verbose)
+      std::cerr << "[constrained_embedding] coarsening: " << removals.size() << " of " << steiner.size()
+                << " added vertices removed, " << stats.seconds_coarsening << " s; " << stats.report.summary() << std::endl;
+    if(!stats.report.is_valid()) return finish(ERROR_INVALID_EMBEDDING);
   }
 
   // constraints and border, exactly (before mirroring back)
@@ -1225,8 +1307,10 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
   std::vector<internal::Edge_split<wvertex, double> > splits;
   splits.reserve(steiner.size());
   std::vector<internal::Steiner_vertex<Work> > kept; // Steiner vertices inside a hole were removed with it
+  std::unordered_set<wvertex> coarsened; // removed by the coarsening: replayed, then removed on tm too
+  for(const auto& r : removals) coarsened.insert(r.removed);
   for(const auto& s : steiner)
-    if(!work.is_removed(s.v))
+    if(!work.is_removed(s.v) || coarsened.count(s.v))
     {
       kept.push_back(s);
     {
@@ -1237,7 +1321,7 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     }
     }
   steiner.swap(kept);
-  stats.steiner_vertices = steiner.size();
+  stats.steiner_vertices = steiner.size() - coarsened.size();
   std::unordered_map<wvertex, vertex_descriptor> copy_to_mesh(to_mesh);
   auto midpoint = [](const Point_3& a, const Point_3& b, double) { return K3().construct_midpoint_3_object()(a, b); };
   // the steiner points on the input surface, computed before tm changes
@@ -1259,6 +1343,7 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
   {
     const internal::No_recycling_guard<TriangleMesh> append_only(tm); // added vertices after the input's
     ec = internal::replay_splits(splits, tm, vpm, copy_to_mesh, midpoint);
+    if(ec == OK) ec = internal::replay_removals(removals, tm, copy_to_mesh);
   }
   if(ec != OK) return finish(ec); // cannot happen: tm has the copy's connectivity
   for(wvertex v : vertices(work))
@@ -1275,6 +1360,7 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     steiner_out->clear();
     for(std::size_t i = 0; i < steiner.size(); ++i)
     {
+      if(work.is_removed(steiner[i].v)) continue; // removed by the coarsening
       Steiner_point<vertex_descriptor> sp;
       sp.vertex = copy_to_mesh.at(steiner[i].v);
       sp.size = steiner_positions[i].size;

@@ -80,6 +80,8 @@ enum class Weights
   X(polygon_report) \
   X(rotation_indices) \
   X(vertex_rotation_index_map) \
+  X(coarsen) \
+  X(optimization_time_limit) \
 
 namespace internal_np {
 #define CGAL_PE_ADD_NAMED_PARAMETER(NAME) enum NAME##_t { NAME };
@@ -264,6 +266,14 @@ template <typename T> unspecified_type optimization_statistics(const T& t);
 /// \ingroup PkgProgressiveEmbeddingNamedParameters
 /// whether a repaired map is then passed to `optimize_distortion()` (`bool`; see the function's default)
 template <typename T> unspecified_type optimize(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// whether `constrained_embedding()` removes, after the optimization, the added vertices that the certified map can
+/// do without (`bool`; default `true`)
+template <typename T> unspecified_type coarsen(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// seconds that the optimization of `constrained_embedding()` may take (`double`; default: what is left of
+/// `maximum_running_time`)
+template <typename T> unspecified_type optimization_time_limit(const T& t);
 #endif
 
 } // namespace parameters

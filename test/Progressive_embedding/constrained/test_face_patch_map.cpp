@@ -114,7 +114,8 @@ int run_mushroom(Mesh& m, FPM fpm, bool optimize, Patch_summary& s, const std::s
   for(auto f : faces(m)) put(fpm, f, -1);
   PE::Constrained_embedding_statistics st;
   const PE::Error_code ec = PE::constrained_embedding(m, C, uv,
-    PE::parameters::optimize(optimize, PE::parameters::statistics(&st, PE::parameters::face_patch_map(fpm))));
+    PE::parameters::optimize(optimize, PE::parameters::coarsen(false, // the patches as traced (see below for the coarsening)
+      PE::parameters::statistics(&st, PE::parameters::face_patch_map(fpm)))));
   std::cout << what << ": " << PE::get_error_message(ec) << ", " << st.patches << " patches, " << st.steiner_vertices
             << " Steiner vertices" << std::endl;
   CHECK(ec == PE::OK, what << ": certified");
@@ -141,6 +142,26 @@ PE_TEST_GROUP(face_patch_map_surface_mesh)
   CHECK(raw.number_of_faces() == opt.number_of_faces(), "same refined mesh");
   auto fa = faces(raw).begin();
   for(auto f : faces(opt)) { CHECK(get(fraw, *fa) == get(fopt, f), "the optimization changes no label"); ++fa; }
+  // with the coarsening (the default), every face of the coarser mesh still has a patch (the fan faces take the
+  // patches of the faces they replace; a deflected path may cut a patch in pieces)
+  Surface_mesh coarse;
+  if(!read_mesh(data_dir + "/meshes/mushroom.off", coarse)) return EXIT_FAILURE;
+  auto fcoarse = coarse.add_property_map<Surface_mesh::Face_index, int>("f:patch", -7).first;
+  auto uv = make_uv_map(coarse, Point_2());
+  CHECK(PE::tutte_embedding(coarse, boost::graph_traits<Surface_mesh>::null_halfedge(), uv,
+                            PE::parameters::border_shape(PE::Border_shape::SQUARE)) == PE::OK, "square border");
+  PE::Constrained_embedding_statistics st;
+  CHECK(PE::constrained_embedding(coarse, mushroom_constraints(coarse), uv,
+                                  PE::parameters::statistics(&st, PE::parameters::face_patch_map(fcoarse))) == PE::OK, "coarsened");
+  std::size_t labelled = 0;
+  for(auto f : faces(coarse))
+  {
+    CHECK(get(fcoarse, f) >= 0 && std::size_t(get(fcoarse, f)) < st.patches, "a patch for every face of the coarser mesh");
+    ++labelled;
+  }
+  std::cout << "mushroom, optimized and coarsened: " << st.steiner_vertices_removed << " of " << st.steiner_vertices_inserted
+            << " added vertices removed, " << labelled << " faces labelled" << std::endl;
+  CHECK(labelled == coarse.number_of_faces() && labelled <= b.faces, "the coarsening removes faces, never adds");
   return EXIT_SUCCESS;
 }
 

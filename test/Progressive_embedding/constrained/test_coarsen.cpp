@@ -1,0 +1,193 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+// Coarsening of constrained maps (internal/constrained/coarsen.h): an added vertex is removed into an
+// end of the edge it split when every face of the fan is strictly positive, kept otherwise; the
+// removal replays on another mesh type; in constrained_embedding() the removed and kept vertices add
+// up to those inserted, the map stays certified and the constraints bit-exact.
+
+#include <CGAL/Progressive_embedding/constrained_embedding.h>
+#include <CGAL/Progressive_embedding/internal/constrained/coarsen.h>
+#include <CGAL/Progressive_embedding/tutte_embedding.h>
+#include <CGAL/Progressive_embedding/check_embedding.h>
+
+#include "registry.h"
+#include "../test_util.h"
+#include "mesh_fixtures.h"
+
+#include <CGAL/boost/graph/copy_face_graph.h>
+
+#include <algorithm>
+#include <random>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace {
+
+namespace PE = CGAL::Progressive_embedding;
+using pe_test::count_vertices;
+typedef Epick::Point_2 Point_2;
+
+// The star of a vertex s: s at `centre`, its link the polygon `ring` (counterclockwise), one
+// triangle (s, ring[k], ring[k + 1]) per side. The 3D points are the uv lifted to z = 0.
+template <class Mesh>
+typename boost::graph_traits<Mesh>::vertex_descriptor
+make_star(Mesh& m, const Point_2& centre, const std::vector<Point_2>& ring,
+          std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>& rv,
+          std::unordered_map<typename boost::graph_traits<Mesh>::vertex_descriptor, Point_2>& uv)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor VD;
+  auto vpm = get(CGAL::vertex_point, m);
+  const VD s = add_vertex(m);
+  put(vpm, s, Epick::Point_3(centre.x(), centre.y(), 0));
+  uv[s] = centre;
+  rv.clear();
+  for(const Point_2& p : ring)
+  {
+    const VD v = add_vertex(m);
+    put(vpm, v, Epick::Point_3(p.x(), p.y(), 0));
+    uv[v] = p;
+    rv.push_back(v);
+  }
+  for(std::size_t k = 0; k < ring.size(); ++k)
+    CGAL::Euler::add_face(std::vector<VD>{ s, rv[k], rv[(k + 1) % ring.size()] }, m);
+  return s;
+}
+
+template <class Mesh>
+int star_cases()
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor VD;
+  const auto orient = PE::Progressive_embedding_traits_2<Epick>().exact_orientation_2_object();
+  {
+    // a convex link: removable into any neighbour, the two faces at the kept vertex disappear
+    Mesh m;
+    std::vector<VD> rv;
+    std::unordered_map<VD, Point_2> uvs;
+    const std::vector<Point_2> ring{ Point_2(-1, 0), Point_2(0, -1), Point_2(1, 0), Point_2(0, 1) };
+    const VD s = make_star(m, Point_2(0, 0), ring, rv, uvs);
+    auto uv = boost::make_assoc_property_map(uvs);
+    std::vector<VD> link;
+    CHECK(PE::internal::can_remove_into(m, uv, orient, CGAL::LEFT_TURN, s, rv[0], link), "convex link: removable");
+    CHECK(link.size() == 4 && link[0] == rv[0], "link starts at the kept vertex");
+    CHECK(PE::internal::remove_into(m, s, rv[0]) == PE::OK, "removed");
+    CHECK(count_faces(m) == 2 && count_vertices(m) == 4, "a fan of 2 faces over 4 vertices");
+    const PE::Embedding_report r = PE::check_embedding(m, uv);
+    CHECK(r.is_valid() && r.flipped == 0 && r.degenerate == 0, "the fan is certified valid");
+  }
+  {
+    // a link that neither end of the edge (a, s, b) sees whole: the fan from a has a negative face
+    // (a, p2, b), the fan from b a negative face (b, p1, p2): kept, the mesh untouched
+    Mesh m;
+    std::vector<VD> rv;
+    std::unordered_map<VD, Point_2> uvs;
+    const std::vector<Point_2> ring{ Point_2(-1, 0), Point_2(-0.5, -1), Point_2(0.1, -0.1), Point_2(1, -0.5), Point_2(0, 1) };
+    const VD s = make_star(m, Point_2(0, 0), ring, rv, uvs);
+    auto uv = boost::make_assoc_property_map(uvs);
+    CHECK(PE::check_embedding(m, uv).is_valid(), "the star is valid");
+    std::vector<VD> link;
+    CHECK(!PE::internal::can_remove_into(m, uv, orient, CGAL::LEFT_TURN, s, rv[0], link), "blocked from a");
+    CHECK(!PE::internal::can_remove_into(m, uv, orient, CGAL::LEFT_TURN, s, rv[3], link), "blocked from b");
+    CHECK(count_faces(m) == 5 && count_vertices(m) == 6, "kept: the mesh untouched");
+    // from p2, the link's reflex vertex, the fan is positive (the test decides by the fan, not by the edge)
+    CHECK(PE::internal::can_remove_into(m, uv, orient, CGAL::LEFT_TURN, s, rv[2], link), "removable into p2");
+  }
+  return EXIT_SUCCESS;
+}
+
+// the same removal on a Polyhedron_3 copy through a vertex correspondence (the caller's mesh)
+int replay_case()
+{
+  typedef boost::graph_traits<Surface_mesh>::vertex_descriptor VD;
+  typedef boost::graph_traits<Polyhedron>::vertex_descriptor PVD;
+  Surface_mesh m;
+  std::vector<VD> rv;
+  std::unordered_map<VD, Point_2> uvs;
+  const std::vector<Point_2> ring{ Point_2(-1, 0), Point_2(-0.5, -1), Point_2(0.5, -1), Point_2(1, 0), Point_2(0.5, 1), Point_2(-0.5, 1) };
+  const VD s = make_star(m, Point_2(0.1, 0), ring, rv, uvs);
+  Polyhedron p;
+  std::vector<std::pair<VD, PVD> > v2v;
+  CGAL::copy_face_graph(m, p, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v)));
+  std::unordered_map<VD, PVD> to_p(v2v.begin(), v2v.end());
+  std::vector<PE::internal::Vertex_removal<VD> > removals{ { s, rv[3] } };
+  CHECK(PE::internal::remove_into(m, s, rv[3]) == PE::OK, "removed on the copy");
+  CHECK(PE::internal::replay_removals(removals, p, to_p) == PE::OK, "replayed on the Polyhedron_3");
+  CHECK(count_faces(p) == 4 && count_vertices(p) == 6 && count_faces(m) == 4, "same fan on both");
+  // every face of the Polyhedron_3 is a face of the copy, through the correspondence
+  std::unordered_map<PVD, VD> back;
+  for(const auto& q : v2v) back[q.second] = q.first;
+  for(auto f : faces(p))
+  {
+    const auto h = halfedge(f, p);
+    const auto hm = halfedge(back.at(source(h, p)), back.at(target(h, p)), m);
+    CHECK(hm.second && !CGAL::is_border(hm.first, m), "an edge of the same face");
+    CHECK(back.at(target(next(h, p), p)) == target(next(hm.first, m), m), "the same triangle");
+  }
+  return EXIT_SUCCESS;
+}
+
+// constrained_embedding() with and without the coarsening on one input: same refinement before it,
+// kept + removed = inserted, certified on the caller's mesh, constraints bit-exact, one surface
+// position per kept vertex
+template <class Mesh>
+int pipeline_case(const std::string& file, std::size_t n, unsigned seed, bool expect_removal)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor VD;
+  std::size_t inserted[2] = { 0, 0 };
+  for(int coarsen = 0; coarsen < 2; ++coarsen)
+  {
+    Mesh m;
+    if(!read_mesh(file, m)) return EXIT_FAILURE;
+    auto uv = make_uv_map(m, Point_2());
+    CHECK(PE::tutte_embedding(m, boost::graph_traits<Mesh>::null_halfedge(), uv,
+                              PE::parameters::border_shape(PE::Border_shape::SQUARE)) == PE::OK, "border placed");
+    std::vector<VD> interior;
+    for(auto v : vertices(m)) if(!CGAL::is_border(v, m)) interior.push_back(v);
+    std::mt19937 rng(seed);
+    std::shuffle(interior.begin(), interior.end(), rng);
+    std::uniform_real_distribution<double> U(0.2, 0.8);
+    std::vector<std::pair<VD, Point_2> > C;
+    for(std::size_t i = 0; i < n; ++i) C.emplace_back(interior[i], Point_2(U(rng), U(rng)));
+    const std::size_t nv0 = count_vertices(m);
+    PE::Constrained_embedding_statistics st;
+    std::vector<PE::Steiner_point<VD> > sp;
+    const PE::Error_code ec = PE::constrained_embedding(m, C, uv,
+      PE::parameters::statistics(&st, PE::parameters::steiner_points(&sp, PE::parameters::coarsen(coarsen == 1))));
+    std::cout << mesh_name<Mesh>() << " n=" << n << " seed " << seed << (coarsen ? " coarsened" : " not coarsened") << ": "
+              << PE::get_error_message(ec) << ", inserted " << st.steiner_vertices_inserted << ", removed "
+              << st.steiner_vertices_removed << ", kept " << st.steiner_vertices << std::endl;
+    CHECK(ec == PE::OK, "OK");
+    CHECK(st.steiner_vertices_inserted == st.steiner_vertices_removed + st.steiner_vertices, "kept + removed = inserted");
+    CHECK(coarsen == 1 || st.steiner_vertices_removed == 0, "nothing removed without the coarsening");
+    CHECK(count_vertices(m) == nv0 + st.steiner_vertices && st.output_vertices == count_vertices(m), "vertex count");
+    CHECK(sp.size() == st.steiner_vertices, "one surface position per kept vertex");
+    for(const auto& s : sp) CHECK(!CGAL::is_border(s.vertex, m), "a kept vertex of the mesh");
+    const PE::Embedding_report r = PE::check_embedding(m, uv);
+    CHECK(r.is_valid() && r.flipped == 0 && r.degenerate == 0 && r.overlapping_pairs == 0 && r.non_finite == 0,
+          "certified on the caller's mesh");
+    for(const auto& c : C) CHECK(get(uv, c.first) == c.second, "constraint bit-exact");
+    inserted[coarsen] = st.steiner_vertices_inserted;
+    if(coarsen == 1 && expect_removal) CHECK(st.steiner_vertices_removed > 0, "some added vertices removed");
+  }
+  CHECK(inserted[0] == inserted[1], "the same refinement before the coarsening");
+  return EXIT_SUCCESS;
+}
+
+} // namespace
+
+PE_TEST_GROUP(coarsen_star)
+{
+  RUN(star_cases<Surface_mesh>());
+  RUN(star_cases<Polyhedron>());
+  RUN(replay_case());
+  return EXIT_SUCCESS;
+}
+
+PE_TEST_GROUP(coarsen_pipeline)
+{
+  RUN(pipeline_case<Surface_mesh>(data_dir + "/meshes/mushroom.off", 10, 3u, true));
+  RUN(pipeline_case<Polyhedron>(data_dir + "/meshes/mushroom.off", 10, 3u, true));
+  return EXIT_SUCCESS;
+}

@@ -155,6 +155,10 @@ struct Constrained_embedding_statistics
   Error_code optimization_status = OK;
   /// what the optimization did
   Optimization_statistics optimization;
+  /// whether the optimization ran again after the coarsening removed vertices (with what was left of its time)
+  bool reoptimized = false;
+  /// what that second optimization did
+  Optimization_statistics reoptimization;
   /// `true` when the fixed border is not simple (weakly self-overlapping): the map is an immersion, certified by
   /// `check_immersion()` (`immersion_report`; `report` is then the embedding certificate, which fails on the border)
   bool immersion = false;
@@ -458,7 +462,9 @@ int border_rotation_indices(const TriangleMesh& tm, VertexUVMap uvm, VertexIndex
 /// wherever every face of that fan is strictly positive (exact orientation); nothing else moves, so the border and
 /// the constraints stay bit-exact, and the whole map is certified again (`Constrained_embedding_statistics` counts the
 /// vertices inserted, removed and kept). Each face of such a fan lies in an input face, so the output is still a
-/// refinement of the input surface.
+/// refinement of the input surface. When vertices were removed and the map is optimized, the optimization runs again
+/// on the coarser mesh with what is left of its time (the fans are shaped by the removal only), and the map is
+/// certified again.
 ///
 /// The computation runs on a `Surface_mesh` copy: on any error `tm` and `uvm` are left exactly as they were. On
 /// success the edge splits are replayed on `tm` (`Euler::split_edge` at the midpoint, then `Euler::split_face`
@@ -1283,6 +1289,21 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
       std::cerr << "[constrained_embedding] coarsening: " << removals.size() << " of " << steiner.size()
                 << " added vertices removed, " << stats.seconds_coarsening << " s; " << stats.report.summary() << std::endl;
     if(!stats.report.is_valid()) return finish(ERROR_INVALID_EMBEDDING);
+    // the fans are shaped by the removal only: the optimization runs again on the coarser mesh, with
+    // what is left of its budget (it starts near its optimum: the faces away from the fans are optimized)
+    const double left = (std::min)(remaining(), optimization_seconds - stats.seconds_optimization);
+    if(optimize && !removals.empty() && left > 0)
+    {
+      const double t_reopt = timer.time();
+      std::vector<wvertex> fixed(nodes.begin() + nbn, nodes.end());
+      stats.reoptimized = true;
+      const Error_code rec = optimize_distortion<ConcurrencyTag>(work, wuv,
+        parameters::optimization_statistics(&stats.reoptimization, parameters::constrained_vertices(fixed).maximum_running_time(left)));
+      stats.seconds_optimization += timer.time() - t_reopt;
+      if(rec != OK && rec != ERROR_BUDGET_EXHAUSTED && stats.optimization_status == OK) stats.optimization_status = rec;
+      stats.report = check_embedding(work, wuv, parameters::multiply_connected(holes));
+      if(!stats.report.is_valid()) return finish(ERROR_INVALID_EMBEDDING);
+    }
   }
 
   // constraints and border, exactly (before mirroring back)

@@ -79,6 +79,10 @@ if [ "$constrained" = 1 ]; then
   "$build/bin/constrained_benchmark" "$build/cgal_data/data" "$results/constrained_embedding_optimized" \
     --meshes retinal.off,dino.off,homer.off,mushroom.off,lion-head.off --seeds 1 --counts 3,10 --targets layout \
     --optimize-seeds 1 --budget 120 || true
+  # the same without the coarsening: the vertices it removes and the distortion side by side
+  "$build/bin/constrained_benchmark" "$build/cgal_data/data" "$results/constrained_embedding_optimized_no_coarsen" \
+    --meshes retinal.off,dino.off,homer.off,mushroom.off,lion-head.off --seeds 1 --counts 3,10 --targets layout \
+    --optimize-seeds 1 --budget 120 --no-coarsen || true
 fi
 if [ "$polygons" = 1 ]; then
   cmake --build "$build" --target polygon_benchmark polygon_map_benchmark

@@ -140,13 +140,15 @@ int cmd_constrain(const Arguments& a)
   run.result.add("optimized", st.optimized);
   if(st.optimized)
   {
+    // both runs when the optimization ran again after the coarsening: the iterations add up, the last one converged or not
+    const PE::Optimization_statistics& last = st.reoptimized ? st.reoptimization : st.optimization;
     const bool stopped = st.optimization_status == PE::ERROR_BUDGET_EXHAUSTED;
     run.result.add("optimization_budget", optimize_seconds);
     run.result.add("optimization_seconds", st.seconds_optimization);
-    run.result.add("optimization_iterations", st.optimization.iterations);
-    run.result.add("optimization_converged", st.optimization.converged);
+    run.result.add("optimization_iterations", st.optimization.iterations + (st.reoptimized ? st.reoptimization.iterations : 0));
+    run.result.add("optimization_converged", last.converged);
     run.summary << ", optimized in " << seconds_string(st.seconds_optimization) << " ("
-                << (st.optimization.converged ? "converged" : stopped ? "stopped at its budget" : "not converged")
+                << (last.converged ? "converged" : stopped ? "stopped at its budget" : "not converged")
                 << ", mean symmetric Dirichlet " << format_number(st.report_before_optimization.mean_energy_3d) << " -> "
                 << format_number(st.report.mean_energy_3d) << ")";
   }

@@ -1223,15 +1223,19 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     }
   }
   stats.report = stats.report_before_optimization;
+  // the optimization with border and constraints fixed, within `seconds`; its time is added to the statistics
+  const std::vector<wvertex> constrained_nodes(nodes.begin() + nbn, nodes.end());
+  auto run_optimization = [&](Optimization_statistics& os, double seconds) {
+    const double t_opt = timer.time();
+    const Error_code e = optimize_distortion<ConcurrencyTag>(work, wuv, parameters::optimization_statistics(&os,
+                           parameters::constrained_vertices(constrained_nodes).maximum_running_time(seconds)));
+    stats.seconds_optimization += timer.time() - t_opt;
+    return e;
+  };
   if(optimize)
   {
-    const double t_opt = timer.time();
-    std::vector<wvertex> fixed(nodes.begin() + nbn, nodes.end());
     stats.optimized = true;
-    stats.optimization_status =
-      optimize_distortion<ConcurrencyTag>(work, wuv, parameters::optimization_statistics(&stats.optimization,
-                                       parameters::constrained_vertices(fixed).maximum_running_time((std::min)(remaining(), optimization_seconds))));
-    stats.seconds_optimization = timer.time() - t_opt;
+    stats.optimization_status = run_optimization(stats.optimization, (std::min)(remaining(), optimization_seconds));
     // OK / ERROR_BUDGET_EXHAUSTED: a certified, improved map was written; otherwise nothing was
     stats.report = check_embedding(work, wuv, parameters::multiply_connected(holes, parameters::check_overlap(!immersed)));
     if(immersed)
@@ -1294,12 +1298,8 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     const double left = (std::min)(remaining(), optimization_seconds - stats.seconds_optimization);
     if(optimize && !removals.empty() && left > 0)
     {
-      const double t_reopt = timer.time();
-      std::vector<wvertex> fixed(nodes.begin() + nbn, nodes.end());
       stats.reoptimized = true;
-      const Error_code rec = optimize_distortion<ConcurrencyTag>(work, wuv,
-        parameters::optimization_statistics(&stats.reoptimization, parameters::constrained_vertices(fixed).maximum_running_time(left)));
-      stats.seconds_optimization += timer.time() - t_reopt;
+      const Error_code rec = run_optimization(stats.reoptimization, left);
       if(rec != OK && rec != ERROR_BUDGET_EXHAUSTED && stats.optimization_status == OK) stats.optimization_status = rec;
       stats.report = check_embedding(work, wuv, parameters::multiply_connected(holes));
       if(!stats.report.is_valid()) return finish(ERROR_INVALID_EMBEDDING);

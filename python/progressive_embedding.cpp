@@ -694,7 +694,9 @@ PYBIND11_MODULE(progressive_embedding, m)
     "'overlapping_pairs', 'clockwise', 'min_signed_area', 'max_energy_3d', 'mean_energy_3d', 'immersion',\n"
     "and 'status', 'border_intersections', 'overlap_checked', 'max_signed_area', 'border_area',\n"
     "'high_energy_faces', 'has_3d_energy'. Every sign is decided exactly; 'valid' is True iff no face is\n"
-    "flipped or degenerate, no coordinate is NaN, the border is simple and no two faces overlap.");
+    "flipped or degenerate, no coordinate is NaN, the border is simple and no two faces overlap;\n"
+    "'immersion' is True iff the map is locally injective and every border fan turns by the border's angle\n"
+    "alone (a border wrapping around a vertex is not taken: the C++ check_immersion() takes rotation indices).");
   m.def("untangle", &py_untangle, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("optimize") = true,
     py::arg("iterations") = 1000, py::arg("tolerance") = 1e-5,
     "untangle(V, F, UV, optimize=True, iterations=1000, tolerance=1e-5) -> UV\n\n"

@@ -18,7 +18,13 @@
 
 namespace pe_tool {
 
-PE::Embedding_report certify(const Input& in) { return PE::check_embedding(in.mesh, in.uv); }
+Map_certificate certify(const Input& in)
+{
+  Map_certificate c;
+  c.report = PE::check_embedding(in.mesh, in.uv);
+  c.of = &in;
+  return c;
+}
 
 void add_report(Result& r, const PE::Embedding_report& rep, const std::string& prefix)
 {
@@ -116,9 +122,11 @@ int finish_with_map_status(Run& run, const Input& in, const PE::Embedding_report
   return run.finish(status);
 }
 
-int write_and_finish(Run& run, const Input& in, const std::string& obj, const PE::Embedding_report& rep,
+int write_and_finish(Run& run, const Input& in, const std::string& obj, const Map_certificate& cert,
                      const std::string& svg, const Picture& picture)
 {
+  assert(cert.of == &in); // the certificate of what is written
+  const PE::Embedding_report& rep = cert.report;
   add_report(run.result, rep);
   const int w = write_outputs(run, in, obj, svg, picture);
   if(w != EXIT_VALID) return w;
@@ -152,7 +160,7 @@ int cmd_check(const Arguments& a)
   Input in;
   int status = read_input(run, a.positional[0], in, Uv_mode::REQUIRED);
   if(status != EXIT_VALID) return status;
-  const PE::Embedding_report report = certify(in);
+  const PE::Embedding_report report = certify(in).report;
   run.result.add("status", PE::get_error_name(report.status));
   add_report(run.result, report);
   run.result.add("seconds", run.timer.seconds());
@@ -191,9 +199,30 @@ int cmd_check(const Arguments& a)
       return run.finish(EXIT_INVALID);
     }
   }
-  // a map that is not an embedding may still be an immersion (locally injective, overlapping itself)
-  const PE::Immersion_report immersion = PE::check_immersion(in.mesh, in.uv);
+  // a map that is not an embedding may still be an immersion (locally injective, overlapping itself). Its
+  // border fans turn by the border's angle alone, or (--turns-from MAP) by that plus the full turns that MAP's
+  // border makes at the vertex of the same index (pe constrain's outputs keep the input's vertices first)
+  auto turns = in.mesh.add_property_map<vertex_descriptor, int>("v:pe_rotation_index", 0).first;
+  if(a.has("--turns-from"))
+  {
+    Input tin;
+    Run trun(a); // a failure to read MAP ends the command with its own report
+    trun.result = run.result;
+    trun.summary << run.summary.str() << "; border turns from " << a.get("--turns-from") << ": ";
+    const int ts = read_input(trun, a.get("--turns-from"), tin, Uv_mode::REQUIRED, Shape::DISK, "border turns map");
+    if(ts != EXIT_VALID) return ts;
+    auto tturns = tin.mesh.add_property_map<vertex_descriptor, int>("v:pe_rotation_index", 0).first;
+    const int total = PE::border_rotation_indices(tin.mesh, tin.uv, tturns);
+    for(vertex_descriptor v : vertices(in.mesh))
+      if(std::size_t(v) < tin.mesh.number_of_vertices()) turns[v] = tturns[v];
+    run.result.add("border_turns", static_cast<std::size_t>(total));
+  }
+  const PE::Immersion_report immersion = PE::check_immersion(in.mesh, in.uv, PE::parameters::vertex_rotation_index_map(turns));
   run.result.add("immersion", immersion.is_immersion());
+  run.result.add("border_angle_errors", immersion.border_angle_errors);
+  if(!report.is_valid() && !immersion.is_immersion() && immersion.border_angle_errors > 0)
+    run.summary << "; not an immersion: " << immersion.border_angle_errors << " border fans turn by another angle than "
+                << "the border's" << (a.has("--turns-from") ? " plus the turns of --turns-from" : " (--turns-from gives wrapping borders)");
   if(!report.is_valid() && immersion.is_immersion())
     run.summary << "; an immersion: locally injective, the border overlapping itself";
   run.result.add("ok", report.is_valid());
@@ -207,7 +236,7 @@ int cmd_svg(const Arguments& a)
   Input in;
   const int status = read_input(run, a.positional[0], in, Uv_mode::REQUIRED);
   if(status != EXIT_VALID) return status;
-  const PE::Embedding_report report = certify(in);
+  const PE::Embedding_report report = certify(in).report;
   run.result.add("output", a.positional[1]);
   run.result.add("status", PE::get_error_name(report.status));
   add_report(run.result, report);

@@ -164,10 +164,12 @@ int cmd_constrain(const Arguments& a)
                 + (st.immersion ? (st.immersion_report.is_immersion() ? "immersion" : "NOT AN IMMERSION")
                                 : (st.report.is_valid() ? "valid" : "INVALID"));
   run.result.add("immersion", st.immersion && st.immersion_report.is_immersion());
-  if(!st.immersion) return write_and_finish(run, in, a.positional[1], st.report, a.get("--svg"), picture);
-  // a weakly self-overlapping border: the map is an immersion, certified by check_immersion() on the map written
-  add_report(run.result, st.report);
-  const PE::Immersion_report ir = PE::check_immersion(in.mesh, in.uv);
+  // the map written is certified, not the library's working copy (st.report)
+  if(!st.immersion) return write_and_finish(run, in, a.positional[1], certify(in), a.get("--svg"), picture);
+  // a weakly self-overlapping border: the map is an immersion, certified by check_immersion() on the map written,
+  // with the border fans wrapping as in the input's
+  add_report(run.result, certify(in).report);
+  const PE::Immersion_report ir = PE::check_immersion(in.mesh, in.uv, PE::parameters::vertex_rotation_index_map(turns));
   const int w = write_outputs(run, in, a.positional[1], a.get("--svg"), picture);
   if(w != EXIT_VALID) return w;
   run.result.add("written", true);

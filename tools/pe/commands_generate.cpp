@@ -38,9 +38,8 @@ int cmd_generate(const Arguments& a)
     PE::internal::make_grid_disk(static_cast<std::size_t>(n), in.mesh);
     for(vertex_descriptor v : vertices(in.mesh)) in.uv[v] = Point_2(in.mesh.point(v).x(), in.mesh.point(v).y());
   }
-  const PE::Embedding_report report = certify(in);
   run.result.add("status", "OK");
-  return write_and_finish(run, in, a.positional[2], report);
+  return write_and_finish(run, in, a.positional[2], certify(in));
 }
 
 } // namespace pe_tool

@@ -97,6 +97,7 @@ int cmd_polygon(const Arguments& a)
   run.result.add("degenerate", ir.degenerate);
   run.result.add("winding_errors", ir.winding_errors);
   run.result.add("border_mismatches", ir.border_mismatches);
+  run.result.add("border_angle_errors", ir.border_angle_errors);
   const int w = write_outputs(run, in, a.positional[1], a.get("--svg"), picture);
   if(w != EXIT_VALID) return w;
   run.result.add("written", true);

@@ -58,9 +58,6 @@ PE::Error_code run_optimize(Input& in, const Optimize_settings& s, const Budget&
                      .maximum_running_time(budget.remaining()))))));
 }
 
-const PE::Embedding_report& repair_report(const PE::Progressive_embedding_statistics& st) { return st.report; }
-const PE::Embedding_report& optimization_report(const PE::Optimization_statistics& os) { return os.report; }
-
 void add_statistics(Result& r, const PE::Progressive_embedding_statistics& st)
 {
   r.add("invalid_before", st.invalid_faces_before);
@@ -100,13 +97,11 @@ namespace {
 // The default optimization after a repair (untangle, embed). A mesh that cannot be optimized
 // (no free vertex, zero-area 3D faces) keeps its repaired map: said on stderr, not an error here
 // (map_status() reports the distortion that is not finite). Returns OK or the error to report.
-PE::Error_code optimize_after_repair(Run& run, Input& in, const Budget& budget, PE::Optimization_statistics& os,
-                                     PE::Embedding_report& report)
+PE::Error_code optimize_after_repair(Run& run, Input& in, const Budget& budget, PE::Optimization_statistics& os)
 {
   const PE::Error_code eo = run_optimize(in, optimize_settings(run.args, 1000), budget, os);
   if(eo == PE::OK || eo == PE::ERROR_BUDGET_EXHAUSTED) // budget: the map is valid and improved
   {
-    report = os.report;
     run.result.add("optimized", true);
     add_optimization(run.result, os);
     return PE::OK;
@@ -122,21 +117,20 @@ PE::Error_code optimize_after_repair(Run& run, Input& in, const Budget& budget, 
 }
 
 // The common end of untangle and embed: the optimization (unless --no-optimize), then the output.
-int optimize_and_finish(Run& run, Input& in, const Arguments& a, const Budget& budget, bool optimize,
-                        PE::Embedding_report report)
+int optimize_and_finish(Run& run, Input& in, const Arguments& a, const Budget& budget, bool optimize)
 {
   PE::Optimization_statistics os;
   run.result.add("optimized", false);
   if(optimize)
   {
-    const PE::Error_code ec = optimize_after_repair(run, in, budget, os, report);
+    const PE::Error_code ec = optimize_after_repair(run, in, budget, os);
     if(ec != PE::OK) { run.summary << "; "; return run.fail(ec, "optimization failed on '" + in.filename + "'"); }
     if(os.iterations) run.summary << ", optimization: " << optimization_summary(os);
   }
   run.result.add("status", "OK");
   run.result.add("seconds", run.timer.seconds());
   run.summary << ", " << seconds_string(run.timer.seconds()) << "; ";
-  return write_and_finish(run, in, a.positional[1], report);
+  return write_and_finish(run, in, a.positional[1], certify(in));
 }
 
 } // namespace
@@ -156,8 +150,7 @@ int cmd_untangle(const Arguments& a)
   add_statistics(run.result, st);
   run.summary << "faces " << count_faces(in.mesh) << ", " << statistics_summary(st);
   if(ec != PE::OK) { run.summary << "; "; return run.fail(ec, "progressive embedding failed on '" + in.filename + "'"); }
-  PE::Embedding_report report = repair_report(st);
-  return optimize_and_finish(run, in, a, budget, optimize, report);
+  return optimize_and_finish(run, in, a, budget, optimize);
 }
 
 int cmd_embed(const Arguments& a)
@@ -176,8 +169,7 @@ int cmd_embed(const Arguments& a)
   PE::Embedding_report unused;
   PE::Error_code ec = run_tutte(in, s, budget, unused);
   if(ec != PE::OK) return run.fail(ec, "Tutte failed on '" + in.filename + "'");
-  const PE::Embedding_report tutte_report = certify(in);
-  PE::Embedding_report report = tutte_report;
+  const PE::Embedding_report tutte_report = certify(in).report;
   const bool repaired = !tutte_report.is_valid();
   run.result.add("tutte_valid", tutte_report.is_valid());
   run.result.add("tutte_flipped", tutte_report.flipped);
@@ -192,9 +184,8 @@ int cmd_embed(const Arguments& a)
     add_statistics(run.result, st);
     run.summary << ", progressive embedding: " << statistics_summary(st);
     if(ec != PE::OK) { run.summary << "; "; return run.fail(ec, "progressive embedding failed on '" + in.filename + "'"); }
-    report = repair_report(st);
   }
-  return optimize_and_finish(run, in, a, budget, optimize, report);
+  return optimize_and_finish(run, in, a, budget, optimize);
 }
 
 int cmd_optimize(const Arguments& a)
@@ -229,7 +220,7 @@ int cmd_optimize(const Arguments& a)
   if(ec != PE::OK && ec != PE::ERROR_BUDGET_EXHAUSTED) return run.fail(ec, "optimization failed on '" + in.filename + "'");
   run.result.add("status", PE::get_error_name(ec));
   run.result.add("seconds", run.timer.seconds());
-  return write_and_finish(run, in, a.positional[1], os.report);
+  return write_and_finish(run, in, a.positional[1], certify(in));
 }
 
 } // namespace pe_tool

@@ -135,7 +135,7 @@ int cmd_tutte(const Arguments& a)
     run.result.add("vertices", std::size_t(num_vertices(in.mesh)));
     return run.fail(ec, "tutte failed on '" + in.filename + "'");
   }
-  const PE::Embedding_report report = certify(in);
+  const Map_certificate cert = certify(in);
   run.result.add("status", "OK");
   run.result.add("seconds", run.timer.seconds());
   run.summary.str("");
@@ -148,7 +148,7 @@ int cmd_tutte(const Arguments& a)
     run.summary << "before rounding " << (exact_report.is_valid() ? "valid" : "INVALID") << " (flipped " << exact_report.flipped
                 << ", degenerate " << exact_report.degenerate << "); written in double: ";
   }
-  return write_and_finish(run, in, a.positional[1], report);
+  return write_and_finish(run, in, a.positional[1], cert);
 }
 
 int cmd_thingi(const Arguments& a)
@@ -170,7 +170,8 @@ int cmd_thingi(const Arguments& a)
   Budget budget(a);
   const PE::Error_code ec = thingi_protocol(in, static_cast<unsigned>(seed), budget);
   if(ec != PE::OK) return run.fail(ec, "thingi failed on '" + in.filename + "'");
-  const PE::Embedding_report report = certify(in);
+  const Map_certificate cert = certify(in);
+  const PE::Embedding_report& report = cert.report;
   run.result.add("status", "OK");
   run.result.add("seconds", run.timer.seconds());
   run.summary << "double Tutte (" << seconds_string(run.timer.seconds()) << "): ";
@@ -178,7 +179,7 @@ int cmd_thingi(const Arguments& a)
   picture.title = in.filename + " seed " + std::to_string(seed) + ", double Tutte map: " + (report.is_valid() ? "valid" : "INVALID");
   picture.inset = !report.is_valid();
   picture.has_3d_energy = report.has_3d_energy;
-  return write_and_finish(run, in, a.positional[2], report, a.get("--svg"), picture);
+  return write_and_finish(run, in, a.positional[2], cert, a.get("--svg"), picture);
 }
 
 int cmd_random_init(const Arguments& a)
@@ -229,12 +230,11 @@ int cmd_random_init(const Arguments& a)
     }
     in.uv[v] = Point_2(r_in * x, r_in * y);
   }
-  const PE::Embedding_report report = certify(in);
   run.result.add("status", "OK");
   run.result.add("seconds", run.timer.seconds());
   run.summary.str("");
   run.summary << "random-init " << in.filename << " seed " << seed << " (" << seconds_string(run.timer.seconds()) << "): ";
-  return write_and_finish(run, in, a.positional[1], report);
+  return write_and_finish(run, in, a.positional[1], certify(in));
 }
 
 } // namespace pe_tool

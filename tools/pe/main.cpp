@@ -95,6 +95,9 @@ const Option_spec option_table[] = {
   { "--mesh", Kind::TEXT, "NAME", "mesh of DATA_DIR/meshes (default dino.off)" },
   { "--out-dir", Kind::DIRECTORY, "DIR", "existing folder for the maps and pictures (default: the build folder)" },
   { "--fix", Kind::INPUT_FILE, "FILE", "vertices kept bit-exactly: lines 'vertex_index u v' (0-based uv-vertex indices)" },
+  { "--turns-from", Kind::INPUT_FILE, "MAP.obj",
+    "check: the full turns each border fan makes beyond the border's angle, read from MAP (vertex by index;\n"
+    "e.g. the input of pe constrain whose border wraps around some of its vertices); default none" },
   { "--iterations", Kind::COUNT, "N",
     "iteration budget of the optimization (1 to 1000000000; default 1000, as optimize_distortion)", 1, 1e9 },
   { "--tolerance", Kind::REAL, "X",
@@ -150,8 +153,10 @@ const std::vector<Command_spec>& command_table()
     { "random-init", "IN OUT.obj", 2, 2, 1, { "--seed", "--time-limit" },
       "border on a circle by arc length, interior vertices uniformly random inside the border (--seed needed)",
       cmd_random_init },
-    { "check", "IN.obj [REF.obj]", 1, 2, -1, {},
-      "certify the uv map of IN; with REF, also require the same faces and a bit-exact border", cmd_check },
+    { "check", "IN.obj [REF.obj]", 1, 2, -1, { "--turns-from" },
+      "certify the uv map of IN; with REF, also require the same faces and a bit-exact border. A map that is not an\n"
+      "embedding may be an immersion (JSON \"immersion\"): every border fan turning by the border's angle there (plus\n"
+      "the full turns of --turns-from)", cmd_check },
     { "svg", "IN.obj OUT.svg", 2, 2, 1, {},
       "picture of the uv map of IN (faces coloured by distortion, flipped and degenerate faces highlighted)",
       cmd_svg },

@@ -91,7 +91,14 @@ std::size_t count_faces(const Mesh& m);
 
 // ---- certificate (commands_check.cpp) -----------------------------------------------------
 
-PE::Embedding_report certify(const Input& in);
+// The certificate of the map of `in` as it stands: what write_and_finish() writes is what it certifies (a
+// report computed on another copy of the map, e.g. a library's working copy, cannot be passed there).
+struct Map_certificate
+{
+  PE::Embedding_report report;
+  const Input* of = nullptr; // the input certified
+};
+Map_certificate certify(const Input& in);
 // the certificate's fields into the result; `prefix` distinguishes several maps ("tutte_")
 void add_report(Result& r, const PE::Embedding_report& rep, const std::string& prefix = std::string());
 // one line: `valid: faces 10, flipped 0, ...`; non-finite measures printed as inf or nan
@@ -103,8 +110,9 @@ std::string describe(const PE::Embedding_report& rep);
 int map_status(const Input& in, const PE::Embedding_report& rep, PE::Error_code& code, std::string& why);
 // ends `run` with map_status(): the message on stderr, the status in the result
 int finish_with_map_status(Run& run, const Input& in, const PE::Embedding_report& rep);
-// the common end of the commands that write a map: the file, then the exit status of map_status()
-int write_and_finish(Run& run, const Input& in, const std::string& obj, const PE::Embedding_report& rep,
+// the common end of the commands that write a map: the file, then the exit status of map_status();
+// `cert` is certify(in), taken after the last change to the map
+int write_and_finish(Run& run, const Input& in, const std::string& obj, const Map_certificate& cert,
                      const std::string& svg = std::string(), const Picture& picture = Picture());
 
 // ---- Tutte steps (commands_tutte.cpp) -----------------------------------------------------
@@ -144,9 +152,6 @@ Optimize_settings optimize_settings(const Arguments& a, std::size_t default_iter
 PE::Error_code run_repair(Input& in, bool will_optimize, const Budget& budget, PE::Progressive_embedding_statistics& st);
 // distortion optimization of the valid map in.uv
 PE::Error_code run_optimize(Input& in, const Optimize_settings& s, const Budget& budget, PE::Optimization_statistics& os);
-// the certificate a repair ends with, the mean energies of an optimization
-const PE::Embedding_report& repair_report(const PE::Progressive_embedding_statistics& st);
-const PE::Embedding_report& optimization_report(const PE::Optimization_statistics& os);
 void add_statistics(Result& r, const PE::Progressive_embedding_statistics& st);
 std::string statistics_summary(const PE::Progressive_embedding_statistics& st);
 void add_optimization(Result& r, const PE::Optimization_statistics& os);

@@ -23,6 +23,7 @@
 #include <iterator>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -65,13 +66,21 @@ struct Immersion_report
   /// with a `border_polygon`: the number of border vertices whose uv differs from the polygon's point (compared
   /// bit-exactly, the polygon's first point at the border vertex `border_polygon_start`)
   std::size_t border_mismatches = 0;
+  /// border vertices (among those whose incident faces are all correctly oriented) whose fan of faces does not
+  /// turn by the border polygon's angle there plus 2 pi times the vertex's rotation index (index 0 unless the
+  /// named parameter `vertex_rotation_index_map` gives one)
+  std::size_t border_angle_errors = 0;
+  /// largest number of full turns that the fan of a border vertex makes beyond the border polygon's angle there
+  /// (0 when no border fan wraps around its vertex)
+  std::size_t max_border_turns = 0;
 
   /// returns `true` if the map is an immersion: no flipped, degenerate or non-finite element, every interior
-  /// one-ring winding once, and (with a border polygon) the border bit-exactly the polygon
+  /// one-ring winding once, every border fan turning by the border's angle plus its rotation index's full turns,
+  /// and (with a border polygon) the border bit-exactly the polygon
   bool is_immersion() const
   {
     return status == OK && faces > 0 && flipped == 0 && degenerate == 0 && non_finite == 0 && winding_errors == 0
-        && unchecked_vertices == 0 && border_mismatches == 0;
+        && unchecked_vertices == 0 && border_mismatches == 0 && border_angle_errors == 0;
   }
 
   /// returns a one-line human-readable summary
@@ -84,6 +93,8 @@ struct Immersion_report
     if(non_finite) os << ", non-finite vertices " << non_finite;
     os << ", interior one-rings not winding once " << winding_errors << " (max turns " << max_winding << ")";
     if(unchecked_vertices) os << ", unchecked vertices " << unchecked_vertices;
+    if(border_angle_errors) os << ", border fans not turning by the border's angle plus their full turns " << border_angle_errors;
+    if(max_border_turns) os << ", border fans wrapping up to " << max_border_turns << " extra turn(s)";
     if(border_mismatches) os << ", border vertices off the polygon " << border_mismatches;
     return os.str();
   }
@@ -103,11 +114,37 @@ int direction_half(const Point_2& c, const Point_2& p)
 }
 
 
+// the rotation index of v in the user's map (any integral value type); -1 for a value no mesh border can
+// turn (negative, or beyond a million turns)
+template <class Map, class Vertex>
+int read_rotation_index(const Map& m, Vertex v)
+{
+  const auto r = get(m, v);
+  if(r < 0) return -1;
+  if(r > 1000000) return -1;
+  return static_cast<int>(r);
+}
+
+// true if the direction from c to b is after the direction from c to a in the order of angles in [0, 2 pi)
+// from (1, 0) (the half-planes of direction_half; exact)
+template <class Point_2, class Orientation_2>
+bool direction_after(const Point_2& c, const Point_2& a, const Point_2& b, const Orientation_2& orient)
+{
+  const int ha = direction_half(c, a), hb = direction_half(c, b);
+  if(ha != hb) return hb > ha;
+  return orient(c, a, b) == CGAL::POSITIVE; // within a half-plane the turn is below pi
+}
+
 // the certificate of check_immersion() on a disk already indexed (its border order is the one the
-// border-polygon overload compares with)
+// border-polygon overload compares with). rotation_indices: per border position k (disk.border[k]), the full
+// turns expected beyond the border's angle (empty: all 0). measured_indices (if given): per border position, the
+// full turns the fan makes beyond the border's angle, -1 where not decided (a face there not correctly
+// oriented or not finite).
 template <class TriangleMesh, class VertexUVMap, class Orientation_2>
 Immersion_report check_immersion_of_disk(const Indexed_disk<TriangleMesh>& disk, VertexUVMap uvm,
-                                         const Orientation_2& orient)
+                                         const Orientation_2& orient,
+                                         const std::vector<int>& rotation_indices = std::vector<int>(),
+                                         std::vector<int>* measured_indices = nullptr)
 {
   typedef typename Uv_map_types<VertexUVMap>::Point_2 Point_2;
   Immersion_report r;
@@ -143,7 +180,8 @@ Immersion_report check_immersion_of_disk(const Indexed_disk<TriangleMesh>& disk,
 
   // winding of each interior one-ring: a correctly oriented face (c, a, b) turns the direction from c by an
   // angle in (0, pi) counterclockwise (clockwise for a mirror image); the turn passes the direction (1, 0) iff
-  // it goes from the lower half-open half-plane to the upper one (the reverse for a mirror image)
+  // it goes from the lower half-open half-plane to the upper one (the reverse for a mirror image). Border
+  // vertices are counted the same way, over their fan.
   std::vector<std::size_t> turns(nv, 0);
   std::vector<char> bad(nv, 0);
   for(std::size_t f = 0; f < nf; ++f)
@@ -153,7 +191,6 @@ Immersion_report check_immersion_of_disk(const Indexed_disk<TriangleMesh>& disk,
     for(int k = 0; k < 3; ++k)
     {
       const std::size_t c = t[k], a = t[(k + 1) % 3], b = t[(k + 2) % 3];
-      if(disk.on_border[c]) continue;
       if(!ok) { bad[c] = 1; continue; }
       const int ha = direction_half(P[c], P[a]), hb = direction_half(P[c], P[b]);
       if(r.clockwise ? (ha == 0 && hb == 1) : (ha == 1 && hb == 0)) ++turns[c];
@@ -166,6 +203,41 @@ Immersion_report check_immersion_of_disk(const Indexed_disk<TriangleMesh>& disk,
     r.max_winding = (std::max)(r.max_winding, turns[i]);
     if(turns[i] != 1) ++r.winding_errors;
   }
+
+  // border fans: the fan of c = border[k] turns (mesh order) from c -> border[k+1] to c -> border[k-1], by the
+  // border polygon's angle theta in (0, 2 pi] (pi for a flat vertex, 2 pi for a reversal) plus 2 pi rho, rho its
+  // rotation index. Counterclockwise, starting at the angle s of c -> next, it passes the direction (1, 0)
+  // floor((s + theta) / 2 pi) + rho times: 1 + rho if c -> prev is not after c -> next (theta reaches 2 pi),
+  // rho otherwise. A mirror image turns clockwise: 1 + rho if c -> prev is not before c -> next.
+  const std::size_t nb = disk.border.size();
+  if(measured_indices) measured_indices->assign(nb, -1);
+  for(std::size_t k = 0; k < nb; ++k)
+  {
+    const std::size_t c = disk.border[k], n = disk.border[(k + 1) % nb], p = disk.border[(k + nb - 1) % nb];
+    if(bad[c] || !finite[c] || !finite[n] || !finite[p]) continue; // a face there is already counted as wrong
+    const bool wraps = r.clockwise ? !direction_after(P[c], P[p], P[n], orient)
+                                   : !direction_after(P[c], P[n], P[p], orient);
+    const long long rho = static_cast<long long>(turns[c]) - (wraps ? 1 : 0);
+    if(measured_indices) (*measured_indices)[k] = static_cast<int>((std::max)(rho, -1LL));
+    const long long expected = rotation_indices.empty() ? 0 : rotation_indices[k];
+    if(rho != expected) ++r.border_angle_errors;
+    if(rho > 0) r.max_border_turns = (std::max)(r.max_border_turns, static_cast<std::size_t>(rho));
+  }
+  return r;
+}
+
+// the rotation indices of the named parameters, per border position of the disk (empty without them)
+template <class TriangleMesh, class NamedParameters>
+std::vector<int> named_rotation_indices(const Indexed_disk<TriangleMesh>& disk, const NamedParameters& np)
+{
+  typedef typename CGAL::internal_np::Lookup_named_param_def<internal_np::vertex_rotation_index_map_t, NamedParameters,
+                                                             CGAL::internal_np::Param_not_found>::type Map;
+  std::vector<int> r;
+  if constexpr(!std::is_same<Map, CGAL::internal_np::Param_not_found>::value)
+  {
+    const Map m = CGAL::parameters::get_parameter(np, internal_np::vertex_rotation_index_map);
+    for(std::size_t b : disk.border) r.push_back(read_rotation_index(m, disk.vertices[b]));
+  }
   return r;
 }
 
@@ -175,10 +247,19 @@ Immersion_report check_immersion_of_disk(const Indexed_disk<TriangleMesh>& disk,
 ///
 /// certifies exactly that the uv map `uvm` of the disk `tm` is an immersion (a locally injective map): every face
 /// strictly oriented like the map (counterclockwise, or every face clockwise for a mirror image), and the one-ring
-/// of every interior vertex winding exactly once around it. The winding is counted exactly: with every incident
-/// face correctly oriented, each face turns the direction from the vertex by an angle in (0, pi), and the number
-/// of turns is the number of faces whose turn passes the direction (1, 0) (coordinate comparisons and the exact
-/// orientation predicate only: exact in every number type, at every scale). Never throws on data.
+/// of every interior vertex winding exactly once around it, and the fan of every border vertex turning by the
+/// border polygon's angle there plus 2 pi times the vertex's rotation index. The winding is counted exactly: with
+/// every incident face correctly oriented, each face turns the direction from the vertex by an angle in (0, pi),
+/// and the number of turns is the number of faces whose turn passes the direction (1, 0) (coordinate comparisons
+/// and the exact orientation predicate only: exact in every number type, at every scale). Never throws on data.
+///
+/// <b>Border angles.</b> The border polygon's angle at a border vertex, in (0, 2 pi], is the angle from the
+/// direction of the next border vertex to that of the previous one, in the map's orientation (pi at a flat vertex,
+/// 2 pi where the border turns back on itself). The uv positions give it only modulo 2 pi, while the fan of
+/// faces may wrap around the vertex several times (a border that winds around its vertex, as at a cone of a
+/// seamless map cut open): `vertex_rotation_index_map` says how many full turns each border vertex adds, and
+/// without it every fan must turn by the border's angle alone. The full turns found are in
+/// `Immersion_report::max_border_turns`; `border_rotation_indices()` reads them from a map taken as the reference.
 ///
 /// Overlaps between faces far apart are allowed (a map onto a weakly self-overlapping border has them): use
 /// `check_embedding()` for a one-to-one map.
@@ -199,6 +280,13 @@ Immersion_report check_immersion_of_disk(const Indexed_disk<TriangleMesh>& disk,
 ///     \cgalParamType{a model of `ProgressiveEmbeddingTraits_2` whose `Point_2` is the uv map's value type}
 ///     \cgalParamDefault{`Progressive_embedding_traits_2<K>`, `K` the kernel of the uv map's point type}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_rotation_index_map}
+///     \cgalParamDescription{the rotation index of every border vertex: the full turns its fan adds to the border's
+///                           angle there (a negative value, or one above a million, never matches)}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the vertex descriptor as key type and an integral value
+///                    type}
+///     \cgalParamDefault{all 0: every border fan turns by the border's angle alone}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \return the report; the map is an immersion iff `Immersion_report::is_immersion()`
@@ -215,7 +303,7 @@ Immersion_report check_immersion(const TriangleMesh& tm, VertexUVMap uvm,
   internal::Indexed_disk<TriangleMesh> disk;
   const Error_code ec = internal::make_indexed_disk(tm, boost::graph_traits<TriangleMesh>::null_halfedge(), disk);
   if(ec != OK) { Immersion_report r; r.status = ec; return r; }
-  return internal::check_immersion_of_disk(disk, uvm, orient);
+  return internal::check_immersion_of_disk(disk, uvm, orient, internal::named_rotation_indices(disk, np));
 }
 
 
@@ -230,7 +318,7 @@ Immersion_report check_immersion(const TriangleMesh& tm, VertexUVMap uvm,
 /// \param uvm the uv map
 /// \param start a border vertex of `tm`
 /// \param border the expected uv of the border vertices, from `start` on
-/// \param np the named parameters of the first overload
+/// \param np the named parameters of the first overload (`geom_traits`, `vertex_rotation_index_map`)
 template <typename TriangleMesh, typename VertexUVMap, typename PointRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Immersion_report check_immersion(const TriangleMesh& tm, VertexUVMap uvm,
                                  typename boost::graph_traits<TriangleMesh>::vertex_descriptor start,
@@ -244,7 +332,8 @@ Immersion_report check_immersion(const TriangleMesh& tm, VertexUVMap uvm,
   internal::Indexed_disk<TriangleMesh> disk;
   const Error_code ec = internal::make_indexed_disk(tm, boost::graph_traits<TriangleMesh>::null_halfedge(), disk);
   if(ec != OK) { Immersion_report r; r.status = ec; return r; }
-  Immersion_report r = internal::check_immersion_of_disk(disk, uvm, traits.exact_orientation_2_object());
+  Immersion_report r = internal::check_immersion_of_disk(disk, uvm, traits.exact_orientation_2_object(),
+                                                         internal::named_rotation_indices(disk, np));
   const std::size_t n = disk.border.size();
   if(static_cast<std::size_t>(std::distance(std::begin(border), std::end(border))) != n)
   {
@@ -263,6 +352,42 @@ Immersion_report check_immersion(const TriangleMesh& tm, VertexUVMap uvm,
     ++k;
   }
   return r;
+}
+
+/// \ingroup PkgProgressiveEmbeddingMainFunctions
+///
+/// reads, from a map `uvm` of the disk `tm`, how many full turns its border makes around each border vertex beyond
+/// its angle in (0, 2 pi]: the rotation index that `constrained_embedding()` takes as `vertex_rotation_index_map` to
+/// map onto the same border, and that `check_immersion()` takes to certify such a map. The turns are counted
+/// exactly, as `check_immersion()` counts them (coordinate comparisons and the exact orientation predicate, at
+/// every scale): the number of times the fan of the vertex passes a fixed direction, minus the times the border's
+/// angle alone passes it. A border vertex with a face that is not strictly oriented like the map (or a non-finite
+/// point) gets 0, and so does every border vertex when `tm` is not a triangulated disk. Vertices that are not on the
+/// border are not written.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` (triangles)
+/// \tparam VertexUVMap a readable vertex property map whose values are points of a CGAL kernel
+/// \tparam VertexIndexMap a writable vertex property map with `int` values
+/// \return the sum of the indices written
+template <class TriangleMesh, class VertexUVMap, class VertexIndexMap>
+int border_rotation_indices(const TriangleMesh& tm, VertexUVMap uvm, VertexIndexMap rotation_index_map)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename internal::Check_traits<VertexUVMap, CGAL::parameters::Default_named_parameters>::type Traits;
+  for(halfedge_descriptor h : halfedges(tm))
+    if(CGAL::is_border(h, tm)) put(rotation_index_map, target(h, tm), 0);
+  internal::Indexed_disk<TriangleMesh> disk;
+  if(internal::make_indexed_disk(tm, boost::graph_traits<TriangleMesh>::null_halfedge(), disk) != OK) return 0;
+  std::vector<int> measured;
+  internal::check_immersion_of_disk(disk, uvm, Traits().exact_orientation_2_object(), std::vector<int>(), &measured);
+  int total = 0;
+  for(std::size_t k = 0; k < disk.border.size(); ++k)
+  {
+    const int r = measured[k] > 0 ? measured[k] : 0;
+    put(rotation_index_map, disk.vertices[disk.border[k]], r);
+    total += r;
+  }
+  return total;
 }
 
 } // namespace Progressive_embedding

@@ -314,16 +314,6 @@ bool path_corners_turn_by_margin(const Domain_partition& partition, const std::v
   return true;
 }
 
-// the rotation index of v in the user's map (any integral value type)
-template <class Map, class Vertex>
-int read_rotation_index(const Map& m, Vertex v)
-{
-  const auto r = get(m, v);
-  if(r < 0) return -1;
-  if(r > 1000000) return -1; // not a count of turns a mesh border can make around one vertex
-  return static_cast<int>(r);
-}
-
 // The indices of the strict corners of the exact convex hull of the polygon P (Andrew's monotone
 // chain with the exact orientation), in the polygon's order. ERROR_NON_CONVEX_BORDER when they are
 // not in the hull's cyclic order along the polygon (the polygon is not convex up to rounding),
@@ -389,58 +379,6 @@ void write_face_patch_map(const TriangleMesh& tm, const Work& work, const CopyTo
 }
 
 } // namespace internal
-
-/// \ingroup PkgProgressiveEmbeddingMainFunctions
-///
-/// reads, from a map `uvm` of `tm` whose faces around the border are positive, how many full turns its border makes
-/// around each border vertex beyond its angle in (0, 2 pi): the rotation index that `constrained_embedding()` takes
-/// as `vertex_rotation_index_map` to map onto the same border. The angle at a border vertex is the sum of its faces'
-/// corners there (in double precision); the index is that sum minus the border polygon's angle in (0, 2 pi),
-/// divided by 2 pi and rounded. A border vertex with a face that is not strictly positive (exact orientation) gets 0.
-/// Vertices that are not on the border are not written.
-///
-/// \tparam TriangleMesh a model of `FaceListGraph` (triangles)
-/// \tparam VertexUVMap a readable vertex property map whose values are points of a CGAL kernel
-/// \tparam VertexIndexMap a writable vertex property map with `int` values
-/// \return the sum of the indices written
-template <class TriangleMesh, class VertexUVMap, class VertexIndexMap>
-int border_rotation_indices(const TriangleMesh& tm, VertexUVMap uvm, VertexIndexMap rotation_index_map)
-{
-  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
-  const double two_pi = 6.283185307179586;
-  auto xy = [&](halfedge_descriptor h, bool at_target) {
-    const auto p = get(uvm, at_target ? target(h, tm) : source(h, tm));
-    return std::array<double, 2>{ { CGAL::to_double(p.x()), CGAL::to_double(p.y()) } };
-  };
-  auto angle = [](const std::array<double, 2>& o, const std::array<double, 2>& a, const std::array<double, 2>& b) {
-    const double ux = a[0] - o[0], uy = a[1] - o[1], vx = b[0] - o[0], vy = b[1] - o[1];
-    return std::atan2(ux * vy - uy * vx, ux * vx + uy * vy); // counterclockwise from o -> a to o -> b, in (-pi, pi]
-  };
-  int total = 0;
-  for(halfedge_descriptor hb : halfedges(tm))
-  {
-    if(!CGAL::is_border(hb, tm)) continue;
-    // v = target(hb); the interior on the left: v -> source(hb) leaves v first, target(next(hb)) -> v enters it
-    const std::array<double, 2> v = xy(hb, true), n = xy(hb, false), p = xy(next(hb, tm), true);
-    double sum = 0;
-    bool positive = true;
-    for(halfedge_descriptor h : CGAL::halfedges_around_target(hb, tm))
-    {
-      if(CGAL::is_border(h, tm)) continue;
-      // the face of h: corner at target(h) between target(next(h)) and source(h)
-      const auto a = get(uvm, target(next(h, tm), tm)), o = get(uvm, target(h, tm)), b = get(uvm, source(h, tm));
-      if(internal::exact_orientation(o, a, b) != CGAL::LEFT_TURN) positive = false;
-      sum += angle(xy(h, true), xy(next(h, tm), true), xy(h, false));
-    }
-    double base = angle(v, n, p);
-    if(base <= 0) base += two_pi; // the polygon's angle in (0, 2 pi]
-    const double turns = std::floor((sum - base) / two_pi + 0.5);
-    const int r = positive && turns > 0 && turns < 1e6 ? static_cast<int>(turns) : 0;
-    put(rotation_index_map, target(hb, tm), r);
-    total += r;
-  }
-  return total;
-}
 
 /// \ingroup PkgProgressiveEmbeddingMainFunctions
 ///
@@ -1164,6 +1102,10 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
 
   // ---- 5. certificate, optimization ---------------------------------------------------------
   const double t_cert = timer.time();
+  // the border fans' full turns that the immersion certificate expects: the caller's rotation indices
+  auto work_turns = work.template add_property_map<wvertex, int>("v:pe_rotation_index", 0).first;
+  if(!border_turns.empty())
+    for(std::size_t k = 0; k < nb; ++k) work_turns[to_work.at(disk.vertices[disk.border[k]])] = border_turns[k];
   stats.report_before_optimization = check_embedding(work, wuv, parameters::check_overlap(!immersed));
   if(immersed)
   {
@@ -1171,7 +1113,8 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     // the embedding certificate above fails on the border, by design)
     stats.immersion = true;
     std::vector<Point_2> polygon(Bfull.begin(), Bfull.begin() + static_cast<std::ptrdiff_t>(nb));
-    stats.immersion_report = check_immersion(work, wuv, to_work.at(disk.vertices[disk.border[0]]), polygon);
+    stats.immersion_report = check_immersion(work, wuv, to_work.at(disk.vertices[disk.border[0]]), polygon,
+                                             parameters::vertex_rotation_index_map(work_turns));
     stats.seconds_certification = timer.time() - t_cert;
     if(verbose) std::cerr << "[constrained_embedding] " << stats.immersion_report.summary() << std::endl;
     stats.report = stats.report_before_optimization;
@@ -1242,7 +1185,8 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     {
       // the optimizer keeps immersions (border fixed): certified again here, with the border polygon
       std::vector<Point_2> polygon(Bfull.begin(), Bfull.begin() + static_cast<std::ptrdiff_t>(nb));
-      stats.immersion_report = check_immersion(work, wuv, to_work.at(disk.vertices[disk.border[0]]), polygon);
+      stats.immersion_report = check_immersion(work, wuv, to_work.at(disk.vertices[disk.border[0]]), polygon,
+                                               parameters::vertex_rotation_index_map(work_turns));
       if(!stats.immersion_report.is_immersion() || stats.immersion_report.border_mismatches != 0)
         return finish(ERROR_INVALID_EMBEDDING);
     }

@@ -57,7 +57,7 @@ namespace Progressive_embedding {
 /// (`check_immersion()`). Such a map is optimized as an immersion, with its border fixed: a step that keeps every
 /// face positive keeps the winding number of every one-ring (an integer that varies continuously), so every accepted
 /// step stays an immersion, and the output is certified by `check_immersion()` with its border compared bit-exactly
-/// with the input's (`Optimization_statistics::immersion` and `immersion_report`; `report` then holds the energies).
+/// with the input's and every border fan wrapping around its vertex as many times as in the input (`Optimization_statistics::immersion` and `immersion_report`; `report` then holds the energies).
 ///
 /// <b>Convergence criterion:</b> the function returns `OK` when two consecutive iterations each lower the mean
 /// energy by less than `convergence_tolerance` (relative). On the repaired Tutte maps of real meshes this happens

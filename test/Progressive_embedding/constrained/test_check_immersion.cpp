@@ -6,11 +6,14 @@
 // strip wound 1.5 times around a center overlaps itself and is an immersion (check_embedding() refuses
 // it); a fan whose one-ring winds twice, a flipped face and a non-finite point are not; mirror images;
 // exact rationals and MPFR at scales beyond double range; Polyhedron_3; the border-polygon overload.
+// Border angles: one polygon bounds two immersed disks whose extra turn sits at different border vertices;
+// each is an immersion only with its own rotation indices.
 
 #include <CGAL/Progressive_embedding/check_immersion.h>
 #include <CGAL/Progressive_embedding/optimize_distortion.h>
 #include <CGAL/Progressive_embedding/check_embedding.h>
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
+#include <CGAL/Progressive_embedding/triangulate_self_overlapping_polygon_2.h>
 
 #include "registry.h"
 #include "../test_util.h"
@@ -256,6 +259,113 @@ PE_TEST_GROUP(check_immersion)
   RUN((cases<Kq, Surface_mesh>(1100)));   // beyond double range
   RUN((cases<Kq, Surface_mesh>(-1100)));
   RUN((cases<Kfr, Surface_mesh>(1100)));
+  return EXIT_SUCCESS;
+}
+
+namespace {
+
+// A polygon bounding two immersed disks: A = (0, 0), an arc of radius 1 from angle 0 to 2.5 pi (k + 1 points), then
+// B = (-0.25, -0.125). Its rotation number is 2, so one vertex must wrap once around itself: A (the disk is a fan
+// around A) or B (a fan around B). The positions are those of both disks, bit for bit; only the faces differ.
+std::vector<std::array<double, 2> > two_disk_polygon(int k)
+{
+  const double pi = std::acos(-1.0);
+  std::vector<std::array<double, 2> > P{ { { 0, 0 } } };
+  for(int i = 0; i <= k; ++i) P.push_back({ { std::cos(i * 2.5 * pi / k), std::sin(i * 2.5 * pi / k) } });
+  P.push_back({ { -0.25, -0.125 } });
+  return P;
+}
+
+// the disk bounded by P whose fan at `wrap` makes one extra turn (built by triangulate_self_overlapping_polygon_2)
+template <class Mesh>
+bool make_wrapped_disk(Mesh& m, const std::vector<std::array<double, 2> >& P, std::size_t wrap)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor VD;
+  std::vector<Epick::Point_2> pts;
+  for(const auto& p : P) pts.push_back(Epick::Point_2(p[0], p[1]));
+  std::vector<int> r(P.size(), 0);
+  r[wrap] = 1;
+  std::vector<std::array<std::size_t, 3> > T;
+  if(PE::triangulate_self_overlapping_polygon_2(pts, std::back_inserter(T), PE::parameters::rotation_indices(r)) != PE::OK)
+    return false;
+  std::vector<VD> V;
+  for(std::size_t i = 0; i < P.size(); ++i)
+  {
+    V.push_back(add_vertex(m));
+    put(CGAL::vertex_point, m, V.back(), Epick::Point_3(P[i][0], P[i][1], 0.01 * double(i % 3)));
+  }
+  for(const auto& t : T)
+    if(CGAL::Euler::add_face(std::vector<VD>{ V[t[0]], V[t[1]], V[t[2]] }, m) == boost::graph_traits<Mesh>::null_face())
+      return false;
+  return true;
+}
+
+template <class K, class Mesh>
+int border_angle_cases(int e)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor VD;
+  const int k = 10;
+  const auto P = two_disk_polygon(k);
+  const std::size_t a = 0, b = P.size() - 1;
+  for(std::size_t wrap : { a, b })
+  {
+    const std::size_t other = wrap == a ? b : a;
+    Mesh m;
+    CHECK(make_wrapped_disk(m, P, wrap), "the disk wrapping at one vertex is built");
+    const std::vector<VD> V(vertices(m).begin(), vertices(m).end());
+    auto rot = get(CGAL::dynamic_vertex_property_t<int>(), m);
+    for(VD v : V) put(rot, v, 0);
+    for(bool mirror : { false, true })
+    {
+      auto map = uv_map_of<K>(m, P, e, mirror);
+      const std::string what = std::string(wrap == a ? "fan around A" : "fan around B") + (mirror ? ", mirrored" : "");
+      // no index given: the extra turn is an error wherever it is
+      const PE::Immersion_report r0 = PE::check_immersion(m, map);
+      std::cout << "  " << what << ", no index: " << r0.summary() << std::endl;
+      CHECK(!r0.is_immersion() && r0.flipped == 0 && r0.degenerate == 0 && r0.winding_errors == 0 && r0.clockwise == mirror
+              && r0.border_angle_errors == 1 && r0.max_border_turns == 1, what + ": the extra turn refused without its index");
+      // the index at the other vertex: both vertices wrong (the counterexample a check of the faces alone accepts)
+      put(rot, V[wrap], 0);
+      put(rot, V[other], 1);
+      const PE::Immersion_report rw = PE::check_immersion(m, map, PE::parameters::vertex_rotation_index_map(rot));
+      std::cout << "  " << what << ", index at the other vertex: " << rw.summary() << std::endl;
+      CHECK(!rw.is_immersion() && rw.border_angle_errors == 2 && rw.flipped == 0 && rw.winding_errors == 0,
+            what + ": the extra turn at the wrong border vertex is refused");
+      // its own index: an immersion, with the border polygon overload too
+      put(rot, V[other], 0);
+      put(rot, V[wrap], 1);
+      const PE::Immersion_report rr = PE::check_immersion(m, map, PE::parameters::vertex_rotation_index_map(rot));
+      CHECK(rr.is_immersion() && rr.border_angle_errors == 0 && rr.max_border_turns == 1, what + ": an immersion with its index");
+      // the polygon overload, from the vertex after the wrapping one
+      const std::size_t s = (wrap + 1) % V.size();
+      std::vector<typename K::Point_2> border;
+      for(std::size_t i = 0; i < V.size(); ++i) border.push_back(get(map, V[(s + i) % V.size()]));
+      CHECK(PE::check_immersion(m, map, V[s], border, PE::parameters::vertex_rotation_index_map(rot)).is_immersion(),
+            what + ": an immersion onto its polygon, with its index");
+      CHECK(PE::check_immersion(m, map, V[s], border).border_angle_errors == 1, what + ": onto its polygon, without");
+      put(rot, V[wrap], 0);
+      // border_rotation_indices() reads the index back from the map (exactly, at every scale, either orientation)
+      {
+        auto read = get(CGAL::dynamic_vertex_property_t<int>(), m);
+        CHECK(PE::border_rotation_indices(m, map, read) == 1 && get(read, V[wrap]) == 1 && get(read, V[other]) == 0,
+              what + ": border_rotation_indices() finds the extra turn");
+        CHECK(PE::check_immersion(m, map, PE::parameters::vertex_rotation_index_map(read)).is_immersion(),
+              what + ": an immersion with the indices read from it");
+      }
+    }
+  }
+  return EXIT_SUCCESS;
+}
+
+} // namespace
+
+PE_TEST_GROUP(check_immersion_border_angles)
+{
+  (void)data_dir;
+  RUN((border_angle_cases<Epick, Surface_mesh>(0)));
+  RUN((border_angle_cases<Epick, Polyhedron>(0)));
+  RUN((border_angle_cases<Kq, Surface_mesh>(1100)));  // beyond double range
+  RUN((border_angle_cases<Kfr, Surface_mesh>(-1100)));
   return EXIT_SUCCESS;
 }
 

@@ -300,12 +300,15 @@ int wrapped_border(double angle, std::size_t steps, std::size_t rings, int r)
   std::size_t interior = 0;
   for(auto v : vertices(m)) if(!CGAL::is_border(v, m)) ++interior;
   CHECK(interior == (rings - 1) * (steps - 1), what << ": " << interior << " interior vertices");
-  const PE::Immersion_report in = PE::check_immersion(m, uv);
-  CHECK(in.is_immersion(), what << ": the input map is an immersion: " << in.summary());
   CHECK(std::abs(corner_sum(m, uv, center) - angle) < 1e-9, what << ": the input's angle at the center");
 
   auto turns = m.add_property_map<Sm_vertex, int>("v:test_turns", -7).first;
   const int total = PE::border_rotation_indices(m, uv, turns);
+  const PE::Immersion_report in = PE::check_immersion(m, uv, PE::parameters::vertex_rotation_index_map(turns));
+  CHECK(in.is_immersion() && in.max_border_turns == std::size_t(r), what << ": the input map is an immersion: " << in.summary());
+  const PE::Immersion_report in0 = PE::check_immersion(m, uv);
+  CHECK(in0.is_immersion() == (r == 0) && in0.border_angle_errors == (r == 0 ? 0u : 1u),
+        what << ": without its rotation index, the wrapped center counts as an error: " << in0.summary());
   CHECK(total == r && get(turns, center) == r, what << ": border_rotation_indices " << total << ", center " << get(turns, center));
   for(auto v : vertices(m))
     CHECK(get(turns, v) == (v == center ? r : CGAL::is_border(v, m) ? 0 : -7), what << ": index of vertex " << v);
@@ -345,9 +348,10 @@ int wrapped_border(double angle, std::size_t steps, std::size_t rings, int r)
   CHECK(st.immersion && st.immersion_report.is_immersion() && st.immersion_report.border_mismatches == 0
         && st.immersion_report.flipped == 0 && st.immersion_report.degenerate == 0, what << ": certified immersion in the statistics");
   for(const auto& b : border) CHECK(get(uv, b.first) == b.second, what << ": border bit-exact");
-  const PE::Immersion_report ir = PE::check_immersion(m, uv);
+  const PE::Immersion_report ir = PE::check_immersion(m, uv, PE::parameters::vertex_rotation_index_map(turns));
   std::cout << "  " << ir.summary() << std::endl;
-  CHECK(ir.is_immersion() && ir.flipped == 0 && ir.degenerate == 0 && ir.winding_errors == 0, what << ": check_immersion on the caller's mesh");
+  CHECK(ir.is_immersion() && ir.flipped == 0 && ir.degenerate == 0 && ir.winding_errors == 0 && ir.border_angle_errors == 0,
+        what << ": check_immersion on the caller's mesh, with the input's rotation indices");
   CHECK(!PE::check_embedding(m, uv).is_valid(), what << ": a wrapped border is no embedding");
   // the map wraps as the input did: the same angle at the center, the same indices read back
   CHECK(std::abs(corner_sum(m, uv, center) - angle) < 1e-9, what << ": angle " << corner_sum(m, uv, center) << " at the center");

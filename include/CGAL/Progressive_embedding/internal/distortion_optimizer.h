@@ -221,9 +221,12 @@ public:
       // (a weakly self-overlapping border): with the border fixed, steps that keep every face positive
       // keep each one-ring's winding number (it varies continuously and is an integer), so the
       // optimization stays among immersions; check_immersion() certifies the input and the output.
+      // The full turns of each border fan are kept too (same argument): the input's are measured here
+      // and the output must make the same ones.
       if(holes_ || stats.report.border_simple || stats.report.flipped != 0 || stats.report.degenerate != 0)
         return ERROR_INVALID_EMBEDDING;
-      stats.immersion_report = check_immersion_of_disk(disk_, uvm_, orient_);
+      check_immersion_of_disk(disk_, uvm_, orient_, std::vector<int>(), &border_turns_);
+      stats.immersion_report = check_immersion_of_disk(disk_, uvm_, orient_, border_turns_);
       if(!stats.immersion_report.is_immersion()) return ERROR_INVALID_EMBEDDING;
       stats.immersion = immersion_ = true;
       if(s_.free_border) return ERROR_WRONG_PARAMETER; // a moving border could stop being self-overlapping
@@ -322,7 +325,7 @@ public:
   Immersion_report certify_immersion() const
   {
     const auto vid = vertex_indices();
-    Immersion_report r = check_immersion_of_disk(disk_, current_uv(vid), orient_);
+    Immersion_report r = check_immersion_of_disk(disk_, current_uv(vid), orient_, border_turns_);
     for(std::size_t b : disk_.border)
     {
       const Point_2 q = get(uvm_, disk_.vertices[b]);
@@ -862,6 +865,7 @@ private:
   Indexed_disk<TriangleMesh>& disk_;
   bool holes_ = false;                   // several border loops
   bool immersion_ = false;               // the map is an immersion (border fixed, overlapping itself)
+  std::vector<int> border_turns_;        // an immersion: the input's full turns per border fan, kept
   std::vector<std::size_t> hole_free_;   // free vertices of the hole loops
   std::vector<std::size_t> hole_position_; // per hole vertex: its position in its loop
   std::size_t nv_ = 0, nf_ = 0;

@@ -237,12 +237,23 @@ inline std::pair<double, double> scaled_interval(const CGAL::Gmpq& x, long shift
 // Conservative boxes of points: for each point with `use[i]` (all when `use` is empty), an
 // enclosing interval of each coordinate times 2^shift, for one shift chosen from all the points
 // (a uniform positive scaling keeps every box intersection). Doubles are used as they are
-// (shift 0; they are exact); other number types go through exact rationals.
+// (shift 0; they are exact); other number types go through exact rationals. Bounds at the ends
+// of the double range are moved one ulp inside (see `inside_limits`).
 template <class Point_2>
 struct Conservative_boxes
 {
   typedef typename Point_ft<Point_2>::type FT;
   std::vector<std::array<double, 4> > box; // per point: xmin, xmax, ymin, ymax
+
+  // CGAL::box_intersection_d() splits [-DBL_MAX, DBL_MAX) and loses the boxes that reach DBL_MAX
+  // (or start at -DBL_MAX), so a point there would never be paired. Clamping every bound one ulp
+  // inside is a monotone map of the bounds: it keeps every intersection of boxes, and the pairs it
+  // adds are decided by the exact tests anyway.
+  static double inside_limits(double x)
+  {
+    const double m = std::nextafter((std::numeric_limits<double>::max)(), 0.);
+    return (std::max)(-m, (std::min)(m, x));
+  }
   long shift = 0;
 
   void build(const std::vector<Point_2>& P, const std::vector<char>& use = std::vector<char>())
@@ -255,7 +266,10 @@ struct Conservative_boxes
       shift = 0;
       for(std::size_t i = 0; i < n; ++i)
         if(used(i))
-          box[i] = {{ double(P[i].x()), double(P[i].x()), double(P[i].y()), double(P[i].y()) }};
+        {
+          const double x = inside_limits(double(P[i].x())), y = inside_limits(double(P[i].y()));
+          box[i] = {{ x, x, y, y }};
+        }
     }
     else
     {
@@ -269,7 +283,7 @@ struct Conservative_boxes
       {
         if(!used(i)) continue;
         const std::pair<double, double> ix = scaled_interval(q[k++], shift), iy = scaled_interval(q[k++], shift);
-        box[i] = {{ ix.first, ix.second, iy.first, iy.second }};
+        box[i] = {{ inside_limits(ix.first), inside_limits(ix.second), inside_limits(iy.first), inside_limits(iy.second) }};
       }
     }
   }

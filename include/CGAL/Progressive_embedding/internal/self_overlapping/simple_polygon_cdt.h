@@ -8,10 +8,12 @@
 // The fast path for simple polygons: CGAL's constrained Delaunay triangulation of the polygon's edges,
 // inside faces only. It is also the exact simplicity test (O(n log n) in practice, where a box test
 // is quadratic on long thin edges such as a star's): the polygon is simple iff the triangulation has
-// exactly the n points as vertices (a repeated point merges two, a crossing of two edges adds one) and
-// every polygon edge is an edge of it (a vertex lying on a polygon edge splits it). These decisions
-// use the exact predicates only; the approximate intersection points that a crossing creates (with
-// Exact_predicates_tag) are never used beyond "this polygon is not simple". A triangulation's faces are never flat, so every triangle is strictly positive
+// exactly the n points as vertices (a repeated point merges two), no two edges cross and every polygon
+// edge is an edge of it (a vertex lying on a polygon edge splits it). These decisions use the exact
+// predicates only: a crossing, which would need an intersection point constructed (in double, not
+// even finite for coordinates near the largest double), is refused by the triangulation's
+// No_constraint_intersection_requiring_constructions_tag with an exception, which means "not
+// simple". A triangulation's faces are never flat, so every triangle is strictly positive
 // even along runs of collinear vertices, and a vertex lying on a would-be diagonal simply becomes a
 // vertex of the triangulation; with no interior vertex there are exactly n - 2 inside faces.
 // Predicates: Epick (exact, filtered) for float and double coordinates, which convert exactly; exact
@@ -47,7 +49,8 @@ Cdt_result cdt_triangulate_simple_polygon_in_kernel(const std::vector<typename K
   typedef CGAL::Constrained_triangulation_face_base_2<K>                         Cfb;
   typedef CGAL::Triangulation_face_base_with_info_2<int, K, Cfb>                 Fb; // -1 unvisited, 0 outside, 1 inside
   typedef CGAL::Triangulation_data_structure_2<Vb, Fb>                           Tds;
-  typedef CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag> CDT;
+  typedef CGAL::Constrained_Delaunay_triangulation_2<K, Tds,
+                                                     CGAL::No_constraint_intersection_requiring_constructions_tag> CDT;
 
   const std::size_t n = Q.size();
   triangles.clear();
@@ -59,11 +62,13 @@ Cdt_result cdt_triangulate_simple_polygon_in_kernel(const std::vector<typename K
   if(cdt.number_of_vertices() != n) return Cdt_result::NOT_SIMPLE; // a repeated point
   std::vector<typename CDT::Vertex_handle> vh(n);
   for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) vh[v->info()] = v;
-  for(std::size_t k = 0; k < n; ++k)
+  try
   {
-    cdt.insert_constraint(vh[k], vh[(k + 1) % n]);
-    // stop at the first crossing: a polygon with many crossings would otherwise create as many vertices
-    if(cdt.number_of_vertices() != n) return Cdt_result::NOT_SIMPLE;
+    for(std::size_t k = 0; k < n; ++k) cdt.insert_constraint(vh[k], vh[(k + 1) % n]);
+  }
+  catch(const typename CDT::Intersection_of_constraints_exception&)
+  {
+    return Cdt_result::NOT_SIMPLE; // two edges cross
   }
   for(std::size_t k = 0; k < n; ++k)
     if(!cdt.is_edge(vh[k], vh[(k + 1) % n])) return Cdt_result::NOT_SIMPLE; // a vertex on an edge, or an overlap

@@ -26,6 +26,7 @@
 #include <CGAL/Progressive_embedding/check_immersion.h>
 #include <CGAL/Progressive_embedding/progressive_embedding.h>
 #include <CGAL/Progressive_embedding/optimize_distortion.h>
+#include <CGAL/Progressive_embedding/certified_pipeline.h>
 #include <CGAL/Progressive_embedding/distortion.h>
 #include <CGAL/Progressive_embedding/constrained_embedding.h>
 
@@ -287,16 +288,6 @@ bool run_immersion_check(const Work& w)
   return PE::check_immersion(w.mesh, w.uv).is_immersion();
 }
 
-// the repair, with the parameters of `pe untangle`: before an optimization, faces below 1e-3 times
-// the mean area are collapsed and re-inserted too (the optimizer cannot grow 1e-20-area faces back
-// in a useful number of iterations); without one, the library's default for double
-PE::Error_code run_repair(Work& w, bool will_optimize, PE::Progressive_embedding_statistics& st)
-{
-  Stopwatch s(last_timing.algorithm_seconds);
-  return PE::progressive_embedding(w.mesh, w.uv,
-    PE::parameters::minimum_area_ratio(will_optimize ? 1e-3 : 1e-12, PE::parameters::statistics(&st)));
-}
-
 struct Optimize_settings
 {
   bool free_border = false;
@@ -313,17 +304,17 @@ PE::Error_code run_optimize(Work& w, const Optimize_settings& o, PE::Optimizatio
                                                   .number_of_iterations(o.iterations));
 }
 
-// the optimization that follows a repair (untangle, embed), as in `pe`: a map that cannot be optimized
-// (no free vertex, zero-area 3D faces) keeps its certified repaired map; a budget that runs out keeps
-// the valid, improved map
-void optimize_after_repair(Work& w, const Optimize_settings& o)
+// the library's repair-and-optimize policy (repair_and_optimize(), as `pe untangle` and `pe embed`): the repair
+// if the map is not valid, then the optimization unless optimize=False; a map the optimizer cannot touch keeps
+// its certified map
+void repair_and_optimize(Work& w, bool optimize, const Optimize_settings& o)
 {
-  PE::Optimization_statistics os;
-  const PE::Error_code ec = run_optimize(w, o, os);
-  if(ec == PE::OK || ec == PE::ERROR_BUDGET_EXHAUSTED || ec == PE::ERROR_NO_FREE_VERTEX ||
-     ec == PE::ERROR_DEGENERATE_3D_FACE)
-    return;
-  fail_if(ec, "optimize_distortion after the repair");
+  Stopwatch s(last_timing.algorithm_seconds);
+  PE::Pipeline_statistics ps;
+  const PE::Error_code ec = PE::repair_and_optimize(w.mesh, w.uv,
+    PE::parameters::optimization_policy(optimize ? PE::Optimization_policy::ALWAYS : PE::Optimization_policy::NEVER)
+                   .pipeline_statistics(&ps).convergence_tolerance(o.tolerance).number_of_iterations(o.iterations));
+  fail_if(ec, ps.optimized ? "optimize_distortion after the repair" : "progressive_embedding");
 }
 
 // the settings of an optimization from the Python arguments, checked
@@ -423,9 +414,7 @@ py::array_t<double> py_untangle(const py::object& V, const py::object& F, const 
     Stopwatch s(last_timing.native_seconds);
     Work w(in);
     w.set_uv(u);
-    PE::Progressive_embedding_statistics st;
-    fail_if(run_repair(w, optimize, st), "progressive_embedding");
-    if(optimize) optimize_after_repair(w, o);
+    repair_and_optimize(w, optimize, o);
     out = w.get_uv();
   }
   return uv_array(out);
@@ -446,14 +435,7 @@ py::array_t<double> py_embed(const py::object& V, const py::object& F, const py:
     Work w(in);
     if(b.shape == PE::Border_shape::FIXED) w.set_uv(b.uv);
     fail_if(run_tutte(w, b.shape, wts), "tutte_embedding");
-    const PE::Embedding_report tutte = run_check(w);
-    fail_if(tutte.status, "check_embedding");
-    if(!tutte.is_valid())
-    {
-      PE::Progressive_embedding_statistics st;
-      fail_if(run_repair(w, optimize, st), "progressive_embedding");
-    }
-    if(optimize) optimize_after_repair(w, o);
+    repair_and_optimize(w, optimize, o);
     out = w.get_uv();
   }
   return uv_array(out);

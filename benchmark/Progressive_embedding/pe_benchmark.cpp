@@ -59,7 +59,14 @@ static std::string load_average()
   return (f >> a) ? a : std::string("unknown");
 }
 
-static double median(std::vector<double> v) { std::sort(v.begin(), v.end()); return v.empty() ? 0 : v[v.size() / 2]; }
+// the median: the middle value, or the mean of the two middle ones for an even count
+static double median(std::vector<double> v)
+{
+  if(v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
 
 // runs progressive embedding `repeat` times from the same input map; median time
 static bool optimize = false;

@@ -457,7 +457,12 @@ int main(int argc, char** argv)
       sd.push_back(r.sd_after);
     }
     if(runs == 0) continue;
-    auto median = [](std::vector<double> v) { if(v.empty()) return 0.; std::sort(v.begin(), v.end()); return v[v.size() / 2]; };
+    auto median = [](std::vector<double> v) {
+      if(v.empty()) return 0.;
+      std::sort(v.begin(), v.end());
+      const std::size_t n = v.size();
+      return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]); // the mean of the two middle values for an even count
+    };
     auto top = [](const std::vector<double>& v) { return v.empty() ? 0. : *std::max_element(v.begin(), v.end()); };
     md << "| " << shape << " | " << runs << " | " << added.size() << " | " << good << " | " << fmt(median(added)) << " | "
        << fmt(top(added)) << " | " << fmt(median(seconds)) << " | " << fmt(top(seconds)) << " | " << fmt(median(sd), 4) << " |\n";

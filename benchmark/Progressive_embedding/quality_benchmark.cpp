@@ -162,7 +162,9 @@ int main(int argc, char** argv)
   if(stability)
     md << "- stable (ten times the iterations lower the mean by less than 5%): " << stable << " of " << runs.size() << "\n";
   if(!secs.empty())
-    md << "- optimization time: median " << fmt(secs[secs.size() / 2]) << " s, max " << fmt(secs.back()) << " s\n";
+    md << "- optimization time: median "
+       << fmt(secs.size() % 2 ? secs[secs.size() / 2] : 0.5 * (secs[secs.size() / 2 - 1] + secs[secs.size() / 2]))
+       << " s, max " << fmt(secs.back()) << " s\n";
   md << "\n| mesh | seed | vertices | repaired mean | repaired max | status | iterations | seconds | mean | max |"
      << (stability ? " 10x iterations: mean |" : "") << "\n|---|---|---|---|---|---|---|---|---|---|" << (stability ? "---|" : "") << "\n";
   for(const Run& r : runs)

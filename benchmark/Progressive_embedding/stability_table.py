@@ -61,7 +61,9 @@ def main():
         f.write('- runs: %d; converged (`OK`): %d; improved by less than 5%% by ten times the iterations: %d\n'
                 % (len(keys), ok, stable))
         if imp:
-            f.write('- improvement: median %.2f%%, max %.2f%%\n\n' % (imp[len(imp) // 2], imp[-1]))
+            n = len(imp)  # the true median: the mean of the two middle values for an even count
+            med = imp[n // 2] if n % 2 else 0.5 * (imp[n // 2 - 1] + imp[n // 2])
+            f.write('- improvement: median %.2f%%, max %.2f%%\n\n' % (med, imp[-1]))
         f.write('| mesh | seed | status | iterations | seconds | repaired mean | mean | mean, 10x iterations | improvement % |\n')
         f.write('|---|---|---|---|---|---|---|---|---|\n')
         for k in keys:

@@ -21,6 +21,7 @@
 #include <CGAL/Progressive_embedding/Progressive_embedding_parameterizer_3.h>
 #include <CGAL/Progressive_embedding/distortion.h>
 #include <CGAL/Progressive_embedding/optimize_distortion.h>
+#include <CGAL/Progressive_embedding/certified_pipeline.h>
 #include <CGAL/Progressive_embedding/IO/OBJ_with_uv.h>
 #include <CGAL/Progressive_embedding/IO/SVG.h>
 

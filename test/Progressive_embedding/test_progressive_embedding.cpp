@@ -7,18 +7,22 @@
 // border, a strictly convex border with vertices 2^-40 apart, maps at any scale and far from the origin, and the inputs it must refuse -- in double, Gmpq and Gmpfr, on
 // Surface_mesh and on Polyhedron_3. Every success is checked with an independent certificate
 // and a bit-exact border; the internal working copy must get the input connectivity back.
+// The repair-and-optimize policy (repair_and_optimize(), parameterize_certified()): its stages, its
+// statistics as key-value pairs, its budget and errors.
 //
 // Usage: test_progressive_embedding DATA_DIR   (DATA_DIR contains libcgal-demo's meshes/)
 
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
 #include <CGAL/Progressive_embedding/check_embedding.h>
 #include <CGAL/Progressive_embedding/progressive_embedding.h>
+#include <CGAL/Progressive_embedding/certified_pipeline.h>
 #include "protocols.h" // test fixtures: test/Progressive_embedding/
 
 #include "test_util.h"
 
 #include <cmath>
 #include <limits>
+#include <set>
 #include <sstream>
 
 namespace {
@@ -646,6 +650,102 @@ int test_scale()
   return EXIT_SUCCESS;
 }
 
+// repair_and_optimize() and parameterize_certified() on the broken double Tutte map of the stacked
+// triangulation (depth 40) and on a valid grid map: which stages run under each policy, the certificates,
+// the border kept, the statistics listed once each, the budget and the errors
+template <class Mesh>
+int test_pipeline()
+{
+  typedef PE::Optimization_policy Policy;
+  std::cout << "[" << mesh_name<Mesh>() << "] repair_and_optimize" << std::endl;
+  Mesh m;
+  const auto c = PE::internal::make_stacked_triangulation(40, m);
+  auto uv = make_uv_map(m, Epick::Point_2());
+  auto broken = [&]() {
+    pin_corners<Epick>(uv, c);
+    CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uv, PE::parameters::border_shape(PE::Border_shape::FIXED)) == PE::OK, "Tutte");
+    return EXIT_SUCCESS;
+  };
+  for(Policy policy : { Policy::NEVER, Policy::WHEN_REPAIRED, Policy::ALWAYS })
+  {
+    RUN(broken());
+    std::map<vertex_descriptor<Mesh>, Epick::Point_2> before;
+    for(auto v : vertices(m)) before[v] = get(uv, v);
+    PE::Pipeline_statistics ps;
+    const PE::Error_code ec = PE::repair_and_optimize(m, uv, PE::parameters::optimization_policy(policy).pipeline_statistics(&ps));
+    std::cout << "  broken map, policy " << int(policy) << ": " << PE::get_error_name(ec) << ", repaired " << ps.repaired
+              << ", optimized " << ps.optimized << ", " << ps.report.summary() << std::endl;
+    CHECK(ec == PE::OK && !ps.input_report.is_valid() && ps.repaired && ps.repair.collapses > 0, "the broken map is repaired");
+    CHECK(ps.optimized == (policy != Policy::NEVER), "optimized as the policy says");
+    CHECK(ps.report.is_valid() && PE::check_embedding(m, uv).is_valid(), "certified, and the map left in uv is");
+    for(auto v : vertices(m))
+      if(CGAL::is_border(v, m)) CHECK(get(uv, v) == before[v], "border bit-exact");
+    if(ps.optimized)
+      CHECK(ps.optimization_status == PE::OK && ps.optimization.energy_after < ps.optimization.energy_before,
+            "the optimization lowers the energy");
+    // every statistic once, with the keys pe prints
+    std::set<std::string> keys;
+    std::size_t n = 0;
+    PE::for_each_statistic(ps, [&](const char* key, const auto&) { keys.insert(key); ++n; });
+    CHECK(n == 15 && keys.size() == n && keys.count("collapses") && keys.count("energy_after") && keys.count("optimization_status"),
+          "15 statistics, each once");
+  }
+  // a valid map: nothing to repair; optimized only with ALWAYS, unchanged otherwise
+  {
+    Mesh g;
+    PE::internal::make_grid_disk(12, g);
+    auto uvg = make_uv_map(g, Epick::Point_2());
+    CHECK(PE::tutte_embedding(g, null_h<Mesh>(), uvg, PE::parameters::border_shape(PE::Border_shape::CIRCLE)) == PE::OK, "grid");
+    std::map<vertex_descriptor<Mesh>, Epick::Point_2> before;
+    for(auto v : vertices(g)) before[v] = get(uvg, v);
+    PE::Pipeline_statistics ps;
+    CHECK(PE::repair_and_optimize(g, uvg, PE::parameters::pipeline_statistics(&ps)) == PE::OK && !ps.repaired && !ps.optimized,
+          "a valid map is neither repaired nor optimized by default");
+    bool same = true;
+    for(auto v : vertices(g)) same = same && get(uvg, v) == before[v];
+    CHECK(same, "and left bit-exactly as it was");
+    CHECK(PE::repair_and_optimize(g, uvg, PE::parameters::pipeline_statistics(&ps).optimization_policy(Policy::ALWAYS)) == PE::OK
+          && !ps.repaired && ps.optimized && ps.report.is_valid(), "ALWAYS optimizes a valid map");
+  }
+  // parameterize_certified: Tutte, then the policy
+  {
+    PE::Pipeline_statistics ps;
+    pin_corners<Epick>(uv, c);
+    const PE::Error_code ec = PE::parameterize_certified(m, null_h<Mesh>(), uv,
+                                PE::parameters::border_shape(PE::Border_shape::FIXED).pipeline_statistics(&ps));
+    CHECK(ec == PE::OK && !ps.input_report.is_valid() && ps.repaired && ps.optimized && ps.report.is_valid()
+          && ps.seconds_tutte > 0 && ps.seconds_total >= ps.seconds_tutte, "parameterize_certified: Tutte, repair, optimization");
+  }
+  // budget and errors: the uv map unchanged
+  {
+    RUN(broken());
+    std::map<vertex_descriptor<Mesh>, Epick::Point_2> before;
+    for(auto v : vertices(m)) before[v] = get(uv, v);
+    CHECK(PE::repair_and_optimize(m, uv, CGAL::parameters::maximum_running_time(0.)) == PE::ERROR_BUDGET_EXHAUSTED,
+          "no time: ERROR_BUDGET_EXHAUSTED");
+    CHECK(PE::repair_and_optimize(m, uv, CGAL::parameters::maximum_running_time(-1.)) == PE::ERROR_WRONG_PARAMETER,
+          "a negative budget: ERROR_WRONG_PARAMETER");
+    bool same = true;
+    for(auto v : vertices(m)) same = same && get(uv, v) == before[v];
+    CHECK(same, "the uv map unchanged on error");
+    Mesh closed;
+    CGAL::make_tetrahedron(Epick::Point_3(0, 0, 0), Epick::Point_3(1, 0, 0), Epick::Point_3(0, 1, 0), Epick::Point_3(0, 0, 1), closed);
+    auto uvc = make_uv_map(closed, Epick::Point_2());
+    CHECK(PE::repair_and_optimize(closed, uvc) == PE::ERROR_NOT_A_DISK, "a closed mesh: ERROR_NOT_A_DISK");
+    CHECK(PE::parameterize_certified(closed, null_h<Mesh>(), uvc) == PE::ERROR_NOT_A_DISK, "parameterize_certified too");
+  }
+  // exact rationals: the broken map converted exactly, repaired exactly (no optimization: it runs in double)
+  {
+    RUN(broken());
+    auto uvq = make_uv_map(m, Kq::Point_2());
+    convert_uv(m, uv, uvq);
+    PE::Pipeline_statistics ps;
+    CHECK(PE::repair_and_optimize(m, uvq, PE::parameters::optimization_policy(Policy::NEVER).pipeline_statistics(&ps)) == PE::OK
+          && ps.repaired && ps.report.is_valid() && PE::check_embedding(m, uvq).is_valid(), "Gmpq: repaired and certified");
+  }
+  return EXIT_SUCCESS;
+}
+
 // one group of tests on one mesh type
 template <class Mesh>
 int run_group(const std::string& group, const std::string& data)
@@ -658,6 +758,7 @@ int run_group(const std::string& group, const std::string& data)
   if(group == "man") return test_corpus<Mesh>(data, "man.off", 35);
   if(group == "scale") return test_scale<Mesh>();
   if(group == "restoration") return test_restoration<Mesh>(data);
+  if(group == "pipeline") return test_pipeline<Mesh>();
   std::cerr << "unknown group " << group << std::endl;
   return EXIT_FAILURE;
 }
@@ -665,7 +766,7 @@ int run_group(const std::string& group, const std::string& data)
 } // namespace
 
 // Usage: test_progressive_embedding DATA_DIR [GROUP [surface_mesh|polyhedron]]
-// GROUP: stacked, random_init, special, refused, bull, man, scale, restoration (default: all, on both mesh types)
+// GROUP: stacked, random_init, special, refused, bull, man, scale, restoration, pipeline (default: all, on both mesh types)
 int main(int argc, char** argv)
 {
   if(argc < 2)
@@ -675,7 +776,8 @@ int main(int argc, char** argv)
   }
   const std::string data = argv[1];
   const std::string group = (argc > 2) ? argv[2] : "all", mesh = (argc > 3) ? argv[3] : "all";
-  const std::vector<std::string> groups = { "stacked", "random_init", "special", "refused", "bull", "man", "scale", "restoration" };
+  const std::vector<std::string> groups = { "stacked", "random_init", "special", "refused", "bull", "man", "scale", "restoration",
+                                          "pipeline" };
   bool ran = false;
   for(const std::string& g : groups)
   {

@@ -12,6 +12,8 @@
 #include <CGAL/Progressive_embedding/check_embedding.h>
 #include <CGAL/Progressive_embedding/progressive_embedding.h>
 #include <CGAL/Progressive_embedding/optimize_distortion.h>
+#include <CGAL/Progressive_embedding/check_immersion.h>
+#include <CGAL/Progressive_embedding/certified_pipeline.h>
 #include <CGAL/Progressive_embedding/IO/OBJ_with_uv.h>
 #include "protocols.h" // test fixtures: test/Progressive_embedding/
 
@@ -679,6 +681,27 @@ int test_traits()
             << ", measure_distortion " << Counting_traits::calls << std::endl;
   CHECK(tutte_calls >= 20 && check_calls >= count_faces(m) && Counting_traits::calls >= count_faces(m), "the given traits decide the signs");
   CHECK(r.is_valid() && d.status == PE::OK && d.max_symmetric_dirichlet == r.distortion.max_symmetric_dirichlet, "same report");
+  Counting_traits::calls = 0;
+  CHECK(PE::check_immersion(m, uvq, CGAL::parameters::geom_traits(Counting_traits())).is_immersion(), "an immersion");
+  CHECK(Counting_traits::calls >= count_faces(m), "check_immersion takes the given traits");
+  // a broken map (one interior vertex thrown out of the border): the repair, alone and in the pipeline
+  auto broken = make_uv_map(m, Kq::Point_2());
+  for(auto v : vertices(m)) put(broken, v, get(uvq, v));
+  for(auto v : vertices(m)) if(!CGAL::is_border(v, m)) { put(broken, v, Kq::Point_2(10, 10)); break; }
+  auto repaired = make_uv_map(m, Kq::Point_2());
+  for(auto v : vertices(m)) put(repaired, v, get(broken, v));
+  Counting_traits::calls = 0;
+  CHECK(PE::progressive_embedding(m, repaired, CGAL::parameters::geom_traits(Counting_traits())) == PE::OK, "repaired");
+  const std::size_t repair_calls = Counting_traits::calls;
+  for(auto v : vertices(m)) put(repaired, v, get(broken, v));
+  Counting_traits::calls = 0;
+  PE::Pipeline_statistics ps;
+  CHECK(PE::repair_and_optimize(m, repaired, PE::parameters::optimization_policy(PE::Optimization_policy::NEVER)
+                                               .pipeline_statistics(&ps).geom_traits(Counting_traits())) == PE::OK
+        && ps.repaired && ps.report.is_valid(), "repaired by the pipeline");
+  std::cout << "  orientation calls: progressive_embedding " << repair_calls << ", repair_and_optimize " << Counting_traits::calls
+            << std::endl;
+  CHECK(repair_calls > 2 * count_faces(m) && Counting_traits::calls > repair_calls, "the repair and the pipeline take the given traits");
   return EXIT_SUCCESS;
 }
 

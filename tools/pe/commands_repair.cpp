@@ -3,24 +3,18 @@
 // Author(s) : Progressive_embedding contributors
 
 // `pe untangle`, `pe embed`, `pe optimize`, and the repair and optimization steps of the other
-// commands: the only file that instantiates progressive_embedding() and optimize_distortion().
+// commands: the only file that instantiates progressive_embedding() and optimize_distortion(). The
+// repair-and-optimize policy is the library's (repair_and_optimize()), not written here.
 
 #include "pe.h"
 
-#include <CGAL/Progressive_embedding/progressive_embedding.h>
-#include <CGAL/Progressive_embedding/optimize_distortion.h>
+#include <CGAL/Progressive_embedding/certified_pipeline.h>
 
 #include <iostream>
 
 namespace pe_tool {
 
 namespace {
-
-// The one place where the repair parameters are chosen. Before an optimization, the repair
-// also collapses and re-inserts the faces below 1e-3 x the mean area: the optimizer cannot grow
-// faces 1e-20 times too small back in a useful number of iterations. Without an optimization,
-// the library's default for double (1e-12).
-double repair_minimum_area_ratio(bool will_optimize) { return will_optimize ? 1e-3 : 1e-12; }
 
 // The optimizer's default convergence tolerance; passed explicitly so that the optimizer is
 // instantiated once, with or without --tolerance.
@@ -41,7 +35,7 @@ PE::Error_code run_repair(Input& in, bool will_optimize, const Budget& budget, P
 {
   Progress bar("progressive embedding", budget.progress());
   return PE::progressive_embedding(in.mesh, in.uv,
-    PE::parameters::minimum_area_ratio(repair_minimum_area_ratio(will_optimize),
+    PE::parameters::minimum_area_ratio(PE::internal::pipeline_minimum_area_ratio(will_optimize, false),
     PE::parameters::statistics(&st,
     CGAL::parameters::callback(bar.callback()).maximum_running_time(budget.remaining()))));
 }
@@ -58,16 +52,17 @@ PE::Error_code run_optimize(Input& in, const Optimize_settings& s, const Budget&
                      .maximum_running_time(budget.remaining()))))));
 }
 
-void add_statistics(Result& r, const PE::Progressive_embedding_statistics& st)
+namespace {
+// the library's key-value list of a statistics structure, into the result
+struct Add_to_result
 {
-  r.add("invalid_before", st.invalid_faces_before);
-  r.add("collapses", st.collapses);
-  r.add("insertions", st.insertions);
-  r.add("extra_smoothing", st.insertions_with_extra_smoothing);
-  r.add("expansion_rounds", st.expansion_rounds);
-  r.add("seconds_collapse", st.seconds_collapse);
-  r.add("seconds_insertion", st.seconds_insertion);
-}
+  Result& r;
+  template <class T> void operator()(const char* key, const T& value) const { r.add(key, value); }
+};
+} // namespace
+
+void add_statistics(Result& r, const PE::Pipeline_statistics& s) { PE::for_each_statistic(s, Add_to_result{ r }); }
+void add_statistics(Result& r, const PE::Progressive_embedding_statistics& st) { PE::for_each_statistic(st, Add_to_result{ r }); }
 
 std::string statistics_summary(const PE::Progressive_embedding_statistics& st)
 {
@@ -77,14 +72,7 @@ std::string statistics_summary(const PE::Progressive_embedding_statistics& st)
   return s.str();
 }
 
-void add_optimization(Result& r, const PE::Optimization_statistics& os)
-{
-  r.add("iterations", os.iterations);
-  r.add("converged", os.converged);
-  r.add("energy_before", os.energy_before);
-  r.add("energy_after", os.energy_after);
-  r.add("seconds_optimization", os.seconds);
-}
+void add_optimization(Result& r, const PE::Optimization_statistics& os) { PE::for_each_statistic(os, Add_to_result{ r }); }
 
 std::string optimization_summary(const PE::Optimization_statistics& os)
 {
@@ -94,39 +82,38 @@ std::string optimization_summary(const PE::Optimization_statistics& os)
 
 namespace {
 
-// The default optimization after a repair (untangle, embed). A mesh that cannot be optimized
-// (no free vertex, zero-area 3D faces) keeps its repaired map: said on stderr, not an error here
-// (map_status() reports the distortion that is not finite). Returns OK or the error to report.
-PE::Error_code optimize_after_repair(Run& run, Input& in, const Budget& budget, PE::Optimization_statistics& os)
+// The common end of untangle and embed: repair_and_optimize() (the optimization unless --no-optimize),
+// then the output
+int repair_optimize_and_finish(Run& run, Input& in, const Arguments& a, const Budget& budget)
 {
-  const PE::Error_code eo = run_optimize(in, optimize_settings(run.args, 1000), budget, os);
-  if(eo == PE::OK || eo == PE::ERROR_BUDGET_EXHAUSTED) // budget: the map is valid and improved
+  const bool optimize = !a.has("--no-optimize");
+  const Optimize_settings o = optimize_settings(a, 1000);
+  PE::Pipeline_statistics ps;
+  Progress bar("progressive embedding", budget.progress());
+  const std::function<bool(PE::Pipeline_stage, double)> stage = [&bar](PE::Pipeline_stage st, double f) {
+    bar.set_label(st == PE::Pipeline_stage::REPAIR ? "progressive embedding" : "optimization");
+    return bar.update(f);
+  };
+  const PE::Error_code ec = PE::repair_and_optimize(in.mesh, in.uv,
+    PE::parameters::optimization_policy(optimize ? PE::Optimization_policy::ALWAYS : PE::Optimization_policy::NEVER,
+    PE::parameters::pipeline_statistics(&ps,
+    PE::parameters::stage_callback(stage,
+    PE::parameters::convergence_tolerance(o.tolerance,
+    CGAL::parameters::number_of_iterations(o.iterations).maximum_running_time(budget.remaining()))))));
+  bar.finish();
+  add_statistics(run.result, ps);
+  if(ps.repaired) run.summary << ", progressive embedding: " << statistics_summary(ps.repair);
+  if(ec != PE::OK)
   {
-    run.result.add("optimized", true);
-    add_optimization(run.result, os);
-    return PE::OK;
+    run.summary << "; ";
+    return run.fail(ec, (ps.optimized ? "optimization failed on '" : "progressive embedding failed on '") + in.filename + "'");
   }
-  run.result.add("optimized", false);
-  if(eo == PE::ERROR_NO_FREE_VERTEX || eo == PE::ERROR_DEGENERATE_3D_FACE)
-  {
-    std::cerr << "pe: optimization skipped: " << PE::get_error_message(eo) << " (" << PE::get_error_name(eo) << ")" << std::endl;
-    run.result.add("optimization_status", PE::get_error_name(eo));
-    return PE::OK;
-  }
-  return eo;
-}
-
-// The common end of untangle and embed: the optimization (unless --no-optimize), then the output.
-int optimize_and_finish(Run& run, Input& in, const Arguments& a, const Budget& budget, bool optimize)
-{
-  PE::Optimization_statistics os;
-  run.result.add("optimized", false);
-  if(optimize)
-  {
-    const PE::Error_code ec = optimize_after_repair(run, in, budget, os);
-    if(ec != PE::OK) { run.summary << "; "; return run.fail(ec, "optimization failed on '" + in.filename + "'"); }
-    if(os.iterations) run.summary << ", optimization: " << optimization_summary(os);
-  }
+  if(ps.optimized && ps.optimization_status != PE::OK && ps.optimization_status != PE::ERROR_BUDGET_EXHAUSTED)
+    std::cerr << "pe: optimization skipped: " << PE::get_error_message(ps.optimization_status) << " ("
+              << PE::get_error_name(ps.optimization_status) << ")" << std::endl;
+  // a map the optimizer could not touch keeps its repaired map: optimized says whether it improved it
+  run.result.add("optimized", ps.optimized && (ps.optimization_status == PE::OK || ps.optimization_status == PE::ERROR_BUDGET_EXHAUSTED));
+  if(ps.optimized && ps.optimization.iterations) run.summary << ", optimization: " << optimization_summary(ps.optimization);
   run.result.add("status", "OK");
   run.result.add("seconds", run.timer.seconds());
   run.summary << ", " << seconds_string(run.timer.seconds()) << "; ";
@@ -143,14 +130,9 @@ int cmd_untangle(const Arguments& a)
   const int status = read_input(run, a.positional[0], in, Uv_mode::REQUIRED);
   if(status != EXIT_VALID) return status;
   run.result.add("output", a.positional[1]);
-  const bool optimize = !a.has("--no-optimize");
   Budget budget(a);
-  PE::Progressive_embedding_statistics st;
-  PE::Error_code ec = run_repair(in, optimize, budget, st);
-  add_statistics(run.result, st);
-  run.summary << "faces " << count_faces(in.mesh) << ", " << statistics_summary(st);
-  if(ec != PE::OK) { run.summary << "; "; return run.fail(ec, "progressive embedding failed on '" + in.filename + "'"); }
-  return optimize_and_finish(run, in, a, budget, optimize);
+  run.summary << "faces " << count_faces(in.mesh);
+  return repair_optimize_and_finish(run, in, a, budget);
 }
 
 int cmd_embed(const Arguments& a)
@@ -164,28 +146,17 @@ int cmd_embed(const Arguments& a)
   status = tutte_settings(run, in, s);
   if(status != EXIT_VALID) return status;
   run.result.add("output", a.positional[1]);
-  const bool optimize = !a.has("--no-optimize");
   Budget budget(a);
   PE::Embedding_report unused;
   PE::Error_code ec = run_tutte(in, s, budget, unused);
   if(ec != PE::OK) return run.fail(ec, "Tutte failed on '" + in.filename + "'");
   const PE::Embedding_report tutte_report = certify(in).report;
-  const bool repaired = !tutte_report.is_valid();
   run.result.add("tutte_valid", tutte_report.is_valid());
   run.result.add("tutte_flipped", tutte_report.flipped);
   run.result.add("tutte_degenerate", tutte_report.degenerate);
-  run.result.add("repaired", repaired);
   run.summary << "faces " << count_faces(in.mesh) << ", Tutte " << (tutte_report.is_valid() ? "valid" : "INVALID")
               << " (flipped " << tutte_report.flipped << ", degenerate " << tutte_report.degenerate << ")";
-  if(repaired)
-  {
-    PE::Progressive_embedding_statistics st;
-    ec = run_repair(in, optimize, budget, st);
-    add_statistics(run.result, st);
-    run.summary << ", progressive embedding: " << statistics_summary(st);
-    if(ec != PE::OK) { run.summary << "; "; return run.fail(ec, "progressive embedding failed on '" + in.filename + "'"); }
-  }
-  return optimize_and_finish(run, in, a, budget, optimize);
+  return repair_optimize_and_finish(run, in, a, budget);
 }
 
 int cmd_optimize(const Arguments& a)

@@ -22,6 +22,7 @@ namespace CGAL {
 namespace Progressive_embedding {
 struct Progressive_embedding_statistics;
 struct Optimization_statistics;
+struct Pipeline_statistics;
 }
 }
 
@@ -153,6 +154,7 @@ PE::Error_code run_repair(Input& in, bool will_optimize, const Budget& budget, P
 // distortion optimization of the valid map in.uv
 PE::Error_code run_optimize(Input& in, const Optimize_settings& s, const Budget& budget, PE::Optimization_statistics& os);
 void add_statistics(Result& r, const PE::Progressive_embedding_statistics& st);
+void add_statistics(Result& r, const PE::Pipeline_statistics& s);
 std::string statistics_summary(const PE::Progressive_embedding_statistics& st);
 void add_optimization(Result& r, const PE::Optimization_statistics& os);
 std::string optimization_summary(const PE::Optimization_statistics& os);

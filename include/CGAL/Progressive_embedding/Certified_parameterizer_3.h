@@ -13,6 +13,7 @@
 #include <CGAL/Progressive_embedding/check_embedding.h>
 #include <CGAL/Progressive_embedding/progressive_embedding.h>
 #include <CGAL/Progressive_embedding/optimize_distortion.h>
+#include <CGAL/Progressive_embedding/certified_pipeline.h>
 #include <CGAL/Progressive_embedding/Progressive_embedding_statistics.h>
 #include <CGAL/Progressive_embedding/internal/constrained/holes.h>
 
@@ -186,35 +187,56 @@ public:
     }
 
     const bool holes = s.border_cycles > 1;
-    s.input_report = check_embedding(copy, cuv, parameters::multiply_connected(holes));
-    s.stats.report = s.input_report;
-    if(s.input_report.status != OK) { s.error = s.input_report.status; return SMP::ERROR_NO_TOPOLOGICAL_DISC; }
-    if(!s.input_report.is_valid())
+    const bool optimize_always = m_optimization == Optimization::ALWAYS;
+    if(!holes)
     {
-      s.repaired = true;
-      Error_code ec = OK;
-      if(holes)
+      // a disk: the package's repair-and-optimize policy (repair_and_optimize()), the wrapped parameterizer's
+      // border kept; an optimization that fails leaves the certified repaired map, which is returned
+      Pipeline_statistics ps;
+      const Optimization_policy policy = optimize_always ? Optimization_policy::ALWAYS
+                                       : m_optimization == Optimization::NEVER ? Optimization_policy::NEVER
+                                                                               : Optimization_policy::WHEN_REPAIRED;
+      const Error_code ec = repair_and_optimize(copy, cuv, parameters::optimization_policy(policy).pipeline_statistics(&ps));
+      s.input_report = ps.input_report;
+      if(ps.repaired) s.stats = ps.repair;
+      else s.stats.report = ps.input_report;
+      s.repaired = ps.repaired;
+      s.optimized = ps.optimized;
+      s.optimization = ps.optimization;
+      if(ps.input_report.status != OK) { s.error = ps.input_report.status; return SMP::ERROR_NO_TOPOLOGICAL_DISC; }
+      if(ec != OK && !(ps.optimized && ps.report.is_valid()))
       {
-        // the holes closed by fans, a disk map with the outer border kept, the fans removed (see the class)
-        if(!is_border(bhd, mesh)) bhd = opposite(bhd, mesh);
-        const auto outer = halfedge(to_copy[source(bhd, mesh)], to_copy[target(bhd, mesh)], copy);
-        CGAL_assertion(outer.second && is_border(outer.first, copy));
-        ec = internal::embed_with_holes(copy, outer.first, cuv, parameters::border_shape(Border_shape::FIXED),
-                                        &s.stats.report);
-      }
-      else // the border computed by the wrapped parameterizer is kept; only the interior moves
-        ec = progressive_embedding(copy, cuv, parameters::statistics(&s.stats));
-      if(ec != OK || !s.stats.report.is_valid())
-      {
-        s.error = (ec != OK ? ec : ERROR_INVALID_EMBEDDING);
+        s.error = ec;
         return SMP::ERROR_NO_1_TO_1_MAPPING; // the uv map keeps the wrapped parameterizer's map
       }
     }
-    if(m_optimization == Optimization::ALWAYS || (s.repaired && m_optimization == Optimization::WHEN_REPAIRED))
+    else
     {
-      // any outcome leaves a certified map: the optimizer writes only certified maps
-      optimize_distortion(copy, cuv, parameters::optimization_statistics(&s.optimization));
-      s.optimized = true;
+      // holes: the same policy on a multiply connected map (repair_and_optimize() takes disks)
+      s.input_report = check_embedding(copy, cuv, parameters::multiply_connected(true));
+      s.stats.report = s.input_report;
+      if(s.input_report.status != OK) { s.error = s.input_report.status; return SMP::ERROR_NO_TOPOLOGICAL_DISC; }
+      if(!s.input_report.is_valid())
+      {
+        // the holes closed by fans, a disk map with the outer border kept, the fans removed (see the class)
+        s.repaired = true;
+        if(!is_border(bhd, mesh)) bhd = opposite(bhd, mesh);
+        const auto outer = halfedge(to_copy[source(bhd, mesh)], to_copy[target(bhd, mesh)], copy);
+        CGAL_assertion(outer.second && is_border(outer.first, copy));
+        const Error_code ec = internal::embed_with_holes(copy, outer.first, cuv, parameters::border_shape(Border_shape::FIXED),
+                                                         &s.stats.report);
+        if(ec != OK || !s.stats.report.is_valid())
+        {
+          s.error = (ec != OK ? ec : ERROR_INVALID_EMBEDDING);
+          return SMP::ERROR_NO_1_TO_1_MAPPING; // the uv map keeps the wrapped parameterizer's map
+        }
+      }
+      if(optimize_always || (s.repaired && m_optimization == Optimization::WHEN_REPAIRED))
+      {
+        // any outcome leaves a certified map: the optimizer writes only certified maps
+        optimize_distortion(copy, cuv, parameters::optimization_statistics(&s.optimization));
+        s.optimized = true;
+      }
     }
     if(s.repaired || s.optimized)
       for(vertex_descriptor v : originals) put(uvmap, v, get(cuv, to_copy[v]));

@@ -13,6 +13,7 @@
 #include <CGAL/Progressive_embedding/check_embedding.h>
 #include <CGAL/Progressive_embedding/progressive_embedding.h>
 #include <CGAL/Progressive_embedding/optimize_distortion.h>
+#include <CGAL/Progressive_embedding/certified_pipeline.h>
 #include <CGAL/Progressive_embedding/Certified_parameterizer_3.h>
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
@@ -117,23 +118,26 @@ public:
     if(ec == ERROR_EMPTY_MESH) return SMP::ERROR_EMPTY_MESH;
     if(ec != OK) return SMP::ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
     for(auto v : vertices(mesh)) put(vpmap, v, true);
-    m_stats.report = check_embedding(mesh, uvmap);
-    if(!m_stats.report.is_valid())
-    {
-      m_repaired = true;
-      ec = progressive_embedding(mesh, uvmap, parameters::statistics(&m_stats));
-      if(ec != OK || !m_stats.report.is_valid()) return SMP::ERROR_NO_1_TO_1_MAPPING;
-    }
-    if(m_optimization == Optimization::ALWAYS || (m_repaired && m_optimization == Optimization::WHEN_REPAIRED))
-    {
-      // any outcome leaves a valid map: the optimizer writes only certified maps
-      optimize_distortion(mesh, uvmap, parameters::optimization_statistics(&m_state->optimization));
-      m_state->optimized = true;
-    }
+    // the package's repair-and-optimize policy (repair_and_optimize()); an optimization that fails leaves the
+    // certified repaired map, which is returned
+    Pipeline_statistics ps;
+    ec = repair_and_optimize(mesh, uvmap, parameters::optimization_policy(policy(m_optimization)).pipeline_statistics(&ps));
+    m_repaired = ps.repaired;
+    if(ps.repaired) m_stats = ps.repair;
+    else m_stats.report = ps.input_report;
+    m_state->optimized = ps.optimized;
+    m_state->optimization = ps.optimization;
+    if(ec != OK && !(ps.optimized && ps.report.is_valid())) return SMP::ERROR_NO_1_TO_1_MAPPING;
     return SMP::OK;
   }
 
 private:
+  static Optimization_policy policy(Optimization o)
+  {
+    return o == Optimization::NEVER ? Optimization_policy::NEVER
+         : o == Optimization::ALWAYS ? Optimization_policy::ALWAYS : Optimization_policy::WHEN_REPAIRED;
+  }
+
   // several components or holes: the component of bhd, through Certified_parameterizer_3 around CGAL's
   // barycentric mapping (which reads the mesh only: the non-const reference is CGAL's signature)
   template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap>

@@ -58,6 +58,7 @@
 #include <CGAL/Progressive_embedding/internal/constrained/refinement.h>
 #include <CGAL/Progressive_embedding/internal/constrained/holes.h>
 #include <CGAL/Progressive_embedding/internal/constrained/coarsen.h>
+#include <CGAL/Progressive_embedding/internal/constrained/tracer_budgets.h>
 
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -872,18 +873,16 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
     const std::size_t unset = std::size_t(-1);
     const std::size_t user_max = choose_parameter(get_parameter(np, internal_np::maximum_steiner_vertices), unset);
     const std::size_t ne = static_cast<std::size_t>(num_edges(work));
-    // the shortest paths won with at most 1.35 times the mesh's vertices added (measured: 67 polygon
-    // maps, 60 runs with 50 jittered or random targets), so they stop at twice: when they run out, the
-    // time spent on them is lost (with 50 random targets on 20k-vertex meshes, 0.2 to 0.5 s)
-    const std::size_t first_max = user_max != unset ? user_max : 2 * static_cast<std::size_t>(num_vertices(work)) + 1000;
-    const std::size_t guided_max = user_max != unset ? user_max : 32 * ne + 10000;
+    // the default budgets of each tracing: internal/constrained/tracer_budgets.h
+    const std::size_t first_max = user_max != unset ? user_max : internal::first_tracing_budget.of(static_cast<std::size_t>(num_vertices(work)));
+    const std::size_t guided_max = user_max != unset ? user_max : internal::guided_tracing_budget.of(ne);
     const Work before_tracing = work;
     ec = internal::trace_paths(work, wvpm, nodes, partition.edges, partition.rotation, paths, steiner,
                                parameters::maximum_steiner_vertices(first_max).maximum_running_time(remaining()));
     if(verbose)
       std::cerr << "[constrained_embedding] shortest-path tracing: " << get_error_message(ec) << ", "
                 << steiner.size() << " Steiner vertices, " << timer.time() - t_tracing << " s" << std::endl;
-    const std::size_t many = num_vertices(before_tracing) / 10 + 10;
+    const std::size_t many = num_vertices(before_tracing) / internal::retrace_above_fraction + 10;
     if((ec == ERROR_BUDGET_EXHAUSTED || (ec == OK && steiner.size() > many)) && remaining() > 0)
     {
       // the best result so far (kept in `best_*` while a guided tracing runs on `work`)
@@ -908,7 +907,7 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
         wvpm = get(CGAL::vertex_point, work);
         paths.clear();
         steiner.clear();
-        const std::size_t max_o = have_best ? best_steiner.size() - 1 : (user_max != unset ? user_max : 128 * ne + 10000);
+        const std::size_t max_o = have_best ? best_steiner.size() - 1 : (user_max != unset ? user_max : internal::overlay_tracing_budget.of(ne));
         t_overlay_start = timer.time();
         ec = internal::trace_paths_overlay(work, wvpm, nodes, partition.edges, partition.rotation, paths, steiner,
                                            parameters::maximum_steiner_vertices(max_o).maximum_running_time(remaining()));
@@ -926,7 +925,7 @@ Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constr
       // (where it had added 1.0 to 1.8 times the vertices), once in 18 runs with 50 jittered targets
       // (0.85 times), never in 30 with 50 random targets (10 to 36 times), where they cost 1 to 2.7 s
       // per run on the 20k-vertex meshes.
-      const bool guided_after_overlay = best_steiner.size() <= 4 * num_vertices(before_tracing);
+      const bool guided_after_overlay = best_steiner.size() <= internal::guided_after_overlay_factor * num_vertices(before_tracing);
       const double guided_seconds = stats.overlay_tracing_kept ? (std::max)(1., 0.25 * (timer.time() - t_overlay_start)) : -1;
       struct Guided_variant { double disk_factor; bool interior_first; };
       const Guided_variant variants[] = { { 0., false }, { 1., true } };

@@ -70,7 +70,9 @@ namespace Progressive_embedding {
 /// it was; the output is written only once it is certified.
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`: with the latter (TBB linked, floating-point uv),
-///         the per-vertex sweeps move the vertices of each colour of a greedy colouring in parallel
+///         the per-vertex sweeps move the vertices of each colour of a greedy colouring in parallel. The sequential
+///         sweeps visit the same colour classes in the same order, and the vertices of a class share no face, so the
+///         result is the sequential one bit for bit (tested)
 /// \tparam TriangleMesh a model of `FaceGraph`
 /// \tparam VertexUVMap a model of `ReadWritePropertyMap` with `Point_2` values
 /// \tparam NamedParameters a sequence of named parameters

@@ -82,6 +82,9 @@ enum class Weights
   X(vertex_rotation_index_map) \
   X(coarsen) \
   X(optimization_time_limit) \
+  X(optimization_policy) \
+  X(pipeline_statistics) \
+  X(stage_callback) \
 
 namespace internal_np {
 #define CGAL_PE_ADD_NAMED_PARAMETER(NAME) enum NAME##_t { NAME };
@@ -274,6 +277,17 @@ template <typename T> unspecified_type coarsen(const T& t);
 /// seconds that the optimization of `constrained_embedding()` may take (`double`; default: what is left of
 /// `maximum_running_time`)
 template <typename T> unspecified_type optimization_time_limit(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// when `repair_and_optimize()` and `parameterize_certified()` run the optimization (an `Optimization_policy`;
+/// default `Optimization_policy::WHEN_REPAIRED`)
+template <typename T> unspecified_type optimization_policy(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// receives what `repair_and_optimize()` and `parameterize_certified()` did (a `Pipeline_statistics*`; default none)
+template <typename T> unspecified_type pipeline_statistics(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// called by `repair_and_optimize()` with the stage and its progress in [0, 1]; `false` stops the call
+/// (`std::function<bool(Pipeline_stage, double)>`; default none)
+template <typename T> unspecified_type stage_callback(const T& t);
 #endif
 
 } // namespace parameters

@@ -182,6 +182,12 @@ Error_code repair_disk_map(const Indexed_disk<TriangleMesh>& disk, const std::ve
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
 /// \cgalNamedParamsBegin
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{the traits class whose exact predicates decide every sign of the repair and of its
+///                           final certificate}
+///     \cgalParamType{a model of `ProgressiveEmbeddingTraits_2` whose `Point_2` is the uv map's value type}
+///     \cgalParamDefault{`Progressive_embedding_traits_2<K>`, `K` the kernel of the uv map's point type}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{invalid_energy_threshold}
 ///     \cgalParamDescription{faces whose symmetric Dirichlet energy against an equilateral triangle of the mean area exceeds it are invalid
 ///       (for a face on an edge between two border vertices shorter than that triangle's side, the threshold is divided by
@@ -264,7 +270,7 @@ Error_code progressive_embedding(const TriangleMesh& tm, VertexUVMap uvm,
   using CGAL::parameters::get_parameter;
   typedef boost::graph_traits<TriangleMesh>                                GT;
   typedef typename internal::Uv_map_types<VertexUVMap>::Point_2           Point_2;
-  typedef typename internal::Uv_map_types<VertexUVMap>::Traits            Traits;
+  typedef typename internal::Check_traits<VertexUVMap, CGAL_NP_CLASS>::type Traits;
 
   CGAL::Real_timer timer;
   timer.start();
@@ -294,7 +300,7 @@ Error_code progressive_embedding(const TriangleMesh& tm, VertexUVMap uvm,
   std::vector<Point_2> B(nb);
   for(std::size_t k = 0; k < nb; ++k) B[k] = P[disk.border[k]];
   int orientation = 0;
-  const Traits traits;
+  const Traits traits = choose_parameter<Traits>(get_parameter(np, CGAL::internal_np::geom_traits));
   const internal::Polygon_class pc = internal::classify_convex_polygon(B, traits.exact_orientation_2_object(), orientation);
   if(pc == internal::Polygon_class::DEGENERATE) return ERROR_DEGENERATE_BORDER;
   if(pc == internal::Polygon_class::NON_CONVEX) return ERROR_NON_CONVEX_BORDER;
@@ -320,7 +326,8 @@ Error_code progressive_embedding(const TriangleMesh& tm, VertexUVMap uvm,
   }
   const double t_certificate = timer.time();
   stats.report = check_embedding(tm, uvm, CGAL::parameters::vertex_point_map(
-                   choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm))));
+                   choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm)))
+                   .geom_traits(traits));
   stats.seconds_total = timer.time();
   stats.seconds_certification = stats.seconds_total - t_certificate;
   if(!stats.report.is_valid())

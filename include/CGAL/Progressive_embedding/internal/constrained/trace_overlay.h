@@ -20,7 +20,7 @@
 //       The interface, preconditions, postconditions and errors of trace_paths() (trace_paths.h), for a
 //       triangulated disk, except that the patches are not labelled before OK is returned (a full pass
 //       over the refined mesh, which constrained_embedding() makes anyway): the caller checks them,
-//       with label_patches() or check_traced_paths(); np: maximum_steiner_vertices (default 128 * number of edges + 10000),
+//       with label_patches() or check_traced_paths(); np: maximum_steiner_vertices (default overlay_tracing_budget, tracer_budgets.h),
 //       CGAL::parameters::maximum_running_time, split_penalty (the cost of one crossing, in mean edge
 //       lengths, added to the curve's 3D length between edge midpoints; default 4).
 //
@@ -42,6 +42,7 @@
 
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/internal/constrained/refinement.h>
+#include <CGAL/Progressive_embedding/internal/constrained/tracer_budgets.h>
 #include <CGAL/Progressive_embedding/internal/constrained/trace_paths.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -703,7 +704,7 @@ Error_code trace_paths_overlay(TriangleMesh& tm, VertexPointMap vpm,
   Error_code status = check_triangulated_disk(tm);
   if(status != OK) return status;
   const std::size_t max_splits = choose_parameter(get_parameter(np, internal_np::maximum_steiner_vertices),
-                                                  128 * static_cast<std::size_t>(num_edges(tm)) + 10000);
+                                                  overlay_tracing_budget.of(static_cast<std::size_t>(num_edges(tm))));
   const double penalty_units = choose_parameter(get_parameter(np, internal_np::split_penalty), 4.);
   if(!(penalty_units >= 0) || !std::isfinite(penalty_units)) return ERROR_WRONG_PARAMETER;
   std::vector<std::size_t> order;

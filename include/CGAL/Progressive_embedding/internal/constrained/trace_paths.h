@@ -36,7 +36,7 @@
 //                 next border node along the border, interior on the left) to the previous one;
 //       paths   : out, paths[i] runs from nodes[edges[i][0]] to nodes[edges[i][1]];
 //       steiner : out (appended), the vertices added, in order of creation;
-//       np      : maximum_steiner_vertices (std::size_t, default 4 * number of edges + 1000),
+//       np      : maximum_steiner_vertices (std::size_t, default shortest_paths_default_budget: tracer_budgets.h),
 //                 CGAL::parameters::maximum_running_time (double seconds, default none),
 //                 path_metric (Path_metric, default EDGE_LENGTH), split_penalty (double, in mean
 //                 edge lengths, or in hops for HOP_COUNT; default 4: a path may be this much longer
@@ -111,6 +111,7 @@
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/internal/constrained/refinement.h>
 #include <CGAL/Progressive_embedding/internal/constrained/guide_map.h>
+#include <CGAL/Progressive_embedding/internal/constrained/tracer_budgets.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -1137,7 +1138,7 @@ Error_code trace_paths(TriangleMesh& tm, VertexPointMap vpm,
   Error_code status = check_triangulated_disk(tm);
   if(status != OK) return status;
   const std::size_t max_splits = choose_parameter(get_parameter(np, internal_np::maximum_steiner_vertices),
-                                                  4 * static_cast<std::size_t>(num_edges(tm)) + 1000);
+                                                  shortest_paths_default_budget.of(static_cast<std::size_t>(num_edges(tm))));
   Path_network<TM> net(tm);
   std::vector<std::vector<std::size_t> > loops;
   status = mark_nodes_and_check_partition(tm, net, nodes, edges, rotation, loops);

@@ -1,0 +1,45 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+#ifndef CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CONSTRAINED_TRACER_BUDGETS_H
+#define CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CONSTRAINED_TRACER_BUDGETS_H
+
+// The default budgets (Steiner vertices each path tracer may add, when the caller gives none), in one
+// place: the tracers' own defaults and constrained_embedding()'s choice between them read these.
+// Measurements behind the choices: benchmark/results/constrained_embedding_many.csv and
+// benchmark/results/polygon_maps.csv.
+
+#include <cstddef>
+
+namespace CGAL {
+namespace Progressive_embedding {
+namespace internal {
+
+// a budget linear in a size of the mesh: per_unit * size + base
+struct Steiner_budget
+{
+  std::size_t per_unit;
+  std::size_t base;
+  constexpr std::size_t of(std::size_t size) const { return per_unit * size + base; }
+};
+
+// trace_paths() called on its own: shortest paths that split edges as they go (per edge)
+constexpr Steiner_budget shortest_paths_default_budget{ 4, 1000 };
+// constrained_embedding()'s first tracing, shortest paths (per vertex of the mesh): they won with at most
+// 1.35 times the mesh's vertices added, so they stop at twice, and the time spent is not lost for long
+constexpr Steiner_budget first_tracing_budget{ 2, 1000 };
+// trace_paths_overlay(): curves over the input edges, the mesh refined once (per edge)
+constexpr Steiner_budget overlay_tracing_budget{ 128, 10000 };
+// the guided tracings (shortest paths guided by a drawing of the partition; per edge)
+constexpr Steiner_budget guided_tracing_budget{ 32, 10000 };
+// the guided tracings run after the overlay only when it added at most this many times the mesh's vertices
+constexpr std::size_t guided_after_overlay_factor = 4;
+// the shortest paths are traced again (overlay, guided) when they add more than vertices / this + 10
+constexpr std::size_t retrace_above_fraction = 10;
+
+} // namespace internal
+} // namespace Progressive_embedding
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CONSTRAINED_TRACER_BUDGETS_H

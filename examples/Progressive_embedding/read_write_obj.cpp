@@ -66,9 +66,12 @@ int main(int argc, char** argv)
   const PE::Embedding_report report = PE::check_embedding(mesh, uvm);
   std::cout << "uv map: " << report.summary() << std::endl;
 
+  // the picture draws the certificate just printed
+  PE::IO::SVG_options svg;
+  svg.title = in_obj;
   // written with 17 significant digits: doubles round-trip bit-exactly
   if(PE::IO::write_OBJ_with_uv(out_obj, mesh, uvm, &vt_to_v, &positions) != PE::OK
-     || PE::IO::write_SVG(out_svg, mesh, uvm, in_obj) != PE::OK)
+     || PE::IO::write_SVG(out_svg, mesh, uvm, report, svg) != PE::OK)
   {
     std::cerr << "cannot write " << out_obj << " or " << out_svg << std::endl;
     return EXIT_FAILURE;

@@ -63,7 +63,7 @@
 #include <CGAL/Progressive_embedding/progressive_embedding.h>
 #include <CGAL/Progressive_embedding/Progressive_embedding_parameterizer_3.h>
 #include <CGAL/Progressive_embedding/IO/SVG.h>
-#include "protocols.h" // test fixtures: test/Progressive_embedding/
+#include <CGAL/Progressive_embedding/internal/tutte_failure_protocol.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 
 #include <Eigen/Core>

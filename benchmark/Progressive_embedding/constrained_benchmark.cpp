@@ -40,7 +40,7 @@
 #include <CGAL/Progressive_embedding/constrained_embedding.h>
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
-#include "protocols.h" // test fixtures: test/Progressive_embedding/
+#include <CGAL/Progressive_embedding/internal/tutte_failure_protocol.h>
 #include "process_memory.h"
 
 #include <dirent.h>

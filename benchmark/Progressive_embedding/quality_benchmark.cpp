@@ -17,7 +17,7 @@
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
 #include <CGAL/Progressive_embedding/progressive_embedding.h>
 #include <CGAL/Progressive_embedding/optimize_distortion.h>
-#include "protocols.h" // test fixtures: test/Progressive_embedding/
+#include <CGAL/Progressive_embedding/internal/tutte_failure_protocol.h>
 #include <CGAL/Real_timer.h>
 
 #include <algorithm>

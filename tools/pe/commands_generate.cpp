@@ -6,7 +6,7 @@
 
 #include "pe.h"
 
-#include "protocols.h" // test fixtures: test/Progressive_embedding/
+#include <CGAL/Progressive_embedding/internal/disk_generators.h>
 
 #include <cmath>
 

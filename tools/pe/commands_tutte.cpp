@@ -8,7 +8,7 @@
 #include "pe.h"
 
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
-#include "protocols.h" // test fixtures: test/Progressive_embedding/
+#include <CGAL/Progressive_embedding/internal/tutte_failure_protocol.h>
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Gmpfr.h>

@@ -1,15 +1,34 @@
 # Compiles every public header of the package alone, in its own translation unit (syntax only),
-# so that a header that forgets one of its includes is caught.
+# so that a header that forgets one of its includes is caught; SHARD=k of SHARDS=n takes every n-th
+# header from the k-th (two tests share the work). With SOURCES, compiles those files instead (syntax
+# only: the benchmark drivers that a test build does not link).
 # Also checks that long_double_rejected.cpp does NOT compile and says why (FAIL_SOURCE).
 #   cmake -DCXX=... -DINCLUDE_DIRS="a|b" -DDEFINITIONS="X|Y" -DHEADER_ROOT=.../include -DWORK_DIR=...
-#         [-DFAIL_SOURCE=file.cpp -DFAIL_REGEX=...] -P compile_headers.cmake
+#         [-DSHARD=k -DSHARDS=n] [-DSOURCES="a.cpp|b.cpp"] [-DFAIL_SOURCE=file.cpp -DFAIL_REGEX=...]
+#         -P compile_headers.cmake
 string(REPLACE "|" ";" INCLUDE_DIRS "${INCLUDE_DIRS}")
 string(REPLACE "|" ";" DEFINITIONS "${DEFINITIONS}")
-file(GLOB headers RELATIVE ${HEADER_ROOT}
-     ${HEADER_ROOT}/CGAL/progressive_embedding.h
-     ${HEADER_ROOT}/CGAL/Progressive_embedding/*.h
-     ${HEADER_ROOT}/CGAL/Progressive_embedding/IO/*.h)
-list(SORT headers)
+if(SOURCES)
+  string(REPLACE "|" ";" headers "${SOURCES}")
+else()
+  file(GLOB headers RELATIVE ${HEADER_ROOT}
+       ${HEADER_ROOT}/CGAL/progressive_embedding.h
+       ${HEADER_ROOT}/CGAL/Progressive_embedding/*.h
+       ${HEADER_ROOT}/CGAL/Progressive_embedding/IO/*.h)
+  list(SORT headers)
+  if(SHARDS)
+    set(mine "")
+    set(i 0)
+    foreach(h ${headers})
+      math(EXPR r "${i} % ${SHARDS}")
+      if(r EQUAL SHARD)
+        list(APPEND mine ${h})
+      endif()
+      math(EXPR i "${i} + 1")
+    endforeach()
+    set(headers ${mine})
+  endif()
+endif()
 file(MAKE_DIRECTORY ${WORK_DIR})
 set(flags -std=c++17 -fsyntax-only)
 foreach(d ${INCLUDE_DIRS})
@@ -21,9 +40,13 @@ endforeach()
 set(failed "")
 set(count 0)
 foreach(h ${headers})
-  string(MAKE_C_IDENTIFIER ${h} name)
-  set(tu ${WORK_DIR}/${name}.cpp)
-  file(WRITE ${tu} "#include <${h}>\nint main() { return 0; }\n")
+  if(SOURCES)
+    set(tu ${h})
+  else()
+    string(MAKE_C_IDENTIFIER ${h} name)
+    set(tu ${WORK_DIR}/${name}.cpp)
+    file(WRITE ${tu} "#include <${h}>\nint main() { return 0; }\n")
+  endif()
   execute_process(COMMAND ${CXX} ${flags} ${tu} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   math(EXPR count "${count} + 1")
   if(rc EQUAL 0)
@@ -34,7 +57,7 @@ foreach(h ${headers})
   endif()
 endforeach()
 if(count EQUAL 0)
-  message(FATAL_ERROR "no public header found under ${HEADER_ROOT}")
+  message(FATAL_ERROR "nothing to compile (no public header under ${HEADER_ROOT}, or an empty SOURCES)")
 endif()
 if(FAIL_SOURCE)
   execute_process(COMMAND ${CXX} ${flags} ${FAIL_SOURCE} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)

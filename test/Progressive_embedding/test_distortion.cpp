@@ -20,7 +20,8 @@
 #include <CGAL/Progressive_embedding/Progressive_embedding_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
-#include "protocols.h" // test fixtures: test/Progressive_embedding/
+#include <CGAL/Progressive_embedding/internal/disk_generators.h>
+#include <CGAL/Progressive_embedding/internal/tutte_failure_protocol.h>
 
 #include <cmath>
 #include <cstdlib>

@@ -19,7 +19,8 @@
 #include <CGAL/Progressive_embedding/Progressive_embedding_parameterizer_3.h>
 
 #include "test_util.h"
-#include "protocols.h"
+#include <CGAL/Progressive_embedding/internal/disk_generators.h>
+#include <CGAL/Progressive_embedding/internal/tutte_failure_protocol.h>
 
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>

@@ -15,7 +15,8 @@
 #include <CGAL/Progressive_embedding/check_immersion.h>
 #include <CGAL/Progressive_embedding/certified_pipeline.h>
 #include <CGAL/Progressive_embedding/IO/OBJ_with_uv.h>
-#include "protocols.h" // test fixtures: test/Progressive_embedding/
+#include <CGAL/Progressive_embedding/internal/disk_generators.h>
+#include <CGAL/Progressive_embedding/internal/tutte_failure_protocol.h>
 
 #include "test_util.h"
 

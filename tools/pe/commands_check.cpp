@@ -128,7 +128,9 @@ int write_and_finish(Run& run, const Input& in, const std::string& obj, const Ma
   assert(cert.of == &in); // the certificate of what is written
   const PE::Embedding_report& rep = cert.report;
   add_report(run.result, rep);
-  const int w = write_outputs(run, in, obj, svg, picture);
+  Picture drawn = picture;
+  drawn.report = &rep; // the picture draws this certificate, not another one
+  const int w = write_outputs(run, in, obj, svg, drawn);
   if(w != EXIT_VALID) return w;
   run.result.add("written", true);
   run.summary << describe(rep);
@@ -244,6 +246,7 @@ int cmd_svg(const Arguments& a)
   picture.title = in.filename + ": " + (report.is_valid() ? "valid" : "INVALID"); // the numbers are in the legend
   picture.inset = !report.is_valid();
   picture.has_3d_energy = report.has_3d_energy;
+  picture.report = &report;
   const int w = write_picture(run, in, a.positional[1], picture);
   if(w != EXIT_VALID) return w;
   run.result.add("written", true);

@@ -347,10 +347,18 @@ int write_picture(Run& run, const Input& in, const std::string& svg, const Pictu
   options.inset = picture.inset;
   // the distortion colors need 3D triangles of non-zero area: without them, plain faces
   options.color_by_distortion = picture.color_by_distortion && picture.has_3d_energy;
-  const PE::Error_code ec = picture.has_patches
-    ? PE::IO::write_SVG(svg, in.mesh, in.uv, options,
-        PE::parameters::face_patch_map(picture.patches, PE::parameters::constrained_vertices(picture.constrained)))
-    : PE::IO::write_SVG(svg, in.mesh, in.uv, options);
+  // with the caller's certificate the writer only draws; without it, it certifies first
+  PE::Error_code ec;
+  if(picture.report)
+    ec = picture.has_patches
+      ? PE::IO::write_SVG(svg, in.mesh, in.uv, *picture.report, options,
+          PE::parameters::face_patch_map(picture.patches, PE::parameters::constrained_vertices(picture.constrained)))
+      : PE::IO::write_SVG(svg, in.mesh, in.uv, *picture.report, options);
+  else
+    ec = picture.has_patches
+      ? PE::IO::write_SVG(svg, in.mesh, in.uv, options,
+          PE::parameters::face_patch_map(picture.patches, PE::parameters::constrained_vertices(picture.constrained)))
+      : PE::IO::write_SVG(svg, in.mesh, in.uv, options);
   if(ec != PE::OK) return run.fail(ec, "cannot write '" + svg + "'");
   return EXIT_VALID;
 }

@@ -76,6 +76,8 @@ struct Picture
   bool has_patches = false;
   Mesh::Property_map<face_descriptor, int> patches;   // -1: no patch
   std::vector<vertex_descriptor> constrained;
+  // the certificate of the map drawn, when the caller has it (the writer then only draws); else it certifies
+  const PE::Embedding_report* report = nullptr;
 };
 
 // writes the map (OBJ with uv) and, if `svg` is not empty, its picture; returns EXIT_VALID, or

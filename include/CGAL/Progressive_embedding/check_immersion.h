@@ -64,7 +64,8 @@ struct Immersion_report
   /// interior vertices not checked because an incident face is flipped, degenerate or not finite
   std::size_t unchecked_vertices = 0;
   /// with a `border_polygon`: the number of border vertices whose uv differs from the polygon's point (compared
-  /// bit-exactly, the polygon's first point at the border vertex `border_polygon_start`)
+  /// by value (`==`: in floating point -0 equals 0), the polygon's first point at the border vertex
+  /// `border_polygon_start`)
   std::size_t border_mismatches = 0;
   /// border vertices (among those whose incident faces are all correctly oriented) whose fan of faces does not
   /// turn by the border polygon's angle there plus 2 pi times the vertex's rotation index (index 0 unless the

@@ -17,7 +17,8 @@
 
 #include "registry.h"
 #include "../test_util.h"
-#include "../protocols.h"
+#include <CGAL/Progressive_embedding/internal/disk_generators.h>
+#include <CGAL/Progressive_embedding/internal/tutte_failure_protocol.h>
 
 #include <cmath>
 #include <limits>

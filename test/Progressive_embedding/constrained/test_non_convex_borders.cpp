@@ -21,7 +21,8 @@
 #include "polygon_fixtures.h"
 #include "mesh_fixtures.h"
 #include "../test_util.h"
-#include "../protocols.h"
+#include <CGAL/Progressive_embedding/internal/disk_generators.h>
+#include <CGAL/Progressive_embedding/internal/tutte_failure_protocol.h>
 
 #include <CGAL/boost/graph/helpers.h>
 

@@ -648,20 +648,6 @@ int test_budget()
 
 // ---- geom_traits ---------------------------------------------------------------------------------
 
-// The default traits with an orientation predicate that counts its calls.
-struct Counting_traits : public PE::Progressive_embedding_traits_2<Kq>
-{
-  typedef PE::Progressive_embedding_traits_2<Kq> Base;
-  static inline std::size_t calls = 0;
-  struct Exact_orientation_2
-  {
-    typedef CGAL::Orientation result_type;
-    CGAL::Orientation operator()(const Kq::Point_2& p, const Kq::Point_2& q, const Kq::Point_2& r) const
-    { ++calls; return Base::Exact_orientation_2()(p, q, r); }
-  };
-  Exact_orientation_2 exact_orientation_2_object() const { return Exact_orientation_2(); }
-};
-
 template <class Mesh>
 int test_traits()
 {

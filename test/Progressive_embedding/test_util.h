@@ -23,6 +23,8 @@
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Real_timer.h>
 
+#include <CGAL/Progressive_embedding/Progressive_embedding_traits_2.h>
+
 #include <array>
 #include <cmath>
 #include <cstdlib>
@@ -51,6 +53,21 @@ typedef CGAL::Polyhedron_3<Epick>                             Polyhedron;
   } while(0)
 
 #define RUN(call) do { if((call) != EXIT_SUCCESS) return EXIT_FAILURE; } while(0)
+
+// The default traits with an orientation predicate that counts its calls: a function that honours
+// `geom_traits` decides its signs through it.
+struct Counting_traits : public PE::Progressive_embedding_traits_2<Kq>
+{
+  typedef PE::Progressive_embedding_traits_2<Kq> Base;
+  static inline std::size_t calls = 0;
+  struct Exact_orientation_2
+  {
+    typedef CGAL::Orientation result_type;
+    CGAL::Orientation operator()(const Kq::Point_2& p, const Kq::Point_2& q, const Kq::Point_2& r) const
+    { ++calls; return Base::Exact_orientation_2()(p, q, r); }
+  };
+  Exact_orientation_2 exact_orientation_2_object() const { return Exact_orientation_2(); }
+};
 
 template <class Mesh> const char* mesh_name();
 template <> inline const char* mesh_name<Surface_mesh>() { return "Surface_mesh"; }

@@ -13,6 +13,9 @@
 
 #include <cmath>
 #include <cstring>
+#include <functional>
+#include <limits>
+#include <string>
 #include <map>
 #include <set>
 #include <utility>
@@ -79,7 +82,23 @@ int cmd_constrain(const Arguments& a)
   Picture picture;
   picture.has_patches = true;
   picture.patches = in.mesh.add_property_map<face_descriptor, int>("f:pe_patch", -1).first;
+  // the bar says the phase running; in the optimization, the energy and the time left of its budget
+  Progress bar("validation", budget.progress());
+  const std::function<bool(const PE::Constrained_embedding_progress&)> phase = [&bar](const PE::Constrained_embedding_progress& p) {
+    static const char* const names[] = { "validation", "partition", "path tracing", "patch maps", "certificate",
+                                         "optimization", "coarsening", "output" };
+    std::string label = names[static_cast<int>(p.phase)];
+    if(p.phase == PE::Constrained_embedding_phase::OPTIMIZATION && p.energy == p.energy)
+    {
+      label += ": energy " + format_number(p.energy);
+      if(p.optimization_seconds_left < std::numeric_limits<double>::infinity())
+        label += ", " + seconds_string(p.optimization_seconds_left) + " left";
+    }
+    bar.set_label(label);
+    return bar.update(p.fraction);
+  };
   const PE::Error_code ec = PE::constrained_embedding<CGAL::Parallel_if_available_tag>(in.mesh, constraints, in.uv,
+    PE::parameters::phase_callback(phase,
     PE::parameters::border_shape(s.border,
       PE::parameters::weights(s.weights,
         PE::parameters::optimize(!a.has("--no-optimize"),
@@ -87,7 +106,8 @@ int cmd_constrain(const Arguments& a)
           PE::parameters::statistics(&st,
             PE::parameters::face_patch_map(picture.patches,
               PE::parameters::vertex_rotation_index_map(turns,
-                CGAL::parameters::maximum_running_time(budget.remaining())))))))));
+                CGAL::parameters::maximum_running_time(budget.remaining()))))))))));
+  bar.finish();
   // the coarsening removes added vertices again: compact the mesh so that vertex indices follow the
   // output order (the input vertices, never removed, keep theirs)
   if(ec == PE::OK && in.mesh.has_garbage()) in.mesh.collect_garbage();

@@ -85,6 +85,7 @@ enum class Weights
   X(optimization_policy) \
   X(pipeline_statistics) \
   X(stage_callback) \
+  X(phase_callback) \
 
 namespace internal_np {
 #define CGAL_PE_ADD_NAMED_PARAMETER(NAME) enum NAME##_t { NAME };
@@ -288,6 +289,11 @@ template <typename T> unspecified_type pipeline_statistics(const T& t);
 /// called by `repair_and_optimize()` with the stage and its progress in [0, 1]; `false` stops the call
 /// (`std::function<bool(Pipeline_stage, double)>`; default none)
 template <typename T> unspecified_type stage_callback(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// called by `constrained_embedding()` at the start of each phase and after each iteration of its optimization, with a
+/// `Constrained_embedding_progress`; `false` stops the call (`std::function<bool(const Constrained_embedding_progress&)>`;
+/// default none)
+template <typename T> unspecified_type phase_callback(const T& t);
 #endif
 
 } // namespace parameters

@@ -20,6 +20,7 @@
 #include <CGAL/Polygon_2_algorithms.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <random>
 #include <set>
@@ -602,6 +603,193 @@ PE_TEST_GROUP(constrained_embedding_errors)
     CHECK(PE::constrained_embedding(m2, none, uv3, PE::parameters::statistics(&st)) == PE::OK, "no constraint");
     CHECK(st.steiner_vertices == 0 && st.patches == 1 && PE::check_embedding(m2, uv3).is_valid(), "one patch, valid");
     CHECK(st.failed_constraint == std::size_t(-1), "no constraint named on success");
+  }
+  return EXIT_SUCCESS;
+}
+
+// The pipeline's phases one by one (internal::Constrained_embedder), on the mushroom disk with 10
+// random targets (winding paths: Steiner vertices to insert and to coarsen): what each phase leaves,
+// its time in the statistics, and the caller's mesh and uv untouched until the last phase.
+PE_TEST_GROUP(constrained_embedding_phases)
+{
+  typedef Epick::Point_2 Point_2;
+  Surface_mesh m;
+  if(!read_mesh(data_dir + "/meshes/mushroom.off", m)) return EXIT_FAILURE;
+  auto uv = make_uv_map(m, Point_2());
+  for(auto v : vertices(m)) put(uv, v, Point_2(0, 0));
+  CHECK(shaped_border(m, uv, PE::Border_shape::SQUARE), "border placed");
+  const auto C = random_constraints<Epick>(m, uv, 10, 3u);
+  const Snapshot<Surface_mesh, decltype(uv)> before(m, uv);
+  PE::Constrained_embedding_statistics st;
+  const auto np = PE::parameters::statistics(&st).optimization_time_limit(5.);
+  typedef PE::internal::Constrained_embedder<CGAL::Sequential_tag, Surface_mesh, decltype(uv), decltype(np)> Embedder;
+  Embedder e(m, uv, np);
+  CHECK(&e.stats == &st, "the caller's statistics");
+  CHECK(e.read_parameters() == PE::OK && e.optimize && e.coarsen && e.optimization_seconds == 5., "parameters read");
+  CHECK(e.validate(C) == PE::OK, "validate");
+  const std::size_t nv = before.verts.size();
+  CHECK(st.input_vertices == nv && e.nv == nv && e.cverts.size() == C.size() && e.targets.size() == C.size()
+        && e.bpos.size() == e.nb && !e.holes && !e.non_convex, "validate: mesh indexed, constraints and border read");
+  CHECK(e.make_partition() == PE::OK, "partition");
+  CHECK(st.paths == e.partition.edges.size() && st.paths >= C.size() && e.nbn == e.border_nodes.size() && !e.immersed
+        && e.T.size() == C.size(), "partition: interior edges, border nodes");
+  CHECK(e.make_working_copy() == PE::OK, "working copy");
+  CHECK(static_cast<std::size_t>(num_vertices(e.work)) == nv && e.nodes.size() == e.nbn + C.size() && e.paths.empty(),
+        "working copy: the mesh and its nodes");
+  CHECK(e.trace() == PE::OK, "trace");
+  CHECK(e.paths.size() == st.paths && st.steiner_vertices == e.steiner.size() && !e.steiner.empty()
+        && static_cast<std::size_t>(num_vertices(e.work)) == nv + e.steiner.size() && st.seconds_tracing > 0,
+        "trace: one path per edge, the mesh refined, timed");
+  CHECK(e.map_patches() == PE::OK, "patches");
+  CHECK(e.patches.size() == e.partition.polygons.size() && st.patches == e.patches.size() && st.seconds_patches > 0,
+        "patches: one per polygon, timed");
+  CHECK(e.certify() == PE::OK, "certify");
+  CHECK(st.report_before_optimization.is_valid() && st.report.is_valid() && st.report.overlapping_pairs == 0
+        && st.report.non_finite == 0, "certify: the whole certificate");
+  const double energy_before = st.report.mean_energy_3d;
+  CHECK(e.optimize_map() == PE::OK, "optimize");
+  CHECK(st.optimized && st.report.is_valid() && st.report.mean_energy_3d < energy_before && st.seconds_optimization > 0,
+        "optimize: certified, lower energy " << energy_before << " -> " << st.report.mean_energy_3d);
+  const std::size_t inserted = e.steiner.size();
+  CHECK(e.coarsen_map() == PE::OK, "coarsen");
+  CHECK(st.steiner_vertices_inserted == inserted && st.steiner_vertices_removed == e.removals.size()
+        && st.report.is_valid(), "coarsen: counted and certified");
+  CHECK(e.check_constraints() == PE::OK && st.max_constraint_error == 0, "constraints bit-exact");
+  CHECK(before.same_mesh(m) && before.same_uv(m, uv), "the caller's mesh and uv untouched before the output");
+  CHECK(e.write_output() == PE::OK, "output");
+  const std::size_t out = static_cast<std::size_t>(std::distance(vertices(m).begin(), vertices(m).end()));
+  CHECK(out == nv + inserted - e.removals.size() && st.output_vertices == out && st.steiner_vertices == out - nv,
+        "output: inserted minus removed");
+  CHECK(before.originals_first(m), "original vertices first");
+  for(const auto& c : C) CHECK(get(uv, c.first) == c.second, "constraint bit-exact on the caller's mesh");
+  const PE::Embedding_report r = PE::check_embedding(m, uv);
+  CHECK(r.is_valid() && r.overlapping_pairs == 0, "the caller's map certified");
+  std::cout << "phases: " << nv << " -> " << out << " vertices (" << inserted << " inserted, " << e.removals.size()
+            << " removed), " << st.paths << " paths, " << st.patches << " patches" << std::endl;
+
+  // an error stops at its phase, with nothing of the caller's touched: a constraint on the border
+  Surface_mesh m2;
+  if(!read_mesh(data_dir + "/meshes/mushroom.off", m2)) return EXIT_FAILURE;
+  auto uv2 = make_uv_map(m2, Point_2());
+  for(auto v : vertices(m2)) put(uv2, v, Point_2(0, 0));
+  CHECK(shaped_border(m2, uv2, PE::Border_shape::SQUARE), "border placed");
+  std::vector<std::pair<boost::graph_traits<Surface_mesh>::vertex_descriptor, Point_2> > bad;
+  for(auto v : vertices(m2)) if(CGAL::is_border(v, m2)) { bad.emplace_back(v, Point_2(0.5, 0.5)); break; }
+  PE::Constrained_embedding_statistics st2;
+  const auto np2 = PE::parameters::statistics(&st2);
+  PE::internal::Constrained_embedder<CGAL::Sequential_tag, Surface_mesh, decltype(uv2), decltype(np2)> e2(m2, uv2, np2);
+  CHECK(e2.run(bad) == PE::ERROR_CONSTRAINT_ON_BORDER && st2.failed_constraint == 0 && st2.paths == 0, "stopped in validate");
+  return EXIT_SUCCESS;
+}
+
+// geom_traits: every sign of the uv map goes through the given traits (a counting orientation), and
+// the map is the one of the default traits, bit for bit
+PE_TEST_GROUP(constrained_embedding_traits)
+{
+  typedef Kq::Point_2 Point_2;
+  Surface_mesh m0;
+  PE::internal::make_grid_disk(8, m0);
+  Surface_mesh m1 = m0, m2 = m0;
+  auto uv1 = make_uv_map(m1, Point_2()), uv2 = make_uv_map(m2, Point_2());
+  for(auto v : vertices(m1)) put(uv1, v, Point_2(0, 0));
+  for(auto v : vertices(m2)) put(uv2, v, Point_2(0, 0));
+  CHECK(shaped_border(m1, uv1, PE::Border_shape::SQUARE) && shaped_border(m2, uv2, PE::Border_shape::SQUARE), "borders");
+  const auto C1 = random_constraints<Kq>(m1, uv1, 4, 11u);
+  const auto C2 = random_constraints<Kq>(m2, uv2, 4, 11u);
+  PE::Constrained_embedding_statistics s1, s2;
+  CHECK(PE::constrained_embedding(m1, C1, uv1, PE::parameters::statistics(&s1).optimize(false)) == PE::OK, "default traits");
+  Counting_traits::calls = 0;
+  CHECK(PE::constrained_embedding(m2, C2, uv2, PE::parameters::statistics(&s2).optimize(false)
+                                                 .geom_traits(Counting_traits())) == PE::OK, "counting traits");
+  const std::size_t faces = count_faces(m2);
+  std::cout << "geom_traits: " << Counting_traits::calls << " orientation calls for " << faces << " faces" << std::endl;
+  CHECK(Counting_traits::calls >= 3 * faces, "patch maps and certificates take the given traits");
+  CHECK(s1.steiner_vertices == s2.steiner_vertices && count_faces(m1) == faces, "same refinement");
+  auto a = vertices(m1).begin();
+  for(auto v : vertices(m2)) { CHECK(get(uv1, *a) == get(uv2, v), "same map"); ++a; }
+  return EXIT_SUCCESS;
+}
+
+// phase_callback: every phase reported in order, the optimization with its energy and its time left; a
+// `false` before the certificate stops the call with nothing written, in the optimization it stops the
+// optimization only
+PE_TEST_GROUP(constrained_embedding_progress)
+{
+  typedef Epick::Point_2 Point_2;
+  typedef PE::Constrained_embedding_phase Phase;
+  Surface_mesh m0;
+  if(!read_mesh(data_dir + "/meshes/mushroom.off", m0)) return EXIT_FAILURE;
+  auto uv0 = make_uv_map(m0, Point_2());
+  for(auto v : vertices(m0)) put(uv0, v, Point_2(0, 0));
+  CHECK(shaped_border(m0, uv0, PE::Border_shape::SQUARE), "border placed");
+  const auto C0 = random_constraints<Epick>(m0, uv0, 10, 3u);
+  std::vector<std::size_t> index; // constraints by vertex position, to rebuild them on copies
+  {
+    std::vector<boost::graph_traits<Surface_mesh>::vertex_descriptor> verts(vertices(m0).begin(), vertices(m0).end());
+    for(const auto& c : C0) index.push_back(static_cast<std::size_t>(std::find(verts.begin(), verts.end(), c.first) - verts.begin()));
+  }
+  auto copy_case = [&](Surface_mesh& m) {
+    m = m0;
+    std::vector<boost::graph_traits<Surface_mesh>::vertex_descriptor> verts(vertices(m).begin(), vertices(m).end());
+    std::vector<std::pair<boost::graph_traits<Surface_mesh>::vertex_descriptor, Point_2> > C;
+    for(std::size_t i = 0; i < C0.size(); ++i) C.emplace_back(verts[index[i]], C0[i].second);
+    return C;
+  };
+  {
+    Surface_mesh m;
+    const auto C = copy_case(m);
+    auto uv = make_uv_map(m, Point_2());
+    for(auto v : vertices(m)) put(uv, v, get(uv0, v));
+    std::vector<PE::Constrained_embedding_progress> seen;
+    const std::function<bool(const PE::Constrained_embedding_progress&)> cb =
+      [&seen](const PE::Constrained_embedding_progress& p) { seen.push_back(p); return true; };
+    PE::Constrained_embedding_statistics st;
+    CHECK(PE::constrained_embedding(m, C, uv, PE::parameters::phase_callback(cb).statistics(&st).optimization_time_limit(3.)) == PE::OK, "OK");
+    std::vector<Phase> order;
+    for(const auto& p : seen) if(order.empty() || order.back() != p.phase) order.push_back(p.phase);
+    const std::vector<Phase> expected = { Phase::VALIDATION, Phase::PARTITION, Phase::TRACING, Phase::PATCHES, Phase::CERTIFICATION,
+                                          Phase::OPTIMIZATION, Phase::COARSENING, Phase::OUTPUT };
+    // the optimization may run again after the coarsening
+    if(order.size() == expected.size() + 1 && order[order.size() - 2] == Phase::OPTIMIZATION) order.erase(order.end() - 2);
+    CHECK(order == expected, "every phase, in order (" << order.size() << " changes)");
+    std::size_t iterations = 0;
+    for(const auto& p : seen)
+    {
+      CHECK(p.seconds >= 0 && p.seconds_left == std::numeric_limits<double>::infinity() && p.fraction >= 0 && p.fraction <= 1, "times");
+      if(p.phase != Phase::OPTIMIZATION || p.fraction == 0) { CHECK(p.energy != p.energy, "no energy outside the iterations"); continue; }
+      ++iterations;
+      CHECK(std::isfinite(p.energy) && p.energy >= 4 && p.optimization_seconds_left <= 3., "energy " << p.energy << ", left " << p.optimization_seconds_left);
+    }
+    CHECK(iterations == st.optimization.iterations + st.reoptimization.iterations && iterations > 0,
+          "one report per iteration: " << iterations);
+  }
+  {
+    Surface_mesh m;
+    const auto C = copy_case(m);
+    auto uv = make_uv_map(m, Point_2());
+    for(auto v : vertices(m)) put(uv, v, get(uv0, v));
+    const Snapshot<Surface_mesh, decltype(uv)> before(m, uv);
+    const std::function<bool(const PE::Constrained_embedding_progress&)> stop_tracing =
+      [](const PE::Constrained_embedding_progress& p) { return p.phase != Phase::TRACING; };
+    CHECK(PE::constrained_embedding(m, C, uv, PE::parameters::phase_callback(stop_tracing)) == PE::ERROR_BUDGET_EXHAUSTED,
+          "stopped before tracing");
+    CHECK(before.same_mesh(m) && before.same_uv(m, uv), "nothing written");
+  }
+  {
+    Surface_mesh m;
+    const auto C = copy_case(m);
+    auto uv = make_uv_map(m, Point_2());
+    for(auto v : vertices(m)) put(uv, v, get(uv0, v));
+    std::size_t calls = 0;
+    const std::function<bool(const PE::Constrained_embedding_progress&)> two_iterations =
+      [&calls](const PE::Constrained_embedding_progress& p) { return p.phase != Phase::OPTIMIZATION || p.fraction == 0 || ++calls < 2; };
+    PE::Constrained_embedding_statistics st;
+    CHECK(PE::constrained_embedding(m, C, uv, PE::parameters::phase_callback(two_iterations).statistics(&st)) == PE::OK, "OK");
+    CHECK(st.optimized && st.optimization.iterations == 2 && st.optimization_status == PE::ERROR_BUDGET_EXHAUSTED
+          && !st.reoptimized && st.report.is_valid(), "the optimization stopped after 2 iterations, the map certified");
+    const PE::Embedding_report r = PE::check_embedding(m, uv);
+    CHECK(r.is_valid(), "the caller's map certified");
+    for(const auto& c : C) CHECK(get(uv, c.first) == c.second, "constraint bit-exact");
   }
   return EXIT_SUCCESS;
 }

@@ -83,6 +83,9 @@ struct Optimization_statistics
   double energy_before = 0;
   /// the same for the output (with a free border both are measured against the 3D triangles scaled to the current border area)
   double energy_after = 0;
+  /// the energy of the current map while the optimization runs: updated after each iteration, before the `callback`
+  /// is called (the optimizer's own measure, the same area-weighted mean in double)
+  double energy_current = 0;
   /// seconds
   double seconds = 0;
   /// global (Newton) steps accepted
@@ -286,6 +289,7 @@ public:
       const double decrease = (E0 - E) / E0;
       if(s_.verbose) std::cerr << "[optimize] iteration " << stats.iterations << ": energy " << E
                                << (global_ok ? "" : " (sweep only)") << "\n";
+      stats.energy_current = E;
       if(s_.callback && !s_.callback(double(stats.iterations) / double(s_.max_iterations))) break;
       // converged: two consecutive iterations lower the energy by less than the tolerance
       quiet = (decrease < s_.tolerance) ? quiet + 1 : 0;

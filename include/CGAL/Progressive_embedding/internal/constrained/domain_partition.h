@@ -28,10 +28,8 @@
 //   corner whose union with the piece across would be flat but for the rounding of a border point).
 //   Polygons only grow, so the angles at an edge's ends only grow: an edge refused once stays
 //   refused, and one pass over the edges in a fixed order is the whole greedy algorithm.
-//   Order (options.order): LONGEST_FIRST (default). Measured on regular 4..2000-gons with 3, 10 and
-//   50 random targets (10 seeds each), it leaves the fewest interior edges (each one is a path traced
-//   on the mesh): e.g. 50 targets in a 2000-gon: 91.4 edges on average, against 96.1 in the
-//   triangulation's order and 97.9 shortest first; 10 targets: 20.5 / 22.4 / 22.5. Dropping the edges
+//   Order (options.order): LONGEST_FIRST (default): it leaves the fewest interior edges, each one a
+//   path traced on the mesh (measured: benchmark/results/constrained_design_measurements.md). Dropping the edges
 //   between two border points first changes nothing: such an edge (a chord) is always dropped,
 //   whatever the order, because the union of its two polygons has, at each end, an angle inside the
 //   domain's angle there (below 180 degrees, or exactly 180 at a flat border vertex; the margin can

@@ -63,9 +63,10 @@ struct Patch_phase_result
 constexpr int max_patch_workers = 16;
 
 // `remaining()`: seconds left of the caller's budget (read by every patch when it starts).
-template <class ConcurrencyTag, class Mesh, class UVMap, class Remaining>
+// `traits`: the geometric traits of every patch map (the `geom_traits` of embed_patch()).
+template <class ConcurrencyTag, class Mesh, class UVMap, class Traits, class Remaining>
 Patch_phase_result embed_patches(Mesh& work, const std::vector<std::vector<typename boost::graph_traits<Mesh>::face_descriptor> >& patch_faces,
-                                 UVMap uvm, Weights weights, Remaining remaining)
+                                 UVMap uvm, Weights weights, const Traits& traits, Remaining remaining)
 {
   typedef typename boost::property_traits<UVMap>::value_type Point_2;
   typedef typename CGAL::Kernel_traits<Point_2>::Kernel::FT  FT;
@@ -81,7 +82,7 @@ Patch_phase_result embed_patches(Mesh& work, const std::vector<std::vector<typen
     if(!(remaining() > 0)) { status[p] = ERROR_BUDGET_EXHAUSTED; failed = true; return; }
     Progressive_embedding_statistics pst;
     status[p] = embed_patch_impl(work, patch_faces[p], uvm,
-                                 parameters::statistics(&pst, parameters::weights(weights).maximum_running_time(remaining())),
+                                 parameters::statistics(&pst, parameters::weights(weights).geom_traits(traits).maximum_running_time(remaining())),
                                  true, &slots, false);
     repaired[p] = (pst.collapses > 0 || pst.insertions > 0);
     if(status[p] == ERROR_BUDGET_EXHAUSTED) failed = true;
@@ -130,10 +131,10 @@ double patch_polygon_area(const Mesh& work, const std::vector<typename boost::gr
 // Maximum number of patches mapped as one by merge_failed_patch().
 constexpr std::size_t max_merged_patches = 8;
 
-template <class Mesh, class FacePatchMap, class UVMap, class Remaining>
+template <class Mesh, class FacePatchMap, class UVMap, class Traits, class Remaining>
 Error_code merge_failed_patch(Mesh& work, const std::vector<std::vector<typename boost::graph_traits<Mesh>::face_descriptor> >& patch_faces,
                               FacePatchMap face_patch, const std::vector<char>& is_node, std::size_t failed, UVMap uvm,
-                              Weights weights, Remaining remaining, const std::vector<char>& excluded,
+                              Weights weights, const Traits& traits, Remaining remaining, const std::vector<char>& excluded,
                               std::vector<std::size_t>& merged_with)
 {
   typedef typename boost::graph_traits<Mesh>::face_descriptor face_descriptor;
@@ -189,7 +190,7 @@ Error_code merge_failed_patch(Mesh& work, const std::vector<std::vector<typename
     region.push_back(best);
     std::vector<face_descriptor> faces;
     for(std::size_t r : region) faces.insert(faces.end(), patch_faces[r].begin(), patch_faces[r].end());
-    ec = embed_patch_impl(work, faces, uvm, parameters::weights(weights).maximum_running_time(remaining()),
+    ec = embed_patch_impl(work, faces, uvm, parameters::weights(weights).geom_traits(traits).maximum_running_time(remaining()),
                           true, static_cast<Patch_slots<Mesh>*>(nullptr), false);
     if(ec == OK) { merged_with.assign(region.begin() + 1, region.end()); return OK; }
     if(ec == ERROR_BUDGET_EXHAUSTED) return ec;

@@ -43,7 +43,8 @@
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/internal/constrained/refinement.h>
 #include <CGAL/Progressive_embedding/internal/constrained/tracer_budgets.h>
-#include <CGAL/Progressive_embedding/internal/constrained/trace_paths.h>
+#include <CGAL/Progressive_embedding/parameters.h>
+#include <CGAL/Progressive_embedding/internal/constrained/path_network.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>

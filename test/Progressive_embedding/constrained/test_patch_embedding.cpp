@@ -130,7 +130,7 @@ typename K::Point_2 sentinel(std::size_t i)
 
 // Snapshot of the uv map over every vertex of the mesh.
 template <class Mesh, class UVM>
-std::map<vd_t<Mesh>, typename boost::property_traits<UVM>::value_type> snapshot(const Mesh& m, const UVM& uv)
+std::map<vd_t<Mesh>, typename boost::property_traits<UVM>::value_type> uv_snapshot(const Mesh& m, const UVM& uv)
 {
   std::map<vd_t<Mesh>, typename boost::property_traits<UVM>::value_type> s;
   for(auto v : vertices(m)) s.emplace(v, get(uv, v));
@@ -197,7 +197,7 @@ int embed_and_check(const Mesh& m, const std::vector<fd_t<Mesh> >& P, UVM& uv, b
     if(!V.count(v)) put(uv, v, sentinel<K>(i));
     else if(!Bs.count(v)) put(uv, v, point<K>(7, -3)); // interior: overwritten
   }
-  const auto before = snapshot(m, uv);
+  const auto before = uv_snapshot(m, uv);
   PE::Progressive_embedding_statistics st;
   CGAL::Real_timer t;
   t.start();
@@ -259,7 +259,7 @@ int real_ring_patch(const std::string& data)
   }
   // mean value weights
   place_on_square<Epick>(uv, B, o, false);
-  const auto before = snapshot(m, uv);
+  const auto before = uv_snapshot(m, uv);
   CHECK(PE::embed_patch(m, P, uv, PE::parameters::weights(PE::Weights::MEAN_VALUE)) == PE::OK, "mean value weights");
   RUN(check_patch_map(m, P, uv, CGAL::LEFT_TURN, "ring patch, mean value weights"));
   for(auto v : vertices(m))
@@ -356,7 +356,7 @@ int repaired_patch()
     const char* what = split ? "stacked depth 80, sides split" : "stacked depth 80";
     {
       // no time: refused, the map unchanged
-      const auto before = snapshot(m, uv);
+      const auto before = uv_snapshot(m, uv);
       const PE::Error_code ec = PE::embed_patch(m, P, uv, CGAL::parameters::maximum_running_time(0.).verbose(true));
       std::cout << "  " << what << ", no time: " << PE::get_error_name(ec) << std::endl;
       CHECK(ec == PE::ERROR_BUDGET_EXHAUSTED, what << ": no time");
@@ -408,7 +408,7 @@ int crowded_patches()
     auto vpm = get(CGAL::vertex_point, m);
     for(auto v : vertices(m)) put(uv, v, Epick::Point_2(get(vpm, v).x(), get(vpm, v).y()));
     CHECK(PE::embed_patch(m, P, uv) == PE::ERROR_NON_CONVEX_BORDER, name << ": convex up to rounding only");
-    const auto before = snapshot(m, uv);
+    const auto before = uv_snapshot(m, uv);
     PE::Progressive_embedding_statistics st;
     const PE::Error_code ec = PE::internal::embed_patch_impl(m, P, uv, PE::parameters::statistics(&st), true);
     std::cout << "  " << name << " (" << P.size() << " faces): " << PE::get_error_name(ec) << "; repair: "
@@ -459,7 +459,7 @@ int flat_chords()
     put(uv, V[5], Epick::Point_2(0.5, 0.25)); // interior: any value, must stay
     if(!with_face) put(uv, V[6], Epick::Point_2(3, 3));
     const std::vector<fd_t<Mesh> > P(faces(m).begin(), faces(m).end());
-    const auto before = snapshot(m, uv);
+    const auto before = uv_snapshot(m, uv);
     const char* what = with_face ? "flat face" : "flat chord over an interior vertex";
     const PE::Error_code ec = PE::embed_patch(m, P, uv);
     std::cout << "  " << what << ": embed_patch " << PE::get_error_name(ec) << std::endl;
@@ -537,7 +537,7 @@ int refused(const std::string& data)
     for(auto f : faces(m)) dirty += get(slots.face, f) != 0;
     for(auto v : vertices(m)) dirty += get(slots.vertex, v) != 0;
     CHECK(dirty == 0, what << ": " << dirty << " slots left set");
-    const auto before = snapshot(m, uv);
+    const auto before = uv_snapshot(m, uv);
     const PE::Error_code ec = PE::embed_patch(m, Q, uv);
     std::cout << "  " << what << ": " << PE::get_error_name(ec) << std::endl;
     CHECK(ec == expected, what << ": expected " << PE::get_error_name(expected) << ", got " << PE::get_error_name(ec));
@@ -607,7 +607,7 @@ int refused(const std::string& data)
   }
   // parameters
   {
-    const auto before = snapshot(m, uv);
+    const auto before = uv_snapshot(m, uv);
     CHECK(PE::embed_patch(m, P, uv, CGAL::parameters::maximum_running_time(-1.)) == PE::ERROR_WRONG_PARAMETER, "negative time");
     CHECK(PE::embed_patch(m, P, uv, PE::parameters::line_search_factor(2.)) == PE::ERROR_WRONG_PARAMETER, "line search factor");
     CHECK(changed_vertices(m, uv, before) == 0, "wrong parameters: the uv map is unchanged");
@@ -660,7 +660,7 @@ int disk_functions(const std::string& data)
   const std::size_t o = chord_free_offset<Epick>(m, P, uv, B);
   CHECK(o < B.size(), "a square placement without flat chord");
   place_on_square<Epick>(uv, B, o, false);
-  const auto before = snapshot(m, uv);
+  const auto before = uv_snapshot(m, uv);
   CHECK(PE::tutte_embedding(m, boost::graph_traits<Mesh>::null_halfedge(), uv) == PE::OK, "Tutte, fixed weakly convex border");
   const PE::Embedding_report r = PE::check_embedding(m, uv);
   std::cout << "  Tutte: " << r.summary() << std::endl;
@@ -754,7 +754,7 @@ int sweep(const std::string& data)
       if(B.size() < 4) continue;
       place_on_square<Epick>(uv, B, k % B.size(), k % 2 == 1);
     }
-    const auto before = snapshot(m, uv);
+    const auto before = uv_snapshot(m, uv);
     PE::Progressive_embedding_statistics st;
     const PE::Error_code ec = PE::embed_patch(m, P, uv, PE::parameters::statistics(&st));
     std::vector<ed_t<Mesh> > chords;

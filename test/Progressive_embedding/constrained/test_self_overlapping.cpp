@@ -31,7 +31,7 @@ namespace SO = CGAL::Progressive_embedding::internal::self_overlapping;
 typedef std::array<std::size_t, 3> Tri;
 
 template <class P>
-Kq::Point_2 qp(const P& p) { return Kq::Point_2(exact_rational(p.x()), exact_rational(p.y())); }
+Kq::Point_2 exact_point(const P& p) { return Kq::Point_2(exact_rational(p.x()), exact_rational(p.y())); }
 
 // position of direction v->d in [0, 2 pi) measured counterclockwise from v->a0: half, then cross product
 bool upper_rel(const Kq::Point_2& v, const Kq::Point_2& a0, const Kq::Point_2& d)
@@ -114,7 +114,7 @@ template <class P>
 int certify(const std::vector<P>& pts, const std::vector<Tri>& T, bool ccw, const std::string& what)
 {
   std::vector<Kq::Point_2> Q;
-  for(const P& p : pts) Q.push_back(qp(p));
+  for(const P& p : pts) Q.push_back(exact_point(p));
   const std::string why = immersion_failure(Q, T, ccw);
   CHECK(why.empty(), what << ": " << why);
   return EXIT_SUCCESS;
@@ -353,7 +353,7 @@ template <class P>
 std::vector<Kq::Point_2> to_q(const std::vector<P>& pts)
 {
   std::vector<Kq::Point_2> Q;
-  for(const P& p : pts) Q.push_back(qp(p));
+  for(const P& p : pts) Q.push_back(exact_point(p));
   return Q;
 }
 
@@ -719,7 +719,7 @@ PE_TEST_GROUP(self_overlapping_brute_force)
       if(P.size() != n) continue;
     }
     std::vector<Kq::Point_2> Q, Qr;
-    for(const auto& p : P) Q.push_back(qp(p));
+    for(const auto& p : P) Q.push_back(exact_point(p));
     Qr.assign(Q.rbegin(), Q.rend());
     std::vector<std::vector<Tri> > all;
     all_triangulations(0, n - 1, all);
@@ -753,7 +753,7 @@ PE_TEST_GROUP(self_overlapping_certificate)
   // but not locally injective at vertex 0
   std::vector<Kq::Point_2> Q = { Kq::Point_2(0, 0) };
   const double ang[5] = { 0, 100, 200, 300, 400 }, rad[5] = { 2, 2, 2, 2, 1 };
-  for(int k = 0; k < 5; ++k) Q.push_back(qp(point<Epick>(rad[k] * std::cos(ang[k] * d2r), rad[k] * std::sin(ang[k] * d2r))));
+  for(int k = 0; k < 5; ++k) Q.push_back(exact_point(point<Epick>(rad[k] * std::cos(ang[k] * d2r), rad[k] * std::sin(ang[k] * d2r))));
   const std::vector<Tri> wrap = { Tri{{ 0, 1, 2 }}, Tri{{ 0, 2, 3 }}, Tri{{ 0, 3, 4 }}, Tri{{ 0, 4, 5 }} };
   const std::string why = immersion_failure(Q, wrap, true);
   CHECK(why.find("monotonically") != std::string::npos, "the 400-degree fan: '" << why << "'");

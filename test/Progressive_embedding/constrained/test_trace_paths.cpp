@@ -13,6 +13,7 @@
 #include <CGAL/boost/graph/copy_face_graph.h>
 
 #include "registry.h"
+#include "mesh_fixtures.h"
 #include "../test_util.h"
 
 #include <CGAL/Delaunay_triangulation_2.h>
@@ -263,8 +264,7 @@ snapshot(const Mesh& m)
   return s;
 }
 
-template <class Mesh>
-std::size_t count_vertices(const Mesh& m) { std::size_t n = 0; for(auto v : vertices(m)) { (void)v; ++n; } return n; }
+using pe_test::count_vertices;
 
 // traces P on m, verifies everything, then splits the same-side chords and re-verifies
 template <class Mesh, class NP = CGAL::parameters::Default_named_parameters>

@@ -78,7 +78,8 @@ struct Option_spec
   Kind kind;
   const char* value;    // the value in the usage; for CHOICE, the choices separated by '|'
   const char* help;
-  double lo = 0, hi = 0;   // COUNT: [lo, hi]; REAL: (lo, hi]
+  double lo = 0, hi = 0;   // COUNT: [lo, hi]; REAL: (lo, hi], or [lo, hi] with lo_closed
+  bool lo_closed = false;
 };
 
 const double max_unsigned = double(std::numeric_limits<unsigned>::max());
@@ -103,7 +104,7 @@ const Option_spec option_table[] = {
   { "--tolerance", Kind::REAL, "X",
     "the optimization has converged when two consecutive iterations each lower the energy by less\n"
     "than this fraction (0 <= X < 1, default 1e-5; 0 runs the whole iteration budget)",
-    0, std::nextafter(1., 0.) },
+    0, std::nextafter(1., 0.), true },
   { "--time-limit", Kind::REAL, "SECONDS",
     "time budget of the command's long steps: a Tutte solve or a repair that exceeds it fails (exit 1,\n"
     "ERROR_BUDGET_EXHAUSTED); an optimization stops there, with its valid map. batch: the wall time of\n"
@@ -291,18 +292,18 @@ std::string usage_text()
   return u;
 }
 
-// parses `s` as a whole real number in (lo, hi]; `s` must stay alive while strtod reads it
-bool parse_real(const std::string& s, double lo, double hi, double& out, std::string& why)
+// parses `s` as a whole real number in (lo, hi] ([lo, hi] if lo_closed); `s` must stay alive while strtod reads it
+bool parse_real(const std::string& s, double lo, double hi, bool lo_closed, double& out, std::string& why)
 {
   errno = 0;
   char* end = nullptr;
   const char* begin = s.c_str();
   const double d = (s.empty() || std::isspace(static_cast<unsigned char>(s[0]))) ? 0 : std::strtod(begin, &end);
   if(end == nullptr || end == begin || *end != '\0') { why = "'" + s + "' is not a number"; return false; }
-  if(errno == ERANGE || !std::isfinite(d) || !(d > lo) || !(d <= hi))
+  if(errno == ERANGE || !std::isfinite(d) || !(lo_closed ? d >= lo : d > lo) || !(d <= hi))
   {
     std::ostringstream os;
-    os << "'" << s << "' is out of range (a number > " << lo << " and <= " << hi << " expected)";
+    os << "'" << s << "' is out of range (a number " << (lo_closed ? ">= " : "> ") << lo << " and <= " << hi << " expected)";
     why = os.str();
     return false;
   }
@@ -339,7 +340,7 @@ std::string check_value(const Option_spec& o, const std::string& v, Arguments& a
     case Kind::REAL:
     {
       double d = 0;
-      if(!parse_real(v, o.lo, o.hi, d, why)) return "option " + name + ": " + why;
+      if(!parse_real(v, o.lo, o.hi, o.lo_closed, d, why)) return "option " + name + ": " + why;
       a.reals[name] = d;
       break;
     }

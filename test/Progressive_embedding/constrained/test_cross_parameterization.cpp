@@ -147,6 +147,35 @@ int identical_mesh(const std::string& file)
   return EXIT_SUCCESS;
 }
 
+// A == B with the landmarks' partners shifted by one (landmark k of A on landmark k + 1 of B): A's map must move
+// them far, its copy is refined by Steiner vertices; both directions are still located, the landmarks exact, and
+// the locations of B's vertices on A (through the Steiner points' positions on A's faces) sum to 1.
+template <class Mesh>
+int shifted_landmarks(const std::string& file)
+{
+  Mesh a, b;
+  CHECK(CGAL::IO::read_polygon_mesh(file, a) && CGAL::IO::read_polygon_mesh(file, b), "read " << file);
+  const auto la = PE::internal::spread_interior_vertices(a, 5);
+  const auto lb = PE::internal::spread_interior_vertices(b, 5);
+  std::vector<std::pair<typename boost::graph_traits<Mesh>::vertex_descriptor,
+                        typename boost::graph_traits<Mesh>::vertex_descriptor> > landmarks;
+  for(std::size_t k = 0; k < la.size(); ++k) landmarks.emplace_back(la[k], lb[(k + 1) % lb.size()]);
+  Location_map<Mesh> loc, back;
+  PE::Cross_parameterization_statistics st;
+  RUN(certified_cross(a, b, landmarks, loc, st, back));
+  CHECK(st.vertices_added_a > 0, "A's copy refined");
+  for(const auto& l : back)
+  {
+    const double sum = l.second.second[0] + l.second.second[1] + l.second.second[2];
+    CHECK(std::abs(sum - 1) < 1e-12 && *std::min_element(l.second.second.begin(), l.second.second.end()) >= 0,
+          "coordinates of a vertex of B on A");
+  }
+  std::cout << "shifted landmarks on " << file << " (" << mesh_name<Mesh>() << "): " << st.vertices_added_a
+            << " vertices added to A's copy, both directions located, landmarks exact, " << st.seconds_total << " s"
+            << std::endl;
+  return EXIT_SUCCESS;
+}
+
 // A a libcgal-demo disk, B its isotropically remeshed copy; landmarks: vertices of A spread out, matched to the
 // nearest vertex of B. The mean 3D distance between a vertex of A and the image of it on B, relative to the
 // bounding-box diagonal.
@@ -323,6 +352,13 @@ PE_TEST_GROUP(cross_identical)
   RUN(identical_grid<Surface_mesh>());
   RUN(identical_grid<Polyhedron>());
   RUN(identical_mesh<Surface_mesh>(data_dir + "/meshes/mushroom.off"));
+  return EXIT_SUCCESS;
+}
+
+PE_TEST_GROUP(cross_shifted)
+{
+  RUN(shifted_landmarks<Surface_mesh>(data_dir + "/meshes/mushroom.off"));
+  RUN(shifted_landmarks<Polyhedron>(data_dir + "/meshes/mushroom.off"));
   return EXIT_SUCCESS;
 }
 

@@ -2,7 +2,7 @@
 # Regenerates the tables and pictures of benchmark/results (see benchmark/results/README.md).
 #
 #   benchmark/regenerate_results.sh [--build DIR] [--out DIR] [--study] [--benchmark] [--constrained]
-#                                   [--polygons [--polygon-obj FILE.obj]]
+#                                   [--polygons [--polygon-obj FILE.obj]] [--cross]
 #
 # (default)    from the committed comparison-study run (study_runs.csv.gz, study_gallery.csv): the
 #              study's tables, plot and gallery; the driver only draws the gallery runs again (under
@@ -16,6 +16,8 @@
 # --polygons   also runs polygon_benchmark (polygon_triangulation.{csv,md}, about 2 minutes) and
 #              polygon_map_benchmark (polygon_maps.{csv,md}: maps onto Hilbert, star and spiral borders,
 #              about 15 minutes); --polygon-obj adds an OBJ disk with texture coordinates (repeatable).
+# --cross      also runs cross_benchmark (cross_parameterization.{csv,md}: mushroom and lion-head against
+#              their remeshed copies, 5, 20 and 50 landmarks, about a minute).
 # --build DIR  the CMake build directory (default: build); the drivers are built there.
 # --out DIR    the results folder (default: benchmark/results), e.g. a copy to compare with.
 #
@@ -30,6 +32,7 @@ study=0
 benchmark=0
 constrained=0
 polygons=0
+cross=0
 polygon_objs=""
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -39,9 +42,10 @@ while [ $# -gt 0 ]; do
     --benchmark) benchmark=1; shift ;;
     --constrained) constrained=1; shift ;;
     --polygons) polygons=1; shift ;;
+    --cross) cross=1; shift ;;
     --polygon-obj) [ $# -ge 2 ] || { echo "--polygon-obj needs a file" >&2; exit 2; }
                    polygon_objs="$polygon_objs --obj $(cd "$(dirname "$2")" && pwd)/$(basename "$2")"; shift 2 ;;
-    -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,24p' "$0"; exit 0 ;;
     *) echo "unknown option $1 (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -89,5 +93,9 @@ if [ "$polygons" = 1 ]; then
   "$build/bin/polygon_benchmark" "$results/polygon_triangulation" --budget 300
   # shellcheck disable=SC2086 # polygon_objs is a list of options
   "$build/bin/polygon_map_benchmark" "$build/cgal_data/data" "$results/polygon_maps" --seeds 2 --budget 20 $polygon_objs
+fi
+if [ "$cross" = 1 ]; then
+  cmake --build "$build" --target cross_benchmark
+  "$build/bin/cross_benchmark" "$build/cgal_data/data" "$results/cross_parameterization"
 fi
 echo "$results regenerated"

@@ -2,14 +2,16 @@
 # Installs the Debian packages the project needs (Debian 12 "bookworm"): compiler, CMake,
 # CGAL 5.5 with Eigen, Boost, GMP, MPFR and TBB, doxygen, python3 (test scripts), rsvg-convert and
 # pngquant (PNG pictures of the benchmark results), OpenMesh (a third FaceGraph model), pybind11,
-# NumPy and pytest (the Python module), GNU parallel (the sharded batch recipe), and
+# NumPy and pytest (the Python module), GNU parallel (the sharded batch recipe), Slurm and munge
+# (the test slurm_batch: scripts/slurm_batch.sh runs the README's job array on a one-node Slurm;
+# slurmctld and slurmd do not start on installation: they need /etc/slurm/slurm.conf), and
 # libcgal-demo for its real meshes (without its recommended packages: it would pull in Qt).
 # Runs apt-get only when a package is missing; as a non-root user it uses sudo.
 set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 
 packages=(libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev libtbb-dev doxygen cmake make g++ python3 librsvg2-bin pngquant
-          libopenmesh-dev pybind11-dev python3-dev python3-numpy python3-pytest parallel)
+          libopenmesh-dev pybind11-dev python3-dev python3-numpy python3-pytest parallel slurm-wlm munge)
 demo_packages=(libcgal-demo)
 
 missing=()

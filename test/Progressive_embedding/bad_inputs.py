@@ -322,7 +322,7 @@ CASES = [
      r"--iterations.*not a non-negative integer"),
     ("arguments", "iterations_missing", ["optimize", "{t}/fan_uv.obj", "{t}/o.obj", "--iterations"], 2,
      r"option --iterations needs a value"),
-    ("arguments", "tolerance_zero", ["optimize", "{t}/fan_uv.obj", "{t}/o.obj", "--tolerance", "0"], 2, r"--tolerance.*out of range"),
+    ("arguments", "tolerance_negative", ["optimize", "{t}/fan_uv.obj", "{t}/o.obj", "--tolerance", "-1e-3"], 2, r"--tolerance.*out of range"),
     ("arguments", "tolerance_nan", ["embed", "{t}/quad.off", "{t}/o.obj", "--tolerance", "nan"], 2, r"--tolerance.*out of range"),
     ("arguments", "tolerance_overflow", ["embed", "{t}/quad.off", "{t}/o.obj", "--tolerance", "1e400"], 2, r"--tolerance.*out of range"),
     ("arguments", "tolerance_text", ["optimize", "{t}/fan_uv.obj", "{t}/o.obj", "--tolerance", "small"], 2, r"--tolerance.*not a number"),

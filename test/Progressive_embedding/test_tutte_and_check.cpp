@@ -23,6 +23,7 @@
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/generators.h>
 
+#include <cstring>
 #include <limits>
 
 namespace {
@@ -156,6 +157,116 @@ void make_double_covered_strip(Mesh& m, UVM& uv, std::size_t N)
     CGAL::Euler::add_face(std::vector<vd>{ in[k], out[k + 1], in[k + 1] }, m);
     CGAL::Euler::add_face(std::vector<vd>{ in[k], out[k], out[k + 1] }, m);
   }
+}
+
+// FNV-1a over the exact values of a uv map, in vertex order: "numerator;denominator;" in base 16,
+// x then y (MPFR values converted exactly)
+template <class Mesh, class UVM>
+std::uint64_t exact_digest(const Mesh& m, const UVM& uv)
+{
+  std::uint64_t h = 1469598103934665603ull;
+  auto add = [&](const CGAL::Gmpq& q) {
+    for(mpz_srcptr z : { mpq_numref(q.mpq()), mpq_denref(q.mpq()) })
+    {
+      std::string s(mpz_sizeinbase(z, 16) + 2, '\0');
+      mpz_get_str(&s[0], 16, z);
+      s.resize(std::strlen(s.c_str()));
+      s += ';';
+      for(char ch : s) { h ^= static_cast<unsigned char>(ch); h *= 1099511628211ull; }
+    }
+  };
+  for(auto v : vertices(m))
+  {
+    add(PE::internal::to_rational(get(uv, v).x()));
+    add(PE::internal::to_rational(get(uv, v).y()));
+  }
+  return h;
+}
+
+// The exact (p-adic) and MPFR (in-place elimination) Tutte maps are those of the solvers they
+// replaced, bit for bit: the digests were computed with the right-looking elimination and the
+// previous p-adic solve (Hadamard bound, tries at 16, 32, ... steps). The exact map is unique; the
+// MPFR one is the same because the same operations are rounded in the same order.
+template <class Mesh>
+int test_exact_maps_unchanged(const std::string& data)
+{
+  std::cout << "[" << mesh_name<Mesh>() << "] exact and MPFR Tutte maps: bit for bit those of the previous solvers" << std::endl;
+  struct Case { const char* name; std::uint64_t exact, mpfr; };
+  const Case expected[] = {
+    { "grid 24, circle, uniform", 0x16d855c1000193a7ull, 0x7879603de9e5a262ull },
+    { "grid 12, circle, mean value", 0x612374bd8fe3990cull, 0xb437e05e6ccbc5c0ull },
+    { "dino.off seed 8, Tutte-failure protocol", 0x388a4b1517e03164ull, 0x0d923ace8e16c9baull } };
+  for(int c = 0; c < 3; ++c)
+  {
+    Mesh m;
+    if(c == 2) CHECK(read_mesh(data + "/meshes/dino.off", m), "read dino.off");
+    else PE::internal::make_grid_disk(c == 0 ? 24 : 12, m);
+    auto uvq = make_uv_map(m, Kq::Point_2());
+    auto uvf = make_uv_map(m, Kfr::Point_2());
+    const auto saved = CGAL::Gmpfr::get_default_precision();
+    CGAL::Gmpfr::set_default_precision(256);
+    PE::Border_shape shape = PE::Border_shape::CIRCLE;
+    if(c == 2)
+    {
+      std::array<vertex_descriptor<Mesh>, 3> pin;
+      CHECK(PE::internal::thingi_cut(m, 8, pin) == PE::OK, "the protocol's cut");
+      const double xy[3][2] = { { 0, 0 }, { 0.5, std::sqrt(3.) / 2 }, { 1, 0 } };
+      for(int k = 0; k < 3; ++k)
+      {
+        put(uvq, pin[k], Kq::Point_2(xy[k][0], xy[k][1]));
+        put(uvf, pin[k], Kfr::Point_2(CGAL::Gmpfr(xy[k][0], 256), CGAL::Gmpfr(xy[k][1], 256)));
+      }
+      shape = PE::Border_shape::FIXED;
+    }
+    const PE::Weights w = c == 1 ? PE::Weights::MEAN_VALUE : PE::Weights::UNIFORM;
+    const bool okq = PE::tutte_embedding(m, null_h<Mesh>(), uvq, PE::parameters::weights(w, PE::parameters::border_shape(shape))) == PE::OK;
+    const bool okf = PE::tutte_embedding(m, null_h<Mesh>(), uvf, PE::parameters::weights(w, PE::parameters::border_shape(shape))) == PE::OK;
+    CGAL::Gmpfr::set_default_precision(saved);
+    const std::uint64_t dq = okq ? exact_digest(m, uvq) : 0, df = okf ? exact_digest(m, uvf) : 0;
+    std::cout << "  " << expected[c].name << ": exact " << std::hex << dq << ", mpfr:256 " << df << std::dec << std::endl;
+    CHECK(okq && dq == expected[c].exact, expected[c].name << ": the exact map is unchanged");
+    CHECK(okf && df == expected[c].mpfr, expected[c].name << ": the MPFR map is unchanged");
+  }
+  {
+    // the in-place MPFR elimination and the generic one (CGAL::Gmpfr's operators) agree bit for bit,
+    // and so do the p-adic solve and the rational elimination on a non-symmetric system
+    Mesh m;
+    PE::internal::make_grid_disk(10, m);
+    PE::internal::Indexed_disk<Mesh> disk;
+    CHECK(PE::internal::make_indexed_disk(m, null_h<Mesh>(), disk) == PE::OK, "disk");
+    std::vector<std::vector<std::pair<std::size_t, double> > > adj;
+    CHECK(PE::internal::tutte_weights(disk, get(CGAL::vertex_point, m), PE::Weights::MEAN_VALUE, adj) == PE::OK, "weights");
+    std::vector<double> s = PE::internal::border_arc_length(disk, get(CGAL::vertex_point, m));
+    const auto saved = CGAL::Gmpfr::get_default_precision();
+    CGAL::Gmpfr::set_default_precision(200);
+    std::vector<Kfr::Point_2> bf, pf(disk.number_of_vertices());
+    PE::internal::circle_border<CGAL::Gmpfr>(s, bf);
+    for(std::size_t k = 0; k < disk.border.size(); ++k) pf[disk.border[k]] = bf[k];
+    PE::internal::Tutte_system<CGAL::Gmpfr> Sf;
+    PE::internal::assemble_tutte_system(disk, adj, pf, Sf);
+    PE::internal::Symbolic_factorization F;
+    F.analyze(Sf, PE::internal::fill_reducing_order(Sf));
+    PE::internal::Progress_budget budget;
+    std::vector<CGAL::Gmpfr> au, av, bu, bv;
+    CHECK(PE::internal::solve_by_elimination(Sf, budget, au, av) == PE::OK, "MPFR elimination in place");
+    CHECK(PE::internal::solve_by_elimination_generic(Sf, F, budget, bu, bv) == PE::OK, "MPFR elimination, generic");
+    CGAL::Gmpfr::set_default_precision(saved);
+    bool same = au.size() == bu.size();
+    for(std::size_t i = 0; same && i < au.size(); ++i)
+      same = au[i].get_precision() == bu[i].get_precision() && mpfr_equal_p(au[i].fr(), bu[i].fr()) && mpfr_equal_p(av[i].fr(), bv[i].fr());
+    CHECK(same, "the in-place and generic MPFR eliminations give the same bits");
+
+    std::vector<Kq::Point_2> bq, pq(disk.number_of_vertices());
+    PE::internal::circle_border<CGAL::Gmpq>(s, bq);
+    for(std::size_t k = 0; k < disk.border.size(); ++k) pq[disk.border[k]] = bq[k];
+    PE::internal::Tutte_system<CGAL::Gmpq> Sq;
+    PE::internal::assemble_tutte_system(disk, adj, pq, Sq);
+    std::vector<CGAL::Gmpq> eu, ev, lu, lv;
+    CHECK(PE::internal::solve_by_elimination(Sq, budget, eu, ev) == PE::OK, "rational elimination, mean value weights");
+    CHECK(PE::internal::solve_by_p_adic_lifting(Sq, budget, lu, lv) == PE::OK, "p-adic lifting, mean value weights");
+    CHECK(eu == lu && ev == lv, "the same exact solution");
+  }
+  return EXIT_SUCCESS;
 }
 
 template <class Mesh>
@@ -874,7 +985,12 @@ int run_group(const std::string& group, const std::string& data)
 {
   if(group == "stacked") return test_stacked_triangulation<Mesh>(40);
   if(group == "bull") return test_bull<Mesh>(data);
-  if(group == "disks") return test_disk_maps<Mesh>(data);
+  if(group == "disks")
+  {
+    RUN(test_disk_maps<Mesh>(data));
+    // the digests follow Surface_mesh's vertex order
+    return std::is_same<Mesh, Surface_mesh>::value ? test_exact_maps_unchanged<Mesh>(data) : EXIT_SUCCESS;
+  }
   if(group == "exact_scales") return test_exact_scales<Mesh>();
   if(group == "zero_length_border") return test_zero_length_border<Mesh>();
   if(group == "budget") return test_budget<Mesh>();

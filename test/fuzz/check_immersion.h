@@ -32,6 +32,10 @@ inline int product_sign(const Dir& u, const Dir& v, bool dot)
   const double t1 = dot ? ux * vx : ux * vy, t2 = dot ? -uy * vy : uy * vx, e = t1 - t2;
   const double scale = std::abs(t1) + std::abs(t2);
   if(std::isfinite(e) && std::isfinite(scale) && scale > 1e-280 && std::abs(e) > 1e-14 * scale) return e > 0 ? 1 : -1;
+  // ux vx + uy vy = ux vx - (-uy) vy: negation is exact
+  const int s = dot ? exact_in_double_sign(u.from.x, u.to.x, v.from.x, v.to.x, -u.from.y, -u.to.y, v.from.y, v.to.y)
+                    : exact_in_double_sign(u.from.x, u.to.x, v.from.y, v.to.y, u.from.y, u.to.y, v.from.x, v.to.x);
+  if(s != 2) return s;
   const Q qux = Q(u.to.x) - Q(u.from.x), quy = Q(u.to.y) - Q(u.from.y), qvx = Q(v.to.x) - Q(v.from.x), qvy = Q(v.to.y) - Q(v.from.y);
   const Q q = dot ? qux * qvx + quy * qvy : qux * qvy - quy * qvx;
   return int(q.sign());

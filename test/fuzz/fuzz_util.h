@@ -264,13 +264,44 @@ inline void build_mesh(const Small_disk& d, Mesh& m, std::vector<vertex_descript
 
 // Exact on doubles: the oracles only add, subtract, multiply and compare. Signs are taken from the
 // double evaluation when its error bound (a few units in the last place of the two products, with
-// a margin of 20) proves them, and computed exactly otherwise (Mpzf, CGAL's exact floating-point
-// ring: no division, fewer allocations than Gmpq).
+// a margin of 20) proves them, then from the double evaluation when every operation of it is
+// proved exact (error-free transformations), and computed exactly otherwise (Mpzf, CGAL's exact
+// floating-point ring: no division, fewer allocations than Gmpq).
 typedef CGAL::Mpzf Q;
 
 struct Qpoint { double x, y; };
 
 inline Qpoint qpoint(double x, double y) { return Qpoint{ x, y }; }
+
+// b - a, true if it is exact in double: Knuth's two-sum gives its rounding error (false on overflow)
+inline bool exact_difference(double b, double a, double& d)
+{
+  d = b - a;
+  if(!std::isfinite(d)) return false;
+  const double bv = d - b;
+  return (b - (d - bv)) + (-a - bv) == 0;
+}
+
+// u v, true if it is exact in double: the fused multiply-add gives its rounding error, which is
+// representable away from the subnormal range (false there and on overflow)
+inline bool exact_product(double u, double v, double& p)
+{
+  p = u * v;
+  if(!std::isfinite(p)) return false;
+  if(p == 0) return u == 0 || v == 0;
+  return std::abs(p) >= 0x1p-960 && std::fma(u, v, -p) == 0;
+}
+
+// The sign of (bx - ax)(dy - cy) - (by - ay)(dx - cx) when the four differences and the two products
+// are exact in double (then comparing the products is exact), else 2. It decides the small lattice
+// coordinates that the filters below leave to Mpzf (collinear and repeated points) without it.
+inline int exact_in_double_sign(double ax, double bx, double cy, double dy, double ay, double by, double cx, double dx)
+{
+  double u, v, w, z, p, q;
+  if(!exact_difference(bx, ax, u) || !exact_difference(dy, cy, v) || !exact_difference(by, ay, w)
+     || !exact_difference(dx, cx, z) || !exact_product(u, v, p) || !exact_product(w, z, q)) return 2;
+  return p > q ? 1 : (p < q ? -1 : 0);
+}
 
 // the sign of the determinant of (b - a, c - a)
 inline int orient(const Qpoint& a, const Qpoint& b, const Qpoint& c)
@@ -279,6 +310,8 @@ inline int orient(const Qpoint& a, const Qpoint& b, const Qpoint& c)
   const double scale = std::abs(t1) + std::abs(t2);
   // away from overflow and from the subnormal range, where relative error bounds fail
   if(std::isfinite(d) && std::isfinite(scale) && scale > 1e-280 && std::abs(d) > 1e-14 * scale) return d > 0 ? 1 : -1;
+  const int s = exact_in_double_sign(a.x, b.x, a.y, c.y, a.y, b.y, a.x, c.x);
+  if(s != 2) return s;
   const Q e = (Q(b.x) - Q(a.x)) * (Q(c.y) - Q(a.y)) - (Q(b.y) - Q(a.y)) * (Q(c.x) - Q(a.x));
   return int(e.sign());
 }

@@ -73,8 +73,13 @@ PE_FUZZ_TARGET_FUNCTION(progressive_embedding)
   Uv_map uv = m.add_property_map<vertex_descriptor, Point_2>("v:uv").first;
   for(std::size_t i = 0; i < d.nv; ++i) uv[V[i]] = Point_2(xy[2 * i], xy[2 * i + 1]);
 
-  // a small budget: the maps have at most 16 vertices; libFuzzer's timeout catches a loop that ignores it
-  const PE::Error_code ec = PE::progressive_embedding(m, uv, CGAL::parameters::maximum_running_time(2.0));
+  // Small budgets, named: the maps have at most 16 vertices. An insertion that fails gets 2 retries of
+  // 10 smoothing passes (not 20 of 50): a map that needs more returns an error, which is checked like
+  // any other. The time budget only bounds what the counts do not; libFuzzer's timeout catches a loop
+  // that ignores both.
+  const PE::Error_code ec = PE::progressive_embedding(m, uv, PE::parameters::insertion_retries(2).retry_smoothing_iterations(10)
+                                                               .line_search_factor(0.5).line_search_steps(25)
+                                                               .maximum_running_time(0.25));
   std::vector<double> out(2 * d.nv);
   for(std::size_t i = 0; i < d.nv; ++i) { out[2 * i] = uv[V[i]].x(); out[2 * i + 1] = uv[V[i]].y(); }
   if(ec != PE::OK)

@@ -28,19 +28,37 @@ namespace polygon_oracle {
 typedef CGAL::Simple_cartesian<CGAL::Gmpq> Kq;
 typedef Kq::Point_2                        Qp;
 
+// The polygon's points (exact) and the orientations of their triples, each computed once: the brute
+// force tries up to 132 triangulations, twice, on the same few points.
+class Polygon
+{
+  std::vector<Qp> P;
+  mutable std::vector<signed char> memo; // by i n^2 + j n + k; 2: not computed yet
+public:
+  explicit Polygon(std::vector<Qp> points) : P(std::move(points)), memo(P.size() * P.size() * P.size(), 2) {}
+  std::size_t size() const { return P.size(); }
+  const Qp& operator[](std::size_t i) const { return P[i]; }
+  CGAL::Orientation orientation(std::size_t i, std::size_t j, std::size_t k) const
+  {
+    signed char& o = memo[(i * P.size() + j) * P.size() + k];
+    if(o == 2) o = static_cast<signed char>(CGAL::orientation(P[i], P[j], P[k]));
+    return CGAL::Orientation(o);
+  }
+};
+
 // position of the direction v->d in [0, 2 pi) counterclockwise from v->a0: the half-plane first,
 // then the sign of the cross product
-inline bool upper_rel(const Qp& v, const Qp& a0, const Qp& d)
+inline bool upper_rel(const Polygon& Q, std::size_t v, std::size_t a0, std::size_t d)
 {
-  const CGAL::Orientation o = CGAL::orientation(v, a0, d);
+  const CGAL::Orientation o = Q.orientation(v, a0, d);
   if(o != CGAL::COLLINEAR) return o == CGAL::LEFT_TURN;
-  return (a0 - v) * (d - v) > 0; // the direction of a0: angle 0
+  return (Q[a0] - Q[v]) * (Q[d] - Q[v]) > 0; // the direction of a0: angle 0
 }
-inline bool angle_less(const Qp& v, const Qp& a0, const Qp& a, const Qp& b)
+inline bool angle_less(const Polygon& Q, std::size_t v, std::size_t a0, std::size_t a, std::size_t b)
 {
-  const bool ua = upper_rel(v, a0, a), ub = upper_rel(v, a0, b);
+  const bool ua = upper_rel(Q, v, a0, a), ub = upper_rel(Q, v, a0, b);
   if(ua != ub) return ua;
-  return CGAL::orientation(v, a, b) == CGAL::LEFT_TURN;
+  return Q.orientation(v, a, b) == CGAL::LEFT_TURN;
 }
 
 // Empty if the index triangles T triangulate an immersed disk bounded by the polygon Q (edges in the
@@ -48,7 +66,7 @@ inline bool angle_less(const Qp& v, const Qp& a0, const Qp& a, const Qp& b)
 // triangle in the polygon's direction, each diagonal in two (once each way), Euler characteristic 1, and
 // around every vertex a fan from its next edge to its previous edge that turns monotonically (vertices
 // with a positive rotation index are certified by their angle sums instead, angle_sum_failure()).
-inline std::string immersion_failure(const std::vector<Qp>& Q, const std::vector<Tri>& T, bool ccw,
+inline std::string immersion_failure(const Polygon& Q, const std::vector<Tri>& T, bool ccw,
                                      const std::vector<int>& turns)
 {
   const std::size_t n = Q.size();
@@ -57,7 +75,7 @@ inline std::string immersion_failure(const std::vector<Qp>& Q, const std::vector
   for(std::size_t t = 0; t < T.size(); ++t)
   {
     for(int c = 0; c < 3; ++c) if(T[t][c] >= n) return "index out of range";
-    if(CGAL::orientation(Q[T[t][0]], Q[T[t][1]], Q[T[t][2]]) != CGAL::LEFT_TURN) return "a triangle not strictly positive";
+    if(Q.orientation(T[t][0], T[t][1], T[t][2]) != CGAL::LEFT_TURN) return "a triangle not strictly positive";
     for(int c = 0; c < 3; ++c)
       if(!directed.emplace(std::make_pair(T[t][c], T[t][(c + 1) % 3]), t).second) return "a directed edge used twice";
   }
@@ -91,7 +109,7 @@ inline std::string immersion_failure(const std::vector<Qp>& Q, const std::vector
     {
       if(fan[k].count(a) != 1 || ++steps > n) return "a broken fan";
       const std::size_t b = fan[k][a];
-      if((turns.empty() || turns[k] == 0) && !angle_less(Q[k], Q[first], Q[a], Q[b])) return "a fan not turning monotonically";
+      if((turns.empty() || turns[k] == 0) && !angle_less(Q, k, first, a, b)) return "a fan not turning monotonically";
       a = b;
     }
   }
@@ -101,7 +119,7 @@ inline std::string immersion_failure(const std::vector<Qp>& Q, const std::vector
 const double two_pi = 2 * 3.14159265358979323846;
 
 // counterclockwise angle from o->a to o->b in (-pi, pi] (double)
-inline double corner_angle(const std::vector<Qp>& Q, std::size_t o, std::size_t a, std::size_t b)
+inline double corner_angle(const Polygon& Q, std::size_t o, std::size_t a, std::size_t b)
 {
   const double ux = CGAL::to_double(Q[a].x() - Q[o].x()), uy = CGAL::to_double(Q[a].y() - Q[o].y());
   const double vx = CGAL::to_double(Q[b].x() - Q[o].x()), vy = CGAL::to_double(Q[b].y() - Q[o].y());
@@ -110,7 +128,7 @@ inline double corner_angle(const std::vector<Qp>& Q, std::size_t o, std::size_t 
 
 // Empty if at every vertex k the triangles' corners sum to the polygon's angle (in (0, 2 pi], from
 // k->next to k->prev) plus 2 pi turns[k], within `tol` (small integer coordinates only).
-inline std::string angle_sum_failure(const std::vector<Qp>& Q, const std::vector<Tri>& T, const std::vector<int>& turns, double tol)
+inline std::string angle_sum_failure(const Polygon& Q, const std::vector<Tri>& T, const std::vector<int>& turns, double tol)
 {
   const std::size_t n = Q.size();
   std::vector<double> sum(n, 0.);
@@ -197,9 +215,10 @@ PE_FUZZ_TARGET_FUNCTION(triangulate_polygon)
   if(n < 3) { PE_FUZZ_CHECK(ec == PE::ERROR_BORDER_TOO_SHORT, "a polygon of " << n << " points: " << PE::get_error_name(ec)); return 0; }
   if(!finite) { PE_FUZZ_CHECK(ec == PE::ERROR_NON_FINITE_COORDINATES, "non-finite coordinates: " << PE::get_error_name(ec)); return 0; }
 
-  std::vector<Qp> Q, Qr;
-  for(std::size_t k = 0; k < n; ++k) Q.push_back(Qp(CGAL::Gmpq(xy[2 * k]), CGAL::Gmpq(xy[2 * k + 1])));
-  Qr.assign(Q.rbegin(), Q.rend());
+  std::vector<Qp> points;
+  for(std::size_t k = 0; k < n; ++k) points.push_back(Qp(CGAL::Gmpq(xy[2 * k]), CGAL::Gmpq(xy[2 * k + 1])));
+  const Polygon Qr(std::vector<Qp>(points.rbegin(), points.rend()));
+  const Polygon Q(std::move(points));
   const std::vector<int> no_turns(n, 0);
   const std::vector<int>& r = turns.empty() ? no_turns : turns;
   bool exists = false;

@@ -186,6 +186,7 @@ int cmd_untangle(const Arguments& a);
 int cmd_embed(const Arguments& a);
 int cmd_optimize(const Arguments& a);
 int cmd_constrain(const Arguments& a);
+int cmd_cross(const Arguments& a);
 int cmd_polygon(const Arguments& a);
 int cmd_generate(const Arguments& a);
 int cmd_demo(const Arguments& a);

@@ -78,7 +78,8 @@ struct Option_spec
   Kind kind;
   const char* value;    // the value in the usage; for CHOICE, the choices separated by '|'
   const char* help;
-  double lo = 0, hi = 0;   // COUNT: [lo, hi]; REAL: (lo, hi]
+  double lo = 0, hi = 0;   // COUNT: [lo, hi]; REAL: (lo, hi], or [lo, hi] with lo_closed
+  bool lo_closed = false;
 };
 
 const double max_unsigned = double(std::numeric_limits<unsigned>::max());
@@ -103,7 +104,7 @@ const Option_spec option_table[] = {
   { "--tolerance", Kind::REAL, "X",
     "the optimization has converged when two consecutive iterations each lower the energy by less\n"
     "than this fraction (0 <= X < 1, default 1e-5; 0 runs the whole iteration budget)",
-    0, std::nextafter(1., 0.) },
+    0, std::nextafter(1., 0.), true },
   { "--time-limit", Kind::REAL, "SECONDS",
     "time budget of the command's long steps: a Tutte solve or a repair that exceeds it fails (exit 1,\n"
     "ERROR_BUDGET_EXHAUSTED); an optimization stops there, with its valid map. batch: the wall time of\n"
@@ -181,6 +182,12 @@ const std::vector<Command_spec>& command_table()
       "the constrained vertices. Without --fix (or with an empty file) only the border is prescribed; a vt\n"
       "border may be non-convex: simple (an embedding) or weakly self-overlapping (an immersion, certified\n"
       "locally injective, border only, optimized as an immersion; JSON \"immersion\": true)", cmd_constrain },
+    { "cross", "A B LANDMARKS OUT.txt", 4, 4, 3, { "--time-limit" },
+      "the location on the disk B of every vertex of the disk A through a certified cross-parameterization:\n"
+      "both borders on the unit square by relative arc length, B mapped first, A mapped with its landmarks\n"
+      "pinned on their partners' uv (LANDMARKS: 'a_index b_index' lines, interior vertices, 0-based in file\n"
+      "order); OUT.txt: one line per vertex of A in file order, 'face_index b0 b1 b2' (the face of B in B's\n"
+      "file order, the barycentric coordinates of its vertices in the order the face lists them)", cmd_cross },
     { "polygon", "POLY.txt OUT.obj", 2, 2, 1, { "--svg", "--time-limit" },
       "is the polygon of POLY.txt ('x y' lines, one vertex each, the last joined to the first) simple,\n"
       "weakly self-overlapping (the border of an immersed disk) or neither (exit 3,\n"
@@ -291,18 +298,18 @@ std::string usage_text()
   return u;
 }
 
-// parses `s` as a whole real number in (lo, hi]; `s` must stay alive while strtod reads it
-bool parse_real(const std::string& s, double lo, double hi, double& out, std::string& why)
+// parses `s` as a whole real number in (lo, hi] ([lo, hi] if lo_closed); `s` must stay alive while strtod reads it
+bool parse_real(const std::string& s, double lo, double hi, bool lo_closed, double& out, std::string& why)
 {
   errno = 0;
   char* end = nullptr;
   const char* begin = s.c_str();
   const double d = (s.empty() || std::isspace(static_cast<unsigned char>(s[0]))) ? 0 : std::strtod(begin, &end);
   if(end == nullptr || end == begin || *end != '\0') { why = "'" + s + "' is not a number"; return false; }
-  if(errno == ERANGE || !std::isfinite(d) || !(d > lo) || !(d <= hi))
+  if(errno == ERANGE || !std::isfinite(d) || !(lo_closed ? d >= lo : d > lo) || !(d <= hi))
   {
     std::ostringstream os;
-    os << "'" << s << "' is out of range (a number > " << lo << " and <= " << hi << " expected)";
+    os << "'" << s << "' is out of range (a number " << (lo_closed ? ">= " : "> ") << lo << " and <= " << hi << " expected)";
     why = os.str();
     return false;
   }
@@ -339,7 +346,7 @@ std::string check_value(const Option_spec& o, const std::string& v, Arguments& a
     case Kind::REAL:
     {
       double d = 0;
-      if(!parse_real(v, o.lo, o.hi, d, why)) return "option " + name + ": " + why;
+      if(!parse_real(v, o.lo, o.hi, o.lo_closed, d, why)) return "option " + name + ": " + why;
       a.reals[name] = d;
       break;
     }

@@ -43,6 +43,17 @@ namespace Progressive_embedding {
 /// moves within its own star, so a single tiny face does not hold back the whole map. With a free border, the
 /// border vertices of a sweep move first and are put back together unless the border stays simple.
 ///
+/// <b>Free border.</b> Where the border closes on itself (e.g. the two sides of a cut at a cone whose angle exceeds
+/// \f$2\pi\f$), a yes-or-no test of simplicity would let each step bring the two sides closer until the line search
+/// stalls with them a few ulps apart. The minimized energy of a disk with a free border therefore has a barrier term:
+/// each border vertex closer to a border edge (not its own) than half the shorter of their 3D edge lengths adds
+/// \f$-w (1 - x)^2 \ln x\f$, \f$x\f$ the distance over that reach and \f$w\f$ the edge's squared 3D length (a vertex
+/// one border vertex away from the edge only when the angle between them is reflex); its gradient and the
+/// diagonal blocks of its Gauss-Newton Hessian enter the Newton step and the per-vertex steps, and every step is also
+/// bounded by the first time a border vertex would reach a border edge. The line search thus sees the border
+/// closing before the exact test refuses it; the exact tests and the certificate are unchanged. The reported
+/// energies (`Optimization_statistics`) are the certificate's, without the barrier.
+///
 /// <b>Multiply connected maps.</b> The mesh may also be a connected genus-0 mesh with several border cycles, mapped
 /// validly in the sense of `check_embedding()` with `multiply_connected(true)` (e.g. by the hole-filling embedding):
 /// the outer cycle (largest uv area) is the border, fixed unless `free_border` is set, and the vertices of the holes
@@ -98,7 +109,8 @@ namespace Progressive_embedding {
 ///     \cgalParamDefault{no limit}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{free_border}
-///     \cgalParamDescription{let the border vertices move (the border stays a simple polygon)}
+///     \cgalParamDescription{let the border vertices move (the border stays a simple polygon, decided exactly; a barrier
+///                           term of the energy keeps the border's parts apart where it closes on itself, see above)}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd

@@ -138,20 +138,26 @@ Error_code tutte_interior(const Indexed_disk<TriangleMesh>& disk, VPM vpm, const
 /// The linear system is solved by sparse LDLT (`double`, uniform weights) or sparse LU (`double`,
 /// mean value weights) from Eigen. With `CGAL::Gmpq` it is solved exactly by p-adic lifting (Dixon):
 /// one sparse LU factorization modulo a word-size prime in a fill-reducing order, lifting steps in
-/// integers, rational reconstruction, and an exact verification of the solution (if it cannot
-/// conclude, a sparse Gaussian elimination in rationals takes over). In any other number type
-/// (`CGAL::Gmpfr`, other exact types) the system is solved by that sparse Gaussian elimination in
-/// the number type itself. These solvers report their progress to `callback` and stop at
-/// `maximum_running_time`. Another solver can be given with `sparse_linear_solver` (then progress
-/// is reported only before and after its factorization).
+/// word-size integers for both coordinates at once, as many as a bound on the solution's size asks
+/// (from the determinant, estimated by the same factorization in double), rational reconstruction
+/// with a common denominator, and an exact verification of the solution (if it cannot conclude, a
+/// sparse Gaussian elimination in rationals takes over). In any other number type (`CGAL::Gmpfr`,
+/// other exact types) the system is solved by that sparse Gaussian elimination in the number type
+/// itself (for `CGAL::Gmpfr` in place on MPFR numbers, with the same roundings as its operators).
+/// These solvers report their progress to `callback` and stop at `maximum_running_time`. Another
+/// solver can be given with `sparse_linear_solver` (then progress is reported only before and after
+/// its factorization).
 ///
 /// <b>Cost of exact arithmetic.</b> The rational solution has numerators and denominators of about
-/// as many bits as the system has unknowns, so exact solves are much slower than `double` ones:
-/// on a grid disk (uniform weights, circle border), Eigen's sparse LU over `CGAL::Gmpq` takes
-/// 0.03 s for 100 unknowns, 1.35 s for 400 and 22.6 s for 1024 (time about cubic), the rational
-/// elimination 0.02 s, 0.73 s and 11.5 s, and the p-adic solve used by default 0.004 s, 0.025 s,
-/// 0.14 s and 1.2 s for 2304 unknowns (about n^2.5). Use `callback` to show progress and
-/// `maximum_running_time` to bound the time.
+/// two bits per vertex each (8,108 bits for the 3,916 vertices of `dino.off` cut by the Tutte-failure
+/// protocol, 40,441 bits for the 17,495 of `man.off`), so the exact map alone takes memory about
+/// quadratic in the number of vertices (about 350 MB at 17,500 vertices) and its time grows faster
+/// than that: the lifting takes about n/7 steps, each a sparse triangular solve modulo p, and each
+/// of the 2n coordinates needs a few products of integers of that size. The measured times and
+/// memory of the exact and MPFR maps from 4k to 100k vertices are in
+/// `benchmark/results/exact_tutte.md`. Eigen's sparse LU over `CGAL::Gmpq`, for comparison, takes
+/// 0.03 s for 100 unknowns, 1.35 s for 400 and 22.6 s for 1024 (time about cubic). Use `callback`
+/// to show progress and `maximum_running_time` to bound the time.
 ///
 /// A fixed border may be weakly convex: strictly convex corners with any number of border vertices
 /// on the straight sides between them (a polygon traversed once, counterclockwise or clockwise, no

@@ -10,6 +10,10 @@
 //   global_step()       projected Newton: per-face Hessians projected to SPD with the analytic
 //                       eigensystem of isotropic energies, one sparse solve
 //   line_search()       flip-free bound, then backtracking; every candidate certified exactly
+//   border barrier      free border of a disk: a term of the energy that grows without bound as a
+//                       border vertex nears a border edge, and a bound of the step at the first
+//                       contact, so that the line search sees the border closing before the exact
+//                       test refuses it (see border_barrier_terms() in internal/newton_step.h)
 //   vertex_sweep()      per-vertex projected Newton steps (border phase checked for simplicity)
 // Multiply connected maps (several border loops, see internal/constrained/holes_domain.h): the
 // outer loop is the border (fixed unless free_border), the hole vertices are free. A step that
@@ -256,6 +260,7 @@ public:
     ec = build_frames(stats.report.border_area);
     if(ec != OK) return ec;
     build_stars_and_colours();
+    build_border_barrier();
     return OK;
   }
 
@@ -266,7 +271,7 @@ public:
   {
     CGAL::Real_timer timer;
     timer.start();
-    double E = energy(X_, Y_);
+    double E = objective(X_, Y_);
     if(s_.verbose) std::cerr << "[optimize] energy " << E << ", " << nfree_ << " free vertices\n";
     Error_code result = ERROR_BUDGET_EXHAUSTED;
     std::size_t quiet = 0; // consecutive iterations below the tolerance
@@ -283,7 +288,7 @@ public:
       {
         vertex_sweep();
         ++stats.vertex_sweeps;
-        E = energy(X_, Y_);
+        E = objective(X_, Y_);
       }
       ++stats.iterations;
       const double decrease = (E0 - E) / E0;
@@ -292,7 +297,9 @@ public:
       stats.energy_current = E;
       if(s_.callback && !s_.callback(double(stats.iterations) / double(s_.max_iterations))) break;
       // converged: two consecutive iterations lower the energy by less than the tolerance
-      quiet = (decrease < s_.tolerance) ? quiet + 1 : 0;
+      // (a tolerance of 0 never converges: a step that gains nothing, or loses a rounding error, still
+      // leaves the rest of the budget to run)
+      quiet = (s_.tolerance > 0 && decrease < s_.tolerance) ? quiet + 1 : 0;
       if(quiet >= 2) { result = OK; stats.converged = true; break; }
     }
     stats.seconds = timer.time();
@@ -360,6 +367,14 @@ public:
     return e / total_weight_;
   }
 
+  // The minimized energy: energy() plus, with a free disk border, the border barrier (same scale)
+  double objective(const std::vector<double>& x, const std::vector<double>& y) const
+  {
+    const double e = energy(x, y);
+    if(!barrier_ || !std::isfinite(e)) return e;
+    return e + barrier_energy(x, y) / total_weight_;
+  }
+
   // One projected Newton step of the whole map; lowers E (mean energy) and returns true if a
   // step was accepted.
   bool global_step(double& E)
@@ -387,6 +402,7 @@ public:
       tmax = (std::min)(tmax, 0.8 * triangle_degeneration_time(X_[t[0]], Y_[t[0]], X_[t[1]], Y_[t[1]], X_[t[2]], Y_[t[2]],
                                                                dx[t[0]], dy[t[0]], dx[t[1]], dy[t[1]], dx[t[2]], dy[t[2]]));
     }
+    if(barrier_) tmax = (std::min)(tmax, 0.8 * border_contact_time(dx, dy, tmax));
     held_back_ = tmax < 1;
     std::vector<double> nx(X_), ny(Y_);
     std::vector<Point_2> Pn(P_);
@@ -394,7 +410,7 @@ public:
     {
       for(std::size_t i = 0; i < nv_; ++i)
         if(var_[i] >= 0) { nx[i] = X_[i] + t * dx[i]; ny[i] = Y_[i] + t * dy[i]; }
-      const double En = energy(nx, ny);
+      const double En = objective(nx, ny);
       if(!(En < E)) continue;
       for(std::size_t i = 0; i < nv_; ++i)
         if(var_[i] >= 0)
@@ -403,7 +419,7 @@ public:
         continue;
       P_.swap(Pn);
       refresh_doubles();
-      E = energy(X_, Y_);
+      E = objective(X_, Y_);
       return true;
     }
     return false;
@@ -460,6 +476,15 @@ public:
       E0 += Ef * w; g[0] += gf[0] * w; g[1] += gf[1] * w;
       H[0] += Hf[0] * w; H[1] += Hf[1] * w; H[2] += Hf[2] * w;
     }
+    const bool barrier = barrier_ && border_pos_[i] >= 0;
+    std::vector<Barrier_pair> near; // border vertices move one at a time: no sharing
+    if(barrier)
+    {
+      double Eb = 0;
+      pairs_of(i, 0., near);
+      if(!vertex_barrier(i, X_[i], Y_[i], near, Eb, g, H)) return false;
+      E0 += Eb;
+    }
     double d[2];
     if(!projected_newton_direction(g, H, d)) return false;
     double tmax = 1.0;
@@ -467,6 +492,12 @@ public:
     {
       const std::size_t a = corner(fc, 1), b = corner(fc, 2);
       tmax = (std::min)(tmax, 0.8 * vertex_degeneration_time(X_[i], Y_[i], d[0], d[1], X_[a], Y_[a], X_[b], Y_[b]));
+    }
+    if(barrier)
+    {
+      // every pair that a step of at most tmax can bring within reach or into contact
+      pairs_of(i, tmax * std::sqrt(d[0] * d[0] + d[1] * d[1]), near);
+      tmax = (std::min)(tmax, 0.8 * vertex_contact_time(d, near));
     }
     double t = tmax;
     for(int k = 0; k < 16; ++k, t *= 0.5) // a vertex that cannot move now may move in a later sweep
@@ -480,6 +511,12 @@ public:
         const double e = star_face_energy(fc, xi, yi, X_[a], Y_[a], X_[b], Y_[b]);
         if(!(e >= 0)) { valid = false; break; }
         En += e * frames_[fc.first].weight;
+      }
+      if(valid && barrier)
+      {
+        double Eb = 0, gb[2] = {0, 0}, Hb[3] = {0, 0, 0};
+        valid = vertex_barrier(i, xi, yi, near, Eb, gb, Hb);
+        En += Eb;
       }
       if(!valid || !(En < E0)) continue;
       const Point_2 old = P_[i];
@@ -566,6 +603,7 @@ private:
     if(good == 0 || !(total > 0) || !std::isfinite(total)) return ERROR_DEGENERATE_3D_FACE;
     const double k2 = border_area / total;
     if(!(k2 > 0) || !std::isfinite(k2)) return ERROR_DEGENERATE_BORDER;
+    reference_scale_ = std::sqrt(k2);
     const double mean_area = total / double(good);
     const Reference_triangle<double> fallback = equilateral_reference(mean_area, std::sqrt(3.));
     frames_.resize(nf_);
@@ -714,6 +752,7 @@ private:
         - H_.innerIndexPtr()));
       std::vector<Eigen::Triplet<double> >().swap(triplets_);
     }
+    if(barrier_ && !add_barrier_derivatives(grad)) return false;
     return grad.allFinite();
   }
 
@@ -857,6 +896,262 @@ private:
     return r;
   }
 
+  // ---- border barrier ------------------------------------------------------------------------
+  // Free border of a disk: for a border vertex v and a border edge e not incident to v, the reach
+  // h = barrier_reach * min(reference length of e, reference lengths of v's two border edges) and
+  // the weight k = (reference length of e)^2, so that a pair at a tenth of its reach weighs about as
+  // much as one face of the border. The lengths are those of the scaled 3D triangles: fixed.
+  void build_border_barrier()
+  {
+    barrier_ = s_.free_border && !holes_ && !immersion_ && disk_.border.size() >= 4;
+    if(!barrier_) return;
+    const std::size_t n = disk_.border.size();
+    border_pos_.assign(nv_, -1);
+    for(std::size_t k = 0; k < n; ++k) border_pos_[disk_.border[k]] = long(k);
+    edge_length_.resize(n);
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      const auto& p = get(vpm_, disk_.vertices[disk_.border[k]]);
+      const auto& q = get(vpm_, disk_.vertices[disk_.border[(k + 1) % n]]);
+      const double ex = CGAL::to_double(q.x()) - CGAL::to_double(p.x()), ey = CGAL::to_double(q.y()) - CGAL::to_double(p.y()),
+                   ez = CGAL::to_double(q.z()) - CGAL::to_double(p.z());
+      edge_length_[k] = reference_scale_ * std::sqrt(ex * ex + ey * ey + ez * ez);
+    }
+    // a border edge of zero 3D length: the mean length instead (its reach must not vanish)
+    double mean = 0;
+    for(double l : edge_length_) mean += l;
+    mean /= double(n);
+    if(!(mean > 0) || !std::isfinite(mean)) { barrier_ = false; return; }
+    for(double& l : edge_length_) if(!(l > 0) || !std::isfinite(l)) l = mean;
+    vertex_length_.resize(n);
+    max_reach_ = 0;
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      vertex_length_[k] = (std::min)(edge_length_[k], edge_length_[(k + n - 1) % n]);
+      max_reach_ = (std::max)(max_reach_, barrier_reach_ * edge_length_[k]);
+    }
+  }
+
+  // a pair that involves one moving vertex: border positions of the vertex and of the edge's first
+  // vertex, and which of the pair's three corners moves (0: the vertex, 1, 2: the edge's ends)
+  struct Barrier_pair { std::size_t k, e; int c; };
+
+  // the pairs (border position of the vertex, border position of the edge's first vertex)
+  // that the barrier considers: the edge is not incident to the vertex
+  bool barrier_pair(std::size_t k, std::size_t e) const
+  {
+    const std::size_t n = disk_.border.size();
+    return e != k && (e + 1) % n != k;
+  }
+
+  double barrier_reach(std::size_t k, std::size_t e) const
+  {
+    return barrier_reach_ * (std::min)(edge_length_[e], vertex_length_[k]);
+  }
+
+  // f(k, e) for the pairs whose vertex lies within max_reach_ of the edge's x-range: the others
+  // are beyond their reach (broad phase: the vertices sorted by x)
+  template <class F>
+  void for_each_near_pair(const std::vector<double>& x, const F& f) const
+  {
+    const std::size_t n = disk_.border.size();
+    std::vector<std::pair<double, std::size_t> > xs(n);
+    for(std::size_t k = 0; k < n; ++k) xs[k] = std::make_pair(x[disk_.border[k]], k);
+    std::sort(xs.begin(), xs.end());
+    for(std::size_t e = 0; e < n; ++e)
+    {
+      const double xa = x[disk_.border[e]], xb = x[disk_.border[(e + 1) % n]];
+      const double lo = (std::min)(xa, xb) - max_reach_, hi = (std::max)(xa, xb) + max_reach_;
+      auto it = std::lower_bound(xs.begin(), xs.end(), std::make_pair(lo, std::size_t(0)));
+      for(; it != xs.end() && it->first <= hi; ++it)
+        if(barrier_pair(it->second, e)) f(it->second, e);
+    }
+  }
+
+  // One pair: its energy k * b(d / h) added to E; its distance gradient and the first and second
+  // derivatives of the energy in d in g, e1, e2; false if the vertex touches the segment.
+  // Nothing is added when the pair is beyond its reach (active is then false).
+  // Vertex `moved` (none by default) is taken at (mx, my) instead of its place in (x, y).
+  bool barrier_pair_terms(std::size_t k, std::size_t e, const std::vector<double>& x, const std::vector<double>& y,
+                          double& E, double g[6], double& e1, double& e2, bool& active,
+                          std::size_t moved = std::size_t(-1), double mx = 0, double my = 0) const
+  {
+    const std::size_t n = disk_.border.size();
+    const std::size_t v = disk_.border[k], a = disk_.border[e], b = disk_.border[(e + 1) % n];
+    const double vx = v == moved ? mx : x[v], vy = v == moved ? my : y[v];
+    const double ax = a == moved ? mx : x[a], ay = a == moved ? my : y[a];
+    const double bx = b == moved ? mx : x[b], by = b == moved ? my : y[b];
+    const double h = barrier_reach(k, e);
+    active = false;
+    // cheap rejection: v outside the edge's box grown by h
+    if(vx < (std::min)(ax, bx) - h || vx > (std::max)(ax, bx) + h ||
+       vy < (std::min)(ay, by) - h || vy > (std::max)(ay, by) + h) return true;
+    // a vertex next to the edge (one border vertex between them) measures the angle there: only a
+    // reflex angle closing to 2 pi (the vertex outside the edge's line) is kept open; a sharp convex
+    // corner is the faces' business
+    if((k + 1) % n == e || (e + 2) % n == k)
+      if(!((bx - ax) * (vy - ay) - (by - ay) * (vx - ax) < 0)) return true;
+    double d;
+    if(!point_segment_distance(vx, vy, ax, ay, bx, by, d, g)) return false;
+    if(!(d < h)) return true;
+    double b0, b1, b2;
+    border_barrier_terms(d / h, b0, b1, b2);
+    const double w = edge_length_[e] * edge_length_[e];
+    E += w * b0;
+    e1 = w * b1 / h;
+    e2 = w * b2 / (h * h);
+    active = true;
+    return std::isfinite(E);
+  }
+
+  // the barrier's energy (not divided by the total weight); +inf if a vertex touches an edge
+  double barrier_energy(const std::vector<double>& x, const std::vector<double>& y) const
+  {
+    double E = 0, g[6], e1, e2;
+    bool active, ok = true;
+    for_each_near_pair(x, [&](std::size_t k, std::size_t e) {
+      if(ok && !barrier_pair_terms(k, e, x, y, E, g, e1, e2, active)) ok = false;
+    });
+    return ok ? E : std::numeric_limits<double>::infinity();
+  }
+
+  // Adds the barrier's gradient to grad and a positive semi-definite part of its Hessian to H_:
+  // the Gauss-Newton term e2 * g g^T reduced to its 2x2 diagonal blocks (a principal part of a
+  // positive semi-definite matrix is one), which fit the Hessian's fixed pattern.
+  bool add_barrier_derivatives(Eigen::VectorXd& grad)
+  {
+    const std::size_t n = disk_.border.size();
+    if(block_slots_.empty())
+    {
+      block_slots_.resize(std::size_t(nfree_));
+      auto slot = [this](long r, long c) {
+        return std::size_t(std::lower_bound(H_.innerIndexPtr() + H_.outerIndexPtr()[c],
+                                            H_.innerIndexPtr() + H_.outerIndexPtr()[c + 1], int(r)) - H_.innerIndexPtr());
+      };
+      for(long i = 0; i < nfree_; ++i)
+        block_slots_[std::size_t(i)] = {{ slot(2 * i, 2 * i), slot(2 * i + 1, 2 * i), slot(2 * i, 2 * i + 1), slot(2 * i + 1, 2 * i + 1) }};
+    }
+    double E = 0, g[6], e1 = 0, e2 = 0;
+    bool active, ok = true;
+    for_each_near_pair(X_, [&](std::size_t k, std::size_t e) {
+        if(!ok) return;
+        if(!barrier_pair_terms(k, e, X_, Y_, E, g, e1, e2, active)) { ok = false; return; }
+        if(!active) return;
+        const std::size_t corners[3] = { disk_.border[k], disk_.border[e], disk_.border[(e + 1) % n] };
+        for(int c = 0; c < 3; ++c)
+        {
+          const long vi = var_[corners[c]];
+          if(vi < 0) continue;
+          const double gx = g[2 * c], gy = g[2 * c + 1];
+          grad(2 * vi) += e1 * gx;
+          grad(2 * vi + 1) += e1 * gy;
+          const auto& sl = block_slots_[std::size_t(vi)];
+          H_.valuePtr()[sl[0]] += e2 * gx * gx;
+          H_.valuePtr()[sl[1]] += e2 * gx * gy;
+          H_.valuePtr()[sl[2]] += e2 * gx * gy;
+          H_.valuePtr()[sl[3]] += e2 * gy * gy;
+        }
+    });
+    return ok;
+  }
+
+  // First time (up to `limit`) at which a border vertex would reach a border edge along the
+  // direction (dx, dy) of every vertex
+  double border_contact_time(const std::vector<double>& dx, const std::vector<double>& dy, double limit) const
+  {
+    const std::size_t n = disk_.border.size();
+    double t = std::numeric_limits<double>::infinity();
+    // swept boxes over [0, limit]
+    std::vector<std::array<double, 4> > box(n);
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      const std::size_t v = disk_.border[k];
+      const double x1 = X_[v] + limit * dx[v], y1 = Y_[v] + limit * dy[v];
+      box[k] = {{ (std::min)(X_[v], x1), (std::max)(X_[v], x1), (std::min)(Y_[v], y1), (std::max)(Y_[v], y1) }};
+    }
+    for(std::size_t e = 0; e < n; ++e)
+    {
+      const std::size_t e2 = (e + 1) % n, a = disk_.border[e], b = disk_.border[e2];
+      const double xlo = (std::min)(box[e][0], box[e2][0]), xhi = (std::max)(box[e][1], box[e2][1]);
+      const double ylo = (std::min)(box[e][2], box[e2][2]), yhi = (std::max)(box[e][3], box[e2][3]);
+      for(std::size_t k = 0; k < n; ++k)
+      {
+        if(!barrier_pair(k, e)) continue;
+        if(box[k][1] < xlo || box[k][0] > xhi || box[k][3] < ylo || box[k][2] > yhi) continue;
+        const std::size_t v = disk_.border[k];
+        t = (std::min)(t, vertex_segment_contact_time(X_[v], Y_[v], X_[a], Y_[a], X_[b], Y_[b],
+                                                      dx[v], dy[v], dx[a], dy[a], dx[b], dy[b]));
+      }
+    }
+    return t;
+  }
+
+  // f(k, e, c) for every pair that involves border vertex i: as the vertex (c = 0), or as the
+  // first (c = 1) or second (c = 2) end of the edge
+  template <class F>
+  void for_each_pair_of(std::size_t i, const F& f) const
+  {
+    const std::size_t n = disk_.border.size(), k = std::size_t(border_pos_[i]);
+    const std::size_t prev = (k + n - 1) % n;
+    for(std::size_t e = 0; e < n; ++e) if(barrier_pair(k, e)) f(k, e, 0);          // i is the vertex
+    for(std::size_t j = 0; j < n; ++j)
+    {
+      if(barrier_pair(j, k)) f(j, k, 1);       // i is the first end of edge k
+      if(barrier_pair(j, prev)) f(j, prev, 2); // i is the second end of edge prev
+    }
+  }
+
+  // the pairs that involve border vertex i and may be within their reach after i moves by up to
+  // `radius` (current positions)
+  void pairs_of(std::size_t i, double radius, std::vector<Barrier_pair>& out) const
+  {
+    const std::size_t n = disk_.border.size();
+    out.clear();
+    for_each_pair_of(i, [&](std::size_t k, std::size_t e, int c) {
+      const std::size_t v = disk_.border[k], a = disk_.border[e], b = disk_.border[(e + 1) % n];
+      const double r = barrier_reach(k, e) + radius;
+      if(X_[v] < (std::min)(X_[a], X_[b]) - r || X_[v] > (std::max)(X_[a], X_[b]) + r ||
+         Y_[v] < (std::min)(Y_[a], Y_[b]) - r || Y_[v] > (std::max)(Y_[a], Y_[b]) + r) return;
+      out.push_back(Barrier_pair{ k, e, c });
+    });
+  }
+
+  // The pairs of `pairs` (pairs_of(i)), with i at (xi, yi): their energy added to E, gradient to g
+  // and Gauss-Newton Hessian to H (in i's two coordinates); false if i touches an edge or an edge
+  // of i touches a vertex.
+  bool vertex_barrier(std::size_t i, double xi, double yi, const std::vector<Barrier_pair>& pairs,
+                      double& E, double g[2], double H[3]) const
+  {
+    for(const Barrier_pair& p : pairs)
+    {
+      double gp[6], e1 = 0, e2 = 0;
+      bool active;
+      if(!barrier_pair_terms(p.k, p.e, X_, Y_, E, gp, e1, e2, active, i, xi, yi)) return false;
+      if(!active) continue;
+      const double gx = gp[2 * p.c], gy = gp[2 * p.c + 1];
+      g[0] += e1 * gx; g[1] += e1 * gy;
+      H[0] += e2 * gx * gx; H[1] += e2 * gx * gy; H[2] += e2 * gy * gy;
+    }
+    return std::isfinite(E);
+  }
+
+  // first time at which border vertex i, moving alone along d, makes a pair of `pairs` touch
+  double vertex_contact_time(const double d[2], const std::vector<Barrier_pair>& pairs) const
+  {
+    const std::size_t n = disk_.border.size();
+    double t = std::numeric_limits<double>::infinity();
+    for(const Barrier_pair& p : pairs)
+    {
+      const std::size_t v = disk_.border[p.k], a = disk_.border[p.e], b = disk_.border[(p.e + 1) % n];
+      const double dv[2] = { p.c == 0 ? d[0] : 0., p.c == 0 ? d[1] : 0. };
+      const double da[2] = { p.c == 1 ? d[0] : 0., p.c == 1 ? d[1] : 0. };
+      const double db[2] = { p.c == 2 ? d[0] : 0., p.c == 2 ? d[1] : 0. };
+      t = (std::min)(t, vertex_segment_contact_time(X_[v], Y_[v], X_[a], Y_[a], X_[b], Y_[b],
+                                                    dv[0], dv[1], da[0], da[1], db[0], db[1]));
+    }
+    return t;
+  }
+
   static constexpr long direct_solver_limit = 100000; // unknowns (2 per free vertex)
 
   const TriangleMesh& tm_;
@@ -889,7 +1184,15 @@ private:
   SpMat H_;
   Eigen::SimplicialLDLT<SpMat> ldlt_;
   bool analyzed_ = false;
-  bool held_back_ = false; // the last global step was limited by the flip-free bound
+  bool held_back_ = false; // the last global step was limited by the flip-free (or border contact) bound
+  bool barrier_ = false;   // the border barrier is on (free border of a disk)
+  double barrier_reach_ = 0.5;           // reach of a pair, relative to the shortest reference edge length
+  double reference_scale_ = 1;           // the scale of the reference triangles (on lengths)
+  std::vector<long> border_pos_;         // per vertex: its position on the border, -1 inside
+  std::vector<double> edge_length_;      // per border edge (from border position k to k + 1): its reference length
+  std::vector<double> vertex_length_;    // per border vertex: the shorter reference length of its two border edges
+  double max_reach_ = 0;                 // the largest reach of a pair
+  std::vector<std::array<std::size_t, 4> > block_slots_; // per free vertex: its 2x2 block of H_
   Eigen::ConjugateGradient<SpMat, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double> > cg_;
 };
 

@@ -11,12 +11,16 @@
 //    cannot be observed: progress is reported before and after, and the clock read there.
 //  - solve_by_elimination: sparse Gaussian elimination in the number type itself, in a
 //    fill-reducing order (AMD on the symmetric pattern), for multiprecision and exact types
-//    (for CGAL::Gmpq, the fallback of the p-adic solve of internal/tutte_p_adic.h).
+//    (for CGAL::Gmpq, the fallback of the p-adic solve of internal/tutte_p_adic.h). The pattern of
+//    the factors comes first from the elimination tree (Symbolic_factorization, shared with the
+//    p-adic solve); the rows are then computed one by one through a dense work row. MPFR at the
+//    default precision works in place on raw mpfr_t numbers (same operations, same bits as
+//    CGAL::Gmpfr's operators, without an allocation per operation).
 //    No pivoting is needed: the Tutte matrix is a nonsingular M-matrix (weakly diagonally
 //    dominant, strictly on rows next to the border, irreducible) and every Schur complement of
 //    an M-matrix is one, so every pivot is positive. Progress is the fraction of the
-//    elimination work done (from a symbolic pass), reported and checked against the clock
-//    after each updated row.
+//    elimination work done (from the symbolic pass), reported and checked against the clock
+//    after each row.
 
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/internal/tutte_system.h>
@@ -157,123 +161,236 @@ std::vector<int> fill_reducing_order(const Tutte_system<FT>& S)
   return order;
 }
 
-// The rows of the system in elimination order (columns renumbered), sorted by column.
-template <class FT>
-void permuted_rows(const Tutte_system<FT>& S, const std::vector<int>& order,
-                   std::vector<std::vector<std::pair<int, FT> > >& rows, std::vector<FT>& bu, std::vector<FT>& bv)
+// The symbolic factorization of the system's (structurally symmetric) pattern in an elimination
+// order: the elimination tree gives the pattern of every row of L (its reach in the tree) and, by
+// symmetry, of every row of U, before any arithmetic. The numeric factorizations (modular for the
+// p-adic solve, in FT for the elimination) then run row by row ("up-looking") through a dense work
+// row, with no merge of sparse rows and no allocation per update.
+struct Symbolic_factorization
 {
-  const std::size_t n = S.n;
-  std::vector<int> step(n);
-  for(std::size_t k = 0; k < n; ++k) step[order[k]] = static_cast<int>(k);
-  rows.assign(n, std::vector<std::pair<int, FT> >());
-  bu.resize(n); bv.resize(n);
-  for(std::size_t r = 0; r < n; ++r)
-  {
-    auto& row = rows[step[r]];
-    row.reserve(S.off[r].size() + 1);
-    row.emplace_back(step[r], S.diag[r]);
-    for(const auto& e : S.off[r]) row.emplace_back(step[e.first], e.second);
-    std::sort(row.begin(), row.end(), [](const std::pair<int, FT>& a, const std::pair<int, FT>& b) { return a.first < b.first; });
-    bu[step[r]] = S.bu[r];
-    bv[step[r]] = S.bv[r];
-  }
-}
+  std::size_t n = 0;
+  std::vector<int> order, step;        // order[k]: unknown eliminated at step k; step[order[k]] == k
+  std::vector<int> a_ptr, a_col, a_src; // A in step numbering, row k sorted; a_src: -1 the diagonal, else index in S.off[order[k]]
+  std::vector<int> l_ptr, l_col;       // row k of L: columns j < k, increasing
+  std::vector<int> u_ptr, u_col;       // row k of U: columns c > k, increasing (the diagonal apart)
+  double flops = 0;                    // multiply-adds of the numeric factorization
 
-// Symbolic elimination: the work of each step (entries updated), for progress fractions.
-template <class FT>
-std::vector<double> elimination_work(const std::vector<std::vector<std::pair<int, FT> > >& rows)
-{
-  const std::size_t n = rows.size();
-  std::vector<std::vector<int> > pat(n);
-  for(std::size_t k = 0; k < n; ++k)
-    for(const auto& e : rows[k]) if(e.first >= int(k)) pat[k].push_back(e.first);
-  std::vector<double> work(n, 0.);
-  std::vector<int> merged;
-  for(std::size_t k = 0; k < n; ++k)
+  template <class FT>
+  void analyze(const Tutte_system<FT>& S, const std::vector<int>& elimination_order)
   {
-    const std::vector<int>& pk = pat[k]; // columns >= k, pk[0] == k
-    work[k] = double(pk.size()) * double(pk.size());
-    for(std::size_t a = 1; a < pk.size(); ++a)
+    n = S.n;
+    order = elimination_order;
+    step.assign(n, 0);
+    for(std::size_t k = 0; k < n; ++k) step[order[k]] = static_cast<int>(k);
+    a_ptr.assign(n + 1, 0);
+    for(std::size_t k = 0; k < n; ++k) a_ptr[k + 1] = a_ptr[k] + 1 + static_cast<int>(S.off[order[k]].size());
+    a_col.resize(a_ptr[n]); a_src.resize(a_ptr[n]);
+    std::vector<std::pair<int, int> > row;
+    for(std::size_t k = 0; k < n; ++k)
     {
-      std::vector<int>& pi = pat[pk[a]];
-      merged.clear();
-      std::set_union(pi.begin(), pi.end(), pk.begin() + 1, pk.end(), std::back_inserter(merged));
-      merged.erase(std::remove(merged.begin(), merged.end(), int(k)), merged.end());
-      pi.swap(merged);
+      const auto& off = S.off[order[k]];
+      row.clear();
+      row.emplace_back(static_cast<int>(k), -1);
+      for(std::size_t e = 0; e < off.size(); ++e) row.emplace_back(step[off[e].first], static_cast<int>(e));
+      std::sort(row.begin(), row.end());
+      for(std::size_t e = 0; e < row.size(); ++e) { a_col[a_ptr[k] + e] = row[e].first; a_src[a_ptr[k] + e] = row[e].second; }
     }
-    std::vector<int>().swap(pat[k]);
+    // elimination tree (path compression through `ancestor`), on the pattern made symmetric
+    std::vector<int> parent(n, -1), ancestor(n, -1);
+    for(std::size_t k = 0; k < n; ++k)
+      for(int e = a_ptr[k]; e < a_ptr[k + 1]; ++e)
+        for(int j = a_col[e]; j != -1 && j < static_cast<int>(k); )
+        {
+          const int next = ancestor[j];
+          ancestor[j] = static_cast<int>(k);
+          if(next == -1) { parent[j] = static_cast<int>(k); break; }
+          j = next;
+        }
+    // row k of L: the nodes met climbing the tree from each j < k of row k of A up to k
+    std::vector<int> mark(n, -1);
+    l_ptr.assign(n + 1, 0);
+    l_col.clear();
+    std::vector<int> u_count(n, 0);
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      mark[k] = static_cast<int>(k);
+      const std::size_t first = l_col.size();
+      for(int e = a_ptr[k]; e < a_ptr[k + 1]; ++e)
+        for(int j = a_col[e]; j < static_cast<int>(k) && mark[j] != static_cast<int>(k); j = parent[j])
+        {
+          mark[j] = static_cast<int>(k);
+          l_col.push_back(j);
+        }
+      std::sort(l_col.begin() + first, l_col.end());
+      for(std::size_t e = first; e < l_col.size(); ++e) ++u_count[l_col[e]];
+      l_ptr[k + 1] = static_cast<int>(l_col.size());
+    }
+    // the pattern is symmetric: column k of L is row k of U
+    u_ptr.assign(n + 1, 0);
+    for(std::size_t k = 0; k < n; ++k) u_ptr[k + 1] = u_ptr[k] + u_count[k];
+    u_col.resize(u_ptr[n]);
+    std::vector<int> fill(u_ptr.begin(), u_ptr.end() - 1);
+    for(std::size_t k = 0; k < n; ++k)
+      for(int e = l_ptr[k]; e < l_ptr[k + 1]; ++e) u_col[fill[l_col[e]]++] = static_cast<int>(k);
+    flops = 0;
+    for(std::size_t k = 0; k < n; ++k)
+      for(int e = l_ptr[k]; e < l_ptr[k + 1]; ++e) flops += double(u_ptr[l_col[e] + 1] - u_ptr[l_col[e]]) + 1;
   }
-  return work;
+};
+
+// The value of entry `e` of row k of the symbolic structure (a_src: -1 the diagonal).
+template <class FT>
+const FT& system_entry(const Tutte_system<FT>& S, const Symbolic_factorization& F, std::size_t k, int e)
+{
+  const std::size_t r = static_cast<std::size_t>(F.order[k]);
+  return F.a_src[e] < 0 ? S.diag[r] : S.off[r][static_cast<std::size_t>(F.a_src[e])].second;
 }
 
-// Right-looking sparse Gaussian elimination in FT with both right-hand sides, then back
-// substitution. Entries that cancel are kept, so the pattern stays structurally symmetric
-// and the rows to update at step k are the columns of row k after k.
+// Sparse Gaussian elimination in FT, row by row on the symbolic structure (entries that cancel are
+// kept), with both right-hand sides, then back substitution. Every entry receives the updates of
+// the earlier pivots in increasing order, each rounded as `a - (a_ik / a_kk) * a_kj`: the
+// operations of a right-looking elimination in the same order, so the same values.
 template <class FT>
-Error_code solve_by_elimination(const Tutte_system<FT>& S, Progress_budget& budget, std::vector<FT>& xu, std::vector<FT>& xv)
+Error_code solve_by_elimination_generic(const Tutte_system<FT>& S, const Symbolic_factorization& F, Progress_budget& budget,
+                                        std::vector<FT>& xu, std::vector<FT>& xv)
 {
-  typedef std::pair<int, FT> Entry;
   const std::size_t n = S.n;
-  if(!budget.report(0)) return ERROR_BUDGET_EXHAUSTED;
-  const std::vector<int> order = fill_reducing_order(S);
-  std::vector<std::vector<Entry> > rows;
-  std::vector<FT> bu, bv;
-  permuted_rows(S, order, rows, bu, bv);
-  const std::vector<double> work = elimination_work(rows);
-  double total = 0, done = 0;
-  for(double w : work) total += w;
   const FT zero = make_ft<FT>(0);
-
-  std::vector<Entry> merged;
+  std::vector<FT> uval(F.u_col.size()), pivot(n), bu(n), bv(n), w(n, zero);
+  double done = 0;
   for(std::size_t k = 0; k < n; ++k)
   {
-    const std::vector<Entry>& rk = rows[k]; // columns >= k: the earlier ones were eliminated
-    if(rk.empty() || rk[0].first != int(k) || CGAL::is_zero(rk[0].second)) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-    const FT& pivot = rk[0].second;
-    for(std::size_t a = 1; a < rk.size(); ++a)
+    for(int e = F.a_ptr[k]; e < F.a_ptr[k + 1]; ++e) w[F.a_col[e]] = system_entry(S, F, k, e);
+    FT su = S.bu[F.order[k]], sv = S.bv[F.order[k]];
+    for(int e = F.l_ptr[k]; e < F.l_ptr[k + 1]; ++e)
     {
-      std::vector<Entry>& ri = rows[rk[a].first];
-      // ri holds column k (structural symmetry); it is eliminated
-      auto it = std::lower_bound(ri.begin(), ri.end(), int(k), [](const Entry& e, int c) { return e.first < c; });
-      if(it == ri.end() || it->first != int(k)) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-      const FT m = it->second / pivot;
-      merged.clear();
-      merged.reserve(ri.size() + rk.size());
-      auto p = ri.begin();
-      auto q = rk.begin() + 1;
-      while(p != ri.end() || q != rk.end())
-      {
-        if(p != ri.end() && p->first == int(k)) { ++p; continue; }
-        if(q == rk.end() || (p != ri.end() && p->first < q->first)) { merged.push_back(*p); ++p; }
-        else if(p == ri.end() || q->first < p->first) { merged.emplace_back(q->first, FT(zero - m * q->second)); ++q; }
-        else { merged.emplace_back(p->first, FT(p->second - m * q->second)); ++p; ++q; }
-      }
-      ri.swap(merged);
-      bu[rk[a].first] -= m * bu[k];
-      bv[rk[a].first] -= m * bv[k];
-      if(!budget.time_left()) return ERROR_BUDGET_EXHAUSTED;
+      const int j = F.l_col[e];
+      if(CGAL::is_zero(pivot[j])) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+      const FT m = w[j] / pivot[j];
+      w[j] = zero;
+      for(int f = F.u_ptr[j]; f < F.u_ptr[j + 1]; ++f) w[F.u_col[f]] -= m * uval[f];
+      su -= m * bu[j];
+      sv -= m * bv[j];
+      done += double(F.u_ptr[j + 1] - F.u_ptr[j]) + 1;
     }
-    done += work[k];
-    if(!budget.report(total > 0 ? done / total : 1.)) return ERROR_BUDGET_EXHAUSTED;
+    pivot[k] = w[k]; w[k] = zero;
+    if(CGAL::is_zero(pivot[k])) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+    for(int f = F.u_ptr[k]; f < F.u_ptr[k + 1]; ++f) { uval[f] = w[F.u_col[f]]; w[F.u_col[f]] = zero; }
+    bu[k] = su; bv[k] = sv;
+    if(!budget.report(F.flops > 0 ? done / F.flops : 1.)) return ERROR_BUDGET_EXHAUSTED;
   }
-  // back substitution; rows[k] is the final row k of the upper triangular factor
   std::vector<FT> yu(n, zero), yv(n, zero);
   for(std::size_t kk = n; kk-- > 0; )
   {
     FT su = bu[kk], sv = bv[kk];
-    const std::vector<Entry>& rk = rows[kk];
-    for(std::size_t a = 1; a < rk.size(); ++a)
+    for(int f = F.u_ptr[kk]; f < F.u_ptr[kk + 1]; ++f)
     {
-      su -= rk[a].second * yu[rk[a].first];
-      sv -= rk[a].second * yv[rk[a].first];
+      su -= uval[f] * yu[F.u_col[f]];
+      sv -= uval[f] * yv[F.u_col[f]];
     }
-    yu[kk] = su / rk[0].second;
-    yv[kk] = sv / rk[0].second;
+    yu[kk] = su / pivot[kk];
+    yv[kk] = sv / pivot[kk];
   }
   xu.resize(n); xv.resize(n);
-  for(std::size_t k = 0; k < n; ++k) { xu[order[k]] = yu[k]; xv[order[k]] = yv[k]; }
-  if(!budget.report(1)) return ERROR_BUDGET_EXHAUSTED;
-  return OK;
+  for(std::size_t k = 0; k < n; ++k) { xu[F.order[k]] = yu[k]; xv[F.order[k]] = yv[k]; }
+  return budget.report(1) ? OK : ERROR_BUDGET_EXHAUSTED;
+}
+
+// The same elimination on raw MPFR numbers at the default precision, in place: CGAL::Gmpfr's
+// operators allocate a reference-counted result for every operation, which costs far more than the
+// operation at a few hundred bits. Taken when no entry of the system is more precise than the default
+// precision: then every value of the generic elimination has the default precision and the default
+// rounding, so both give the same bits.
+inline Error_code solve_by_elimination_mpfr(const Tutte_system<CGAL::Gmpfr>& S, const Symbolic_factorization& F, Progress_budget& budget,
+                                            std::vector<CGAL::Gmpfr>& xu, std::vector<CGAL::Gmpfr>& xv)
+{
+  const std::size_t n = S.n;
+  const mpfr_prec_t prec = static_cast<mpfr_prec_t>(CGAL::Gmpfr::get_default_precision());
+  const mpfr_rnd_t rnd = mpfr_get_default_rounding_mode();
+  // one block of limbs for every number: no allocation in the loops
+  struct Numbers
+  {
+    std::vector<__mpfr_struct> v;
+    std::vector<mp_limb_t> limbs;
+    Numbers(std::size_t count, mpfr_prec_t p) : v(count), limbs(count * mpfr_custom_get_size(p) / sizeof(mp_limb_t))
+    {
+      const std::size_t per = mpfr_custom_get_size(p) / sizeof(mp_limb_t);
+      for(std::size_t i = 0; i < count; ++i)
+        mpfr_custom_init_set(&v[i], MPFR_ZERO_KIND, 0, p, limbs.data() + i * per);
+    }
+    mpfr_ptr operator[](std::size_t i) { return &v[i]; }
+  };
+  Numbers uval(F.u_col.size(), prec), pivot(n, prec), bu(n, prec), bv(n, prec), w(n, prec), tmp(3, prec);
+  mpfr_ptr m = tmp[0], t = tmp[1];
+  double done = 0;
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    for(int e = F.a_ptr[k]; e < F.a_ptr[k + 1]; ++e) mpfr_set(w[F.a_col[e]], system_entry(S, F, k, e).fr(), rnd);
+    mpfr_set(bu[k], S.bu[F.order[k]].fr(), rnd);
+    mpfr_set(bv[k], S.bv[F.order[k]].fr(), rnd);
+    for(int e = F.l_ptr[k]; e < F.l_ptr[k + 1]; ++e)
+    {
+      const int j = F.l_col[e];
+      if(mpfr_zero_p(pivot[j])) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+      mpfr_div(m, w[j], pivot[j], rnd);
+      mpfr_set_zero(w[j], 1);
+      for(int f = F.u_ptr[j]; f < F.u_ptr[j + 1]; ++f)
+      {
+        mpfr_mul(t, m, uval[f], rnd);
+        mpfr_sub(w[F.u_col[f]], w[F.u_col[f]], t, rnd);
+      }
+      mpfr_mul(t, m, bu[j], rnd); mpfr_sub(bu[k], bu[k], t, rnd);
+      mpfr_mul(t, m, bv[j], rnd); mpfr_sub(bv[k], bv[k], t, rnd);
+      done += double(F.u_ptr[j + 1] - F.u_ptr[j]) + 1;
+    }
+    mpfr_swap(pivot[k], w[k]);
+    mpfr_set_zero(w[k], 1);
+    if(mpfr_zero_p(pivot[k])) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+    for(int f = F.u_ptr[k]; f < F.u_ptr[k + 1]; ++f) { mpfr_swap(uval[f], w[F.u_col[f]]); mpfr_set_zero(w[F.u_col[f]], 1); }
+    if(!budget.report(F.flops > 0 ? done / F.flops : 1.)) return ERROR_BUDGET_EXHAUSTED;
+  }
+  // back substitution into bu, bv (row k is final once the rows after it are)
+  for(std::size_t kk = n; kk-- > 0; )
+  {
+    for(int f = F.u_ptr[kk]; f < F.u_ptr[kk + 1]; ++f)
+    {
+      mpfr_mul(t, uval[f], bu[F.u_col[f]], rnd); mpfr_sub(bu[kk], bu[kk], t, rnd);
+      mpfr_mul(t, uval[f], bv[F.u_col[f]], rnd); mpfr_sub(bv[kk], bv[kk], t, rnd);
+    }
+    mpfr_div(bu[kk], bu[kk], pivot[kk], rnd);
+    mpfr_div(bv[kk], bv[kk], pivot[kk], rnd);
+  }
+  xu.resize(n); xv.resize(n);
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    CGAL::Gmpfr a(0, static_cast<CGAL::Gmpfr::Precision_type>(prec)), b(0, static_cast<CGAL::Gmpfr::Precision_type>(prec));
+    mpfr_set(a.fr(), bu[k], rnd); mpfr_set(b.fr(), bv[k], rnd);
+    xu[F.order[k]] = a; xv[F.order[k]] = b;
+  }
+  return budget.report(1) ? OK : ERROR_BUDGET_EXHAUSTED;
+}
+
+// Sparse Gaussian elimination in FT in a fill-reducing order (AMD), with both right-hand sides,
+// for multiprecision and exact types. MPFR systems at the default precision take the in-place path.
+template <class FT>
+Error_code solve_by_elimination(const Tutte_system<FT>& S, Progress_budget& budget, std::vector<FT>& xu, std::vector<FT>& xv)
+{
+  if(!budget.report(0)) return ERROR_BUDGET_EXHAUSTED;
+  Symbolic_factorization F;
+  F.analyze(S, fill_reducing_order(S));
+  if constexpr(std::is_same<FT, CGAL::Gmpfr>::value)
+  {
+    const CGAL::Gmpfr::Precision_type p = CGAL::Gmpfr::get_default_precision();
+    bool uniform = true;
+    auto check = [&](const CGAL::Gmpfr& x) { if(x.get_precision() > p) uniform = false; };
+    for(std::size_t r = 0; r < S.n && uniform; ++r)
+    {
+      check(S.diag[r]); check(S.bu[r]); check(S.bv[r]);
+      for(const auto& e : S.off[r]) check(e.second);
+    }
+    if(uniform) return solve_by_elimination_mpfr(S, F, budget, xu, xv);
+  }
+  return solve_by_elimination_generic(S, F, budget, xu, xv);
 }
 
 } // namespace internal

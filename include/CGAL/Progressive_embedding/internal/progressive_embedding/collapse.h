@@ -261,7 +261,20 @@ private:
           sx += m.point(w).x(); sy += m.point(w).y(); ++n;
         }
         if(!all_border || n == 0) continue;
-        const Point_2 b(sx / FT(double(n)), sy / FT(double(n)));
+        Point_2 b(sx / FT(double(n)), sy / FT(double(n)));
+        // border coordinates near the largest double: their sum overflows, the sum of their n-ths
+        // does not; a vertex whose barycenter is still not finite stays where it is
+        if(!is_finite_ft(b.x()) || !is_finite_ft(b.y()))
+        {
+          FT qx(0), qy(0);
+          for(vertex_descriptor w : CGAL::vertices_around_target(v, m))
+          {
+            qx += m.point(w).x() / FT(double(n));
+            qy += m.point(w).y() / FT(double(n));
+          }
+          b = Point_2(qx, qy);
+          if(!is_finite_ft(b.x()) || !is_finite_ft(b.y())) continue;
+        }
         if(b.x() == m.point(v).x() && b.y() == m.point(v).y()) continue;
         m.point(v) = b;
         ++counters.barycenter_placements;

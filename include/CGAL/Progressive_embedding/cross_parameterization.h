@@ -1,0 +1,572 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+#ifndef CGAL_PROGRESSIVE_EMBEDDING_CROSS_PARAMETERIZATION_H
+#define CGAL_PROGRESSIVE_EMBEDDING_CROSS_PARAMETERIZATION_H
+
+/// \file cross_parameterization.h
+///
+/// `cross_parameterization()`: a map between two triangulated disks A and B with matched landmarks,
+/// through two certified planar maps of one unit square. The steps:
+///  1. validation of both meshes (triangulated disks) and of the landmarks (vertices of their mesh,
+///     interior, each used once), nothing computed before it passes;
+///  2. both borders on the unit square, matched by relative 3D arc length from a matched pair of
+///     border vertices (internal/cross/common_border.h);
+///  3. B's map: Tutte, repaired if needed and optimized (`parameterize_certified()`), certified;
+///  4. A's map on a refined copy of A: `constrained_embedding()` with every landmark of A pinned
+///     bit-exactly at the uv of its partner in B's map, certified;
+///  5. each vertex of A located in B's map (internal/cross/locate_in_map.h: exact orientations,
+///     coordinates in exact rationals rounded once), written to the output map.
+
+#include <CGAL/Progressive_embedding/Error_code.h>
+#include <CGAL/Progressive_embedding/parameters.h>
+#include <CGAL/Progressive_embedding/check_embedding.h>
+#include <CGAL/Progressive_embedding/certified_pipeline.h>
+#include <CGAL/Progressive_embedding/constrained_embedding.h>
+#include <CGAL/Progressive_embedding/internal/indexed_disk.h>
+#include <CGAL/Progressive_embedding/internal/cross/common_border.h>
+#include <CGAL/Progressive_embedding/internal/cross/locate_in_map.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/IO/Color.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Real_timer.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <boost/functional/hash.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <array>
+#include <cmath>
+#include <iterator>
+#include <limits>
+#include <map>
+#include <type_traits>
+#include <unordered_map>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Progressive_embedding {
+
+#ifndef DOXYGEN_RUNNING
+// The parameters of cross_parameterization(): NAME(t) starts a pack of this package, NAME(t, pack) appends to
+// any pack (CGAL's or this package's, taken as the CGAL pack it is), as the functions of parameters.h.
+namespace internal_np {
+enum border_vertex_pair_t { border_vertex_pair };
+enum b_to_a_locations_t { b_to_a_locations };
+} // namespace internal_np
+
+namespace parameters {
+template <typename T> Named_function_parameters<T, internal_np::border_vertex_pair_t> border_vertex_pair(const T& t)
+{ return Named_function_parameters<T, internal_np::border_vertex_pair_t>(t); }
+template <typename T, typename P, typename G, typename B>
+Named_function_parameters<T, internal_np::border_vertex_pair_t, CGAL::Named_function_parameters<P, G, B> >
+border_vertex_pair(const T& t, const CGAL::Named_function_parameters<P, G, B>& np) { return { t, np }; }
+
+template <typename T> Named_function_parameters<T, internal_np::b_to_a_locations_t> b_to_a_locations(const T& t)
+{ return Named_function_parameters<T, internal_np::b_to_a_locations_t>(t); }
+template <typename T, typename P, typename G, typename B>
+Named_function_parameters<T, internal_np::b_to_a_locations_t, CGAL::Named_function_parameters<P, G, B> >
+b_to_a_locations(const T& t, const CGAL::Named_function_parameters<P, G, B>& np) { return { t, np }; }
+} // namespace parameters
+#else
+namespace parameters {
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// the matched pair of border vertices of `cross_parameterization()` (a `std::pair` of a vertex of A and a vertex
+/// of B, both on their border); `border_vertex_pair(t, np)` appends it to the pack `np` (this package's or CGAL's)
+template <typename T> unspecified_type border_vertex_pair(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// a writable property map from the vertices of B to `Cross_location<TriangleMeshA>` that receives, from
+/// `cross_parameterization()`, the location on A of every vertex of B (the other direction);
+/// `b_to_a_locations(t, np)` appends it to the pack `np`
+template <typename T> unspecified_type b_to_a_locations(const T& t);
+} // namespace parameters
+#endif
+
+/// \ingroup PkgProgressiveEmbeddingReports
+/// What `cross_parameterization()` did, filled when a pointer to it is passed with the `statistics` named parameter
+/// (also on error, as far as the computation went).
+struct Cross_parameterization_statistics
+{
+  /// on an error about one landmark (`ERROR_WRONG_PARAMETER`: a vertex not of its mesh; `ERROR_CONSTRAINT_ON_BORDER`;
+  /// `ERROR_DUPLICATE_CONSTRAINT`: a vertex of A or of B used twice, the later one): its position in the `landmarks`
+  /// range; `std::size_t(-1)` otherwise
+  std::size_t failed_landmark = std::size_t(-1);
+  /// the mesh an error is about: 0 for A, 1 for B, -1 for none (a mesh that is not a disk, a landmark vertex, a
+  /// border vertex of `border_vertex_pair`, a map that failed)
+  int failed_mesh = -1;
+  /// vertices and faces of A (as given) and of B
+  std::size_t vertices_a = 0, faces_a = 0, vertices_b = 0, faces_b = 0;
+  /// landmark pairs
+  std::size_t landmarks = 0;
+  /// vertices added to A's copy by `constrained_embedding()` (kept after its coarsening); they are not reported
+  std::size_t vertices_added_a = 0;
+  /// vertices of A located inside a face of B, on an edge of B, on a vertex of B (decided exactly)
+  std::size_t located_in_face = 0, located_on_edge = 0, located_on_vertex = 0;
+  /// vertices of A not located in B's map (0 unless a certificate is wrong: the call then fails)
+  std::size_t unlocated = 0;
+  /// whether every landmark of A is located exactly on its partner (barycentric coordinate 1 there)
+  bool landmarks_exact = false;
+  /// with `b_to_a_locations`: vertices of B located on A (all of them on success)
+  std::size_t located_b_on_a = 0;
+  /// seconds: validation and border placement, B's map, A's map, point location, in all
+  double seconds_validation = 0, seconds_map_b = 0, seconds_map_a = 0, seconds_location = 0, seconds_total = 0;
+  /// the certificate of B's map (`check_embedding()`)
+  Embedding_report report_b;
+  /// the certificate of A's map, on A's refined copy (`check_embedding()`)
+  Embedding_report report_a;
+  /// what `parameterize_certified()` did for B's map
+  Pipeline_statistics map_b;
+  /// what `constrained_embedding()` did for A's map
+  Constrained_embedding_statistics map_a;
+};
+
+/// \ingroup PkgProgressiveEmbeddingMainFunctions
+/// The location of a point of A on B: a face of B and the barycentric coordinates of the point with respect to
+/// `source(halfedge(f))`, `target(halfedge(f))` and `target(next(halfedge(f)))` (the convention of
+/// `CGAL::Polygon_mesh_processing::Face_location`, so that `CGAL::Polygon_mesh_processing::construct_point()` gives
+/// its 3D point on B).
+template <class TriangleMeshB>
+using Cross_location = CGAL::Polygon_mesh_processing::Face_location<TriangleMeshB, double>;
+
+namespace internal {
+
+// the 3D distance between points of two possibly different kernels, in double
+template <class P, class Q>
+double squared_distance_3_double(const P& p, const Q& q)
+{
+  const double dx = CGAL::to_double(p.x()) - CGAL::to_double(q.x());
+  const double dy = CGAL::to_double(p.y()) - CGAL::to_double(q.y());
+  const double dz = CGAL::to_double(p.z()) - CGAL::to_double(q.z());
+  return dx * dx + dy * dy + dz * dz;
+}
+
+// the convex combination of three values: numbers, std::array of numbers, CGAL points and colours
+template <class T>
+T weighted_sum(const std::array<T, 3>& v, const std::array<double, 3>& w)
+{
+  if constexpr(std::is_arithmetic<T>::value)
+    return static_cast<T>(w[0] * v[0] + w[1] * v[1] + w[2] * v[2]);
+  else if constexpr(std::is_same<T, CGAL::IO::Color>::value)
+  {
+    auto mix = [&](int c) {
+      const double x = w[0] * v[0][c] + w[1] * v[1][c] + w[2] * v[2][c];
+      return static_cast<unsigned char>((std::min)(255., (std::max)(0., std::round(x))));
+    };
+    return T(mix(0), mix(1), mix(2), mix(3));
+  }
+  else
+    return CGAL::barycenter(v[0], w[0], v[1], w[1], v[2], w[2]);
+}
+
+template <class T, std::size_t N>
+std::array<T, N> weighted_sum(const std::array<std::array<T, N>, 3>& v, const std::array<double, 3>& w)
+{
+  std::array<T, N> r;
+  for(std::size_t i = 0; i < N; ++i) r[i] = static_cast<T>(w[0] * v[0][i] + w[1] * v[1][i] + w[2] * v[2][i]);
+  return r;
+}
+
+// The points `queries` (uv in the map of `work`, the refined copy of A) located on the faces of A: each
+// located in the refined map, then written in the face of A holding the refined face (every vertex of
+// `work` is a vertex of A or a Steiner point, a combination of the vertices of one face of A).
+// ERROR_INVALID_EMBEDDING if a point is outside the map (cannot happen with two certified maps of one domain).
+template <class TriangleMeshA, class Work, class UVMap, class ToWork, class SteinerPoints, class Point_2>
+Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<TriangleMeshA>& disk_a, const Work& work,
+                                  UVMap uv, const ToWork& to_work, const SteinerPoints& steiner,
+                                  const std::vector<Point_2>& queries,
+                                  std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMeshA, double> >& result)
+{
+  typedef typename boost::graph_traits<Work>::vertex_descriptor wvertex;
+  typedef typename boost::graph_traits<TriangleMeshA>::vertex_descriptor vertex_a;
+  // each vertex of the copy as a combination of at most three vertices of A (indices into disk_a)
+  typedef std::vector<std::pair<std::size_t, double> > Combination;
+  std::unordered_map<wvertex, Combination> combination;
+  std::unordered_map<wvertex, std::size_t> copy_index;
+  for(std::size_t i = 0; i < disk_a.vertices.size(); ++i)
+  {
+    const wvertex w = to_work.at(disk_a.vertices[i]);
+    combination[w] = Combination(1, std::make_pair(i, 1.));
+    copy_index[w] = i;
+  }
+  for(const auto& sp : steiner)
+  {
+    Combination c;
+    for(std::size_t k = 0; k < sp.size; ++k) c.emplace_back(copy_index.at(sp.corners[k]), sp.weights[k]);
+    combination[sp.vertex] = c;
+  }
+  std::unordered_map<wvertex, std::size_t> index;
+  std::vector<Point_2> map_uv;
+  std::vector<wvertex> wv;
+  for(wvertex v : vertices(work)) { index[v] = map_uv.size(); map_uv.push_back(get(uv, v)); wv.push_back(v); }
+  std::vector<std::array<std::size_t, 3> > wfaces;
+  for(auto f : faces(work))
+  {
+    const auto h = halfedge(f, work);
+    wfaces.push_back({{ index[source(h, work)], index[target(h, work)], index[target(next(h, work), work)] }});
+  }
+  std::vector<Map_location> located;
+  if(locate_in_map(map_uv, wfaces, queries, located) > 0) return ERROR_INVALID_EMBEDDING;
+  result.resize(queries.size());
+  for(std::size_t q = 0; q < queries.size(); ++q)
+  {
+    std::map<std::size_t, double> w; // vertex of A -> weight
+    for(int i = 0; i < 3; ++i)
+    {
+      const double l = located[q].barycentric[i];
+      if(l == 0) continue;
+      for(const auto& c : combination.at(wv[wfaces[located[q].face][i]])) w[c.first] += l * c.second;
+    }
+    // the face of A around the first vertex that holds every vertex of the combination
+    const vertex_a v0 = disk_a.vertices[w.begin()->first];
+    bool found = false;
+    for(auto h : halfedges_around_target(halfedge(v0, tm_a), tm_a))
+    {
+      if(is_border(h, tm_a)) continue;
+      const auto g = halfedge(face(h, tm_a), tm_a);
+      const std::array<vertex_a, 3> corners{{ source(g, tm_a), target(g, tm_a), target(next(g, tm_a), tm_a) }};
+      std::array<double, 3> b{{ 0, 0, 0 }};
+      std::size_t matched = 0;
+      for(const auto& e : w)
+        for(int i = 0; i < 3; ++i)
+          if(corners[i] == disk_a.vertices[e.first]) { b[i] = e.second; ++matched; }
+      if(matched != w.size()) continue;
+      result[q] = CGAL::Polygon_mesh_processing::Face_location<TriangleMeshA, double>(face(h, tm_a), b);
+      found = true;
+      break;
+    }
+    if(!found) return ERROR_INVALID_EMBEDDING; // a refined face not inside one face of A: cannot happen
+  }
+  return OK;
+}
+
+} // namespace internal
+
+/// \ingroup PkgProgressiveEmbeddingMainFunctions
+///
+/// computes a bijective map between two triangulated disks `tm_a` (A) and `tm_b` (B) in which every landmark vertex
+/// of A lands exactly on its partner in B, and reports for every vertex of A the face of B containing its image and
+/// its barycentric coordinates there.
+///
+/// Both meshes are mapped onto the unit square [0,1]²: its corner (0,0) gets a matched pair of border vertices
+/// (`border_vertex_pair`); B's border vertices nearest to a quarter, a half and three quarters of its 3D length get
+/// the other corners, counterclockwise (the mesh interior on the left of the border), and A's border vertices
+/// nearest to the relative lengths of B's corners get the same corners; between corners each side is parametrized by
+/// 3D arc length. The borders are thus matched by relative arc length up to the corners (each corner moves by at
+/// most half a border edge), and every border point lies exactly on a side of the square.
+///
+/// B is mapped first, unchanged: Tutte's map of the square border, repaired by progressive embedding if it is not
+/// valid in floating point, then optimized (`parameterize_certified()` with `Optimization_policy::ALWAYS`). The uv of
+/// B's landmarks are the targets of A's map: a `Surface_mesh` copy of A is mapped by `constrained_embedding()` with
+/// each landmark of A pinned bit-exactly at the uv of its partner; the copy is refined by Steiner vertices where the
+/// landmark paths need them (`Cross_parameterization_statistics::vertices_added_a`), A itself is not changed. Both
+/// maps are certified by `check_embedding()` (the reports are in the statistics). Each vertex of A is then located
+/// in B's map: the face is decided by exact orientations (a point on an edge or a vertex of B gets the incident face
+/// of B listed first in `faces(tm_b)`, with exact zero coordinates), the barycentric coordinates are computed in
+/// exact rationals and rounded once to double (they sum to 1 up to that rounding). A landmark of A gets the
+/// coordinate 1 exactly at its partner.
+///
+/// Since both maps are one-to-one onto the same square, the composition (A's map, then the inverse of B's) is a
+/// bijection between the two surfaces, piecewise linear on A's refined copy; the output samples it at A's vertices.
+///
+/// \tparam TriangleMeshA a model of `FaceGraph` (triangles), with 3D points
+/// \tparam TriangleMeshB a model of `FaceGraph` (triangles), with 3D points
+/// \tparam LandmarkRange a range of `std::pair<vertex_descriptor of A, vertex_descriptor of B>`
+/// \tparam LocationMap a model of `WritablePropertyMap` with `boost::graph_traits<TriangleMeshA>::%vertex_descriptor`
+///         as key type and `Cross_location<TriangleMeshB>` as value type
+/// \tparam NamedParameters a sequence of named parameters
+///
+/// \param tm_a the mesh whose vertices are located (not modified)
+/// \param tm_b the mesh in which they are located (not modified)
+/// \param landmarks the matched interior vertices (none is allowed: only the border is then matched)
+/// \param out receives, on success only, the location on B of every vertex of A
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{border_vertex_pair}
+///     \cgalParamDescription{the border vertex of A and the border vertex of B that are matched (both at the
+///                           corner (0,0) of the square); a vertex not on its mesh's border gives
+///                           `ERROR_WRONG_PARAMETER`}
+///     \cgalParamType{`std::pair<vertex_descriptor of A, vertex_descriptor of B>`}
+///     \cgalParamDefault{the first border vertex of A in `vertices(tm_a)` and the border vertex of B nearest to it in
+///                       3D (right for two meshes of one surface in one frame; give the pair otherwise)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_running_time}
+///     \cgalParamDescription{seconds (wall clock) for each of the two maps; `ERROR_BUDGET_EXHAUSTED` when exceeded}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{no limit}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{optimization_time_limit}
+///     \cgalParamDescription{seconds for the optimization of A's map (see `constrained_embedding()`)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{30}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{b_to_a_locations}
+///     \cgalParamDescription{receives, on success, the location on A of every vertex of B (the inverse map): each
+///                           vertex of B is located in A's map on the refined copy (exact orientations, as above),
+///                           and the point is expressed in the face of A that contains the refined face (each
+///                           vertex added to the copy is a combination of the vertices of one face of A: the
+///                           `steiner_points` of `constrained_embedding()`; these coordinates are rounded once more);
+///                           a landmark of B gets the coordinate 1 exactly at its partner}
+///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<TriangleMeshB>::%vertex_descriptor` as
+///                    key type and `Cross_location<TriangleMeshA>` as value type}
+///     \cgalParamDefault{none: only the locations of A's vertices are computed}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{statistics}
+///     \cgalParamDescription{receives counts, times and both certificates}
+///     \cgalParamType{`Cross_parameterization_statistics*`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// Both meshes use their internal vertex points (`boost::get(CGAL::vertex_point, tm)`).
+///
+/// \return `OK` with every vertex of A located and both maps certified; otherwise, with nothing written to `out`:
+///         the mesh errors of `tutte_embedding()` for either mesh (`ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH`,
+///         `ERROR_NON_MANIFOLD`, `ERROR_NOT_A_DISK`; `Cross_parameterization_statistics::failed_mesh` says which),
+///         `ERROR_BORDER_TOO_SHORT` (fewer than four border vertices), `ERROR_WRONG_PARAMETER` (a landmark vertex
+///         not of its mesh, a `border_vertex_pair` vertex not on its border), `ERROR_CONSTRAINT_ON_BORDER` (a
+///         landmark on a border: border landmarks are not supported yet), `ERROR_DUPLICATE_CONSTRAINT` (a vertex
+///         used by two landmarks) -- these three with `Cross_parameterization_statistics::failed_landmark` --, the
+///         errors of `parameterize_certified()` on B (e.g. B has an interior edge joining two border vertices of one
+///         side of the square, which no valid map of the square keeps) and of `constrained_embedding()` on A, or
+///         `ERROR_INVALID_EMBEDDING` when a certificate fails.
+template <class TriangleMeshA, class TriangleMeshB, class LandmarkRange, class LocationMap,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB& tm_b, const LandmarkRange& landmarks,
+                                  LocationMap out, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef boost::graph_traits<TriangleMeshA>                         GTA;
+  typedef boost::graph_traits<TriangleMeshB>                         GTB;
+  typedef typename GTA::vertex_descriptor                            vertex_a;
+  typedef typename GTB::vertex_descriptor                            vertex_b;
+  typedef typename GTB::face_descriptor                              face_b;
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel        K2;
+  typedef K2::Point_2                                                Point_2;
+  typedef typename boost::property_map<TriangleMeshA, CGAL::vertex_point_t>::const_type VPMA;
+  typedef typename boost::property_traits<VPMA>::value_type          Point_3a;
+  typedef CGAL::Surface_mesh<Point_3a>                               Work;
+  typedef typename boost::graph_traits<Work>::vertex_descriptor      wvertex;
+
+  CGAL::Real_timer timer;
+  timer.start();
+  Cross_parameterization_statistics local_stats;
+  Cross_parameterization_statistics* stats_out =
+    choose_parameter(get_parameter(np, internal_np::statistics), static_cast<Cross_parameterization_statistics*>(nullptr));
+  Cross_parameterization_statistics& stats = stats_out ? *stats_out : local_stats;
+  stats = Cross_parameterization_statistics();
+  auto finish = [&](Error_code ec) { stats.seconds_total = timer.time(); return ec; };
+  const double max_seconds = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
+                                              std::numeric_limits<double>::infinity());
+  const double optimization_seconds = choose_parameter(get_parameter(np, internal_np::optimization_time_limit), 30.);
+  if(!(max_seconds >= 0) || !(optimization_seconds >= 0)) return finish(ERROR_WRONG_PARAMETER);
+
+  // ---- 1. validation -----------------------------------------------------------------------
+  const auto vpm_a = get(CGAL::vertex_point, tm_a);
+  const auto vpm_b = get(CGAL::vertex_point, tm_b);
+  internal::Indexed_disk<TriangleMeshA> disk_a;
+  internal::Indexed_disk<TriangleMeshB> disk_b;
+  Error_code ec = internal::make_indexed_disk(tm_a, GTA::null_halfedge(), disk_a);
+  if(ec != OK) { stats.failed_mesh = 0; return finish(ec); }
+  ec = internal::make_indexed_disk(tm_b, GTB::null_halfedge(), disk_b);
+  if(ec != OK) { stats.failed_mesh = 1; return finish(ec); }
+  stats.vertices_a = disk_a.number_of_vertices();
+  stats.faces_a = disk_a.number_of_faces();
+  stats.vertices_b = disk_b.number_of_vertices();
+  stats.faces_b = disk_b.number_of_faces();
+  std::unordered_map<vertex_a, std::size_t, boost::hash<vertex_a> > index_a;
+  std::unordered_map<vertex_b, std::size_t, boost::hash<vertex_b> > index_b;
+  for(std::size_t i = 0; i < disk_a.vertices.size(); ++i) index_a.emplace(disk_a.vertices[i], i);
+  for(std::size_t i = 0; i < disk_b.vertices.size(); ++i) index_b.emplace(disk_b.vertices[i], i);
+
+  std::vector<std::pair<std::size_t, std::size_t> > pairs; // landmarks as indices into disk_a, disk_b
+  {
+    std::unordered_set<std::size_t> seen_a, seen_b;
+    for(const auto& l : landmarks)
+    {
+      stats.failed_landmark = pairs.size();
+      const auto ia = index_a.find(l.first);
+      if(ia == index_a.end()) { stats.failed_mesh = 0; return finish(ERROR_WRONG_PARAMETER); }
+      const auto ib = index_b.find(l.second);
+      if(ib == index_b.end()) { stats.failed_mesh = 1; return finish(ERROR_WRONG_PARAMETER); }
+      if(disk_a.on_border[ia->second]) { stats.failed_mesh = 0; return finish(ERROR_CONSTRAINT_ON_BORDER); }
+      if(disk_b.on_border[ib->second]) { stats.failed_mesh = 1; return finish(ERROR_CONSTRAINT_ON_BORDER); }
+      if(!seen_a.insert(ia->second).second) { stats.failed_mesh = 0; return finish(ERROR_DUPLICATE_CONSTRAINT); }
+      if(!seen_b.insert(ib->second).second) { stats.failed_mesh = 1; return finish(ERROR_DUPLICATE_CONSTRAINT); }
+      pairs.emplace_back(ia->second, ib->second);
+    }
+    stats.failed_landmark = std::size_t(-1);
+    stats.landmarks = pairs.size();
+  }
+
+  // ---- 2. the common border ------------------------------------------------------------------
+  // positions of the matched vertices on their border cycles
+  std::vector<std::size_t> border_pos_a(disk_a.number_of_vertices(), std::size_t(-1));
+  std::vector<std::size_t> border_pos_b(disk_b.number_of_vertices(), std::size_t(-1));
+  for(std::size_t k = 0; k < disk_a.border.size(); ++k) border_pos_a[disk_a.border[k]] = k;
+  for(std::size_t k = 0; k < disk_b.border.size(); ++k) border_pos_b[disk_b.border[k]] = k;
+  std::size_t start_a = 0, start_b = 0;
+  typedef std::pair<vertex_a, vertex_b> Vertex_pair;
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::border_vertex_pair_t>::value)
+  {
+    const Vertex_pair given = get_parameter(np, internal_np::border_vertex_pair);
+    const auto ia = index_a.find(given.first);
+    if(ia == index_a.end() || border_pos_a[ia->second] == std::size_t(-1)) { stats.failed_mesh = 0; return finish(ERROR_WRONG_PARAMETER); }
+    const auto ib = index_b.find(given.second);
+    if(ib == index_b.end() || border_pos_b[ib->second] == std::size_t(-1)) { stats.failed_mesh = 1; return finish(ERROR_WRONG_PARAMETER); }
+    start_a = border_pos_a[ia->second];
+    start_b = border_pos_b[ib->second];
+  }
+  else
+  {
+    // the first border vertex of A in vertices(tm_a), the border vertex of B nearest to it
+    std::size_t first = 0;
+    while(border_pos_a[first] == std::size_t(-1)) ++first;
+    start_a = border_pos_a[first];
+    const auto& p = get(vpm_a, disk_a.vertices[first]);
+    double best = std::numeric_limits<double>::infinity();
+    for(std::size_t k = 0; k < disk_b.border.size(); ++k)
+    {
+      const double d = internal::squared_distance_3_double(p, get(vpm_b, disk_b.vertices[disk_b.border[k]]));
+      if(d < best) { best = d; start_b = k; }
+    }
+  }
+  std::vector<Point_2> border_uv_a, border_uv_b;
+  ec = internal::common_square_border(disk_a, vpm_a, start_a, disk_b, vpm_b, start_b, border_uv_a, border_uv_b);
+  if(ec != OK) return finish(ec);
+  stats.seconds_validation = timer.time();
+  auto remaining = [&]() { const double r = max_seconds - timer.time(); return r > 0 ? r : 0.; };
+
+  // ---- 3. B's map -------------------------------------------------------------------------------
+  std::unordered_map<vertex_b, Point_2, boost::hash<vertex_b> > uv_b_storage;
+  for(std::size_t i = 0; i < disk_b.vertices.size(); ++i) uv_b_storage[disk_b.vertices[i]] = Point_2(0, 0);
+  boost::associative_property_map<std::unordered_map<vertex_b, Point_2, boost::hash<vertex_b> > > uv_b(uv_b_storage);
+  for(std::size_t k = 0; k < disk_b.border.size(); ++k) put(uv_b, disk_b.vertices[disk_b.border[k]], border_uv_b[k]);
+  ec = parameterize_certified(tm_b, GTB::null_halfedge(), uv_b,
+    parameters::border_shape(Border_shape::FIXED,
+      parameters::optimization_policy(Optimization_policy::ALWAYS,
+        parameters::pipeline_statistics(&stats.map_b,
+          CGAL::parameters::maximum_running_time(remaining())))));
+  stats.report_b = check_embedding(tm_b, uv_b);
+  stats.seconds_map_b = timer.time() - stats.seconds_validation;
+  if(ec != OK) { stats.failed_mesh = 1; return finish(ec); }
+  if(!stats.report_b.is_valid()) { stats.failed_mesh = 1; return finish(ERROR_INVALID_EMBEDDING); }
+
+  // ---- 4. A's map, on a copy refined by constrained_embedding() ---------------------------------
+  Work work;
+  std::vector<std::pair<vertex_a, wvertex> > v2v;
+  CGAL::copy_face_graph(tm_a, work, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v)));
+  std::unordered_map<vertex_a, wvertex, boost::hash<vertex_a> > to_work(v2v.begin(), v2v.end());
+  auto uv_a = work.template add_property_map<wvertex, Point_2>("v:pe_cross_uv", Point_2(0, 0)).first;
+  for(std::size_t k = 0; k < disk_a.border.size(); ++k) uv_a[to_work[disk_a.vertices[disk_a.border[k]]]] = border_uv_a[k];
+  std::vector<std::pair<wvertex, Point_2> > constraints;
+  for(const auto& p : pairs)
+    constraints.emplace_back(to_work[disk_a.vertices[p.first]], get(uv_b, disk_b.vertices[p.second]));
+  const double before_a = timer.time();
+  std::vector<Steiner_point<wvertex> > steiner;
+  ec = constrained_embedding(work, constraints, uv_a,
+    parameters::steiner_points(&steiner,
+    parameters::border_shape(Border_shape::FIXED,
+      parameters::optimization_time_limit((std::min)(optimization_seconds, remaining()),
+        parameters::statistics(&stats.map_a,
+          CGAL::parameters::maximum_running_time(remaining()))))));
+  // no collect_garbage(): the descriptors of `steiner` stay valid (number_of_vertices() skips the removed ones)
+  stats.vertices_added_a = work.number_of_vertices() - disk_a.number_of_vertices();
+  if(ec == OK) stats.report_a = check_embedding(work, uv_a);
+  stats.seconds_map_a = timer.time() - before_a;
+  if(ec != OK) { stats.failed_mesh = 0; return finish(ec); }
+  if(!stats.report_a.is_valid()) { stats.failed_mesh = 0; return finish(ERROR_INVALID_EMBEDDING); }
+
+  // ---- 5. every vertex of A located in B's map -------------------------------------------------
+  const double before_location = timer.time();
+  std::vector<Point_2> map_b(disk_b.number_of_vertices()), queries(disk_a.number_of_vertices());
+  for(std::size_t i = 0; i < map_b.size(); ++i) map_b[i] = get(uv_b, disk_b.vertices[i]);
+  for(std::size_t i = 0; i < queries.size(); ++i) queries[i] = uv_a[to_work[disk_a.vertices[i]]];
+  std::vector<internal::Map_location> located;
+  stats.unlocated = internal::locate_in_map(map_b, disk_b.faces, queries, located);
+  if(stats.unlocated > 0) return finish(ERROR_INVALID_EMBEDDING);
+  for(const internal::Map_location& l : located)
+  {
+    if(l.zeros == 2) ++stats.located_on_vertex;
+    else if(l.zeros == 1) ++stats.located_on_edge;
+    else ++stats.located_in_face;
+  }
+  stats.landmarks_exact = true;
+  for(const auto& p : pairs)
+  {
+    const internal::Map_location& l = located[p.first];
+    bool at_partner = false;
+    for(int i = 0; i < 3; ++i)
+      if(disk_b.faces[l.face][i] == p.second && l.barycentric[i] == 1.) at_partner = true;
+    if(!at_partner) stats.landmarks_exact = false;
+  }
+  if(!stats.landmarks_exact) return finish(ERROR_INVALID_EMBEDDING);
+  // the other direction: B's vertices located on A's refined copy, then on A's faces
+  constexpr bool backwards = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::b_to_a_locations_t>::value;
+  std::vector<Cross_location<TriangleMeshA> > back;
+  if constexpr(backwards)
+  {
+    ec = internal::locate_on_refined_copy(tm_a, disk_a, work, uv_a, to_work, steiner, map_b, back);
+    if(ec != OK) return finish(ec);
+    stats.located_b_on_a = back.size();
+  }
+  std::vector<face_b> faces_b;
+  faces_b.reserve(disk_b.number_of_faces());
+  for(face_b f : faces(tm_b)) faces_b.push_back(f);
+  for(std::size_t i = 0; i < located.size(); ++i)
+    put(out, disk_a.vertices[i], Cross_location<TriangleMeshB>(faces_b[located[i].face], located[i].barycentric));
+  if constexpr(backwards)
+  {
+    auto out_b = get_parameter(np, internal_np::b_to_a_locations);
+    for(std::size_t i = 0; i < back.size(); ++i) put(out_b, disk_b.vertices[i], back[i]);
+  }
+  stats.seconds_location = timer.time() - before_location;
+  return finish(OK);
+}
+
+/// \ingroup PkgProgressiveEmbeddingMainFunctions
+///
+/// interpolates a per-vertex property of `tm_b` onto the vertices of `tm_a` through the locations computed by
+/// `cross_parameterization()`: the value at a vertex of A is the convex combination of the values at the three
+/// vertices of its face of B, with its barycentric coordinates as weights.
+///
+/// \tparam TriangleMeshA a model of `FaceGraph`
+/// \tparam TriangleMeshB a model of `FaceGraph`
+/// \tparam LocationMap a model of `ReadablePropertyMap` from the vertices of `tm_a` to `Cross_location<TriangleMeshB>`
+/// \tparam VertexValueMapB a model of `ReadablePropertyMap` from the vertices of `tm_b` to a value: an arithmetic type
+///         (a scalar), a `std::array` of numbers, a CGAL `Point_2` or `Point_3` (a uv, a position) or a
+///         `CGAL::IO::Color` (rounded to the nearest)
+/// \tparam VertexValueMapA a model of `WritablePropertyMap` from the vertices of `tm_a` to the same value type
+///
+/// \param tm_a the mesh whose vertices receive the values
+/// \param tm_b the mesh whose property is transferred
+/// \param locations the location on `tm_b` of every vertex of `tm_a`
+/// \param from_b the property of `tm_b`
+/// \param to_a receives the interpolated property
+template <class TriangleMeshA, class TriangleMeshB, class LocationMap, class VertexValueMapB, class VertexValueMapA>
+void transfer_vertex_property(const TriangleMeshA& tm_a, const TriangleMeshB& tm_b, LocationMap locations,
+                              VertexValueMapB from_b, VertexValueMapA to_a)
+{
+  typedef typename boost::property_traits<VertexValueMapB>::value_type Value;
+  for(auto v : vertices(tm_a))
+  {
+    const Cross_location<TriangleMeshB> loc = get(locations, v);
+    const auto h = halfedge(loc.first, tm_b);
+    const std::array<Value, 3> values{{ Value(get(from_b, source(h, tm_b))), Value(get(from_b, target(h, tm_b))),
+                                        Value(get(from_b, target(next(h, tm_b), tm_b))) }};
+    put(to_a, v, internal::weighted_sum(values, loc.second));
+  }
+}
+
+} // namespace Progressive_embedding
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_EMBEDDING_CROSS_PARAMETERIZATION_H

@@ -1,0 +1,388 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+// cross_parameterization(): identical meshes (every vertex on its own vertex), a disk and its remeshed
+// copy (3D error of the images relative to the bounding-box diagonal, smaller with more landmarks),
+// every error path with nothing written, Polyhedron_3, the exact location step in Gmpq, and the
+// transfer of vertex properties.
+
+#include <CGAL/Progressive_embedding/cross_parameterization.h>
+#include <CGAL/Progressive_embedding/internal/cross/locate_in_map.h>
+#include <CGAL/Progressive_embedding/internal/disk_generators.h>
+#include <CGAL/Progressive_embedding/internal/cross/remeshed_pair_protocol.h>
+#include <CGAL/Progressive_embedding/certified_pipeline.h>
+
+#include "registry.h"
+#include "../test_util.h"
+#include "mesh_fixtures.h"
+
+#include <CGAL/Polygon_mesh_processing/remesh.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <set>
+#include <string>
+#include <tuple>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+template <class Mesh>
+using Location_map = std::unordered_map<typename boost::graph_traits<Mesh>::vertex_descriptor, PE::Cross_location<Mesh>,
+                                        boost::hash<typename boost::graph_traits<Mesh>::vertex_descriptor> >;
+
+// the barycentric coordinate of `v` in the location (-1 if `v` is not a corner of its face)
+template <class Mesh>
+double weight_of(const Mesh& m, const PE::Cross_location<Mesh>& loc, typename boost::graph_traits<Mesh>::vertex_descriptor v)
+{
+  const auto h = halfedge(loc.first, m);
+  if(source(h, m) == v) return loc.second[0];
+  if(target(h, m) == v) return loc.second[1];
+  if(target(next(h, m), m) == v) return loc.second[2];
+  return -1;
+}
+
+template <class Mesh>
+std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> interior_vertices(const Mesh& m)
+{
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> r;
+  for(auto v : vertices(m)) if(!CGAL::is_border(v, m)) r.push_back(v);
+  return r;
+}
+
+// runs cross_parameterization() and checks the call's guarantees: OK, both maps certified, every landmark exact
+// (and the other direction, B's vertices located on A, into `back`: every landmark of B exactly on its partner)
+template <class MeshA, class MeshB, class Landmarks, class Locations, class BackLocations>
+int certified_cross(const MeshA& a, const MeshB& b, const Landmarks& landmarks, Locations& loc,
+                    PE::Cross_parameterization_statistics& st, BackLocations& back)
+{
+  const PE::Error_code ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(loc),
+    PE::parameters::b_to_a_locations(boost::make_assoc_property_map(back), PE::parameters::statistics(&st)));
+  CHECK(ec == PE::OK, PE::get_error_message(ec) << " (failed mesh " << st.failed_mesh << ")");
+  CHECK(st.report_a.is_valid() && st.report_b.is_valid() && st.landmarks_exact, "certified, landmarks exact");
+  CHECK(loc.size() == st.vertices_a, "every vertex of A located");
+  CHECK(back.size() == st.vertices_b && st.located_b_on_a == st.vertices_b, "every vertex of B located on A");
+  for(const auto& p : landmarks) CHECK(weight_of(a, back.at(p.second), p.first) == 1., "landmark of B exact on A");
+  return EXIT_SUCCESS;
+}
+
+// A == B: landmarks at the same vertices. On a grid with every interior vertex a landmark, every vertex lands
+// exactly on itself (the border too: both borders are the same); on mushroom with 5 landmarks, the landmarks and
+// the border vertices do, the other vertices land near themselves.
+template <class Mesh>
+int identical_grid()
+{
+  Mesh a, b;
+  PE::internal::make_grid_disk(7, a);
+  PE::internal::make_grid_disk(7, b);
+  std::vector<std::pair<typename boost::graph_traits<Mesh>::vertex_descriptor,
+                        typename boost::graph_traits<Mesh>::vertex_descriptor> > landmarks;
+  auto va = vertices(a).begin();
+  auto vb = vertices(b).begin();
+  for(; va != vertices(a).end(); ++va, ++vb)
+    if(!CGAL::is_border(*va, a)) landmarks.emplace_back(*va, *vb);
+  Location_map<Mesh> loc, back;
+  PE::Cross_parameterization_statistics st;
+  RUN(certified_cross(a, b, landmarks, loc, st, back));
+  va = vertices(a).begin();
+  vb = vertices(b).begin();
+  for(; va != vertices(a).end(); ++va, ++vb)
+  {
+    CHECK(weight_of(b, loc.at(*va), *vb) == 1., "vertex on its own vertex");
+    CHECK(weight_of(a, back.at(*vb), *va) == 1., "vertex of B on its own vertex of A");
+  }
+  CHECK(st.located_on_vertex == st.vertices_a, "all on vertices");
+  std::cout << "identical grid (" << mesh_name<Mesh>() << "): " << st.vertices_a << " vertices, " << landmarks.size()
+            << " landmarks, every vertex exactly on its own vertex, vertices added to A " << st.vertices_added_a
+            << ", " << st.seconds_total << " s" << std::endl;
+  return EXIT_SUCCESS;
+}
+
+template <class Mesh>
+int identical_mesh(const std::string& file)
+{
+  Mesh a, b;
+  CHECK(CGAL::IO::read_polygon_mesh(file, a) && CGAL::IO::read_polygon_mesh(file, b), "read " << file);
+  const auto la = PE::internal::spread_interior_vertices(a, 5);
+  std::vector<std::pair<typename boost::graph_traits<Mesh>::vertex_descriptor,
+                        typename boost::graph_traits<Mesh>::vertex_descriptor> > landmarks;
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> va(vertices(a).begin(), vertices(a).end()),
+                                                                     vb(vertices(b).begin(), vertices(b).end());
+  std::unordered_map<typename boost::graph_traits<Mesh>::vertex_descriptor, std::size_t,
+                     boost::hash<typename boost::graph_traits<Mesh>::vertex_descriptor> > index;
+  for(std::size_t i = 0; i < va.size(); ++i) index[va[i]] = i;
+  for(auto v : la) landmarks.emplace_back(v, vb[index[v]]);
+  Location_map<Mesh> loc, back;
+  PE::Cross_parameterization_statistics st;
+  RUN(certified_cross(a, b, landmarks, loc, st, back));
+  const double diag = PE::internal::bbox_diagonal(a);
+  double sum = 0, worst = 0, own_weight_min = 1;
+  std::size_t border_exact = 0, nb = 0;
+  for(std::size_t i = 0; i < va.size(); ++i)
+  {
+    const PE::Cross_location<Mesh>& l = loc.at(va[i]);
+    const double e = std::sqrt(CGAL::to_double(CGAL::squared_distance(PMP::construct_point(l, b), get(CGAL::vertex_point, a, va[i])))) / diag;
+    sum += e;
+    worst = (std::max)(worst, e);
+    if(CGAL::is_border(va[i], a)) { ++nb; if(weight_of(b, l, vb[i]) == 1.) ++border_exact; }
+    own_weight_min = (std::min)(own_weight_min, (std::max)(0., weight_of(b, l, vb[i])));
+  }
+  for(const auto& p : landmarks) CHECK(weight_of(b, loc.at(p.first), p.second) == 1., "landmark exact");
+  CHECK(border_exact == nb, "border vertices on their own vertex: " << border_exact << " of " << nb);
+  CHECK(sum / va.size() < 2e-3, "mean error " << sum / va.size());
+  std::cout << "identical " << file << " (" << mesh_name<Mesh>() << "): 5 landmarks and " << nb
+            << " border vertices exactly on their own vertex; the others: mean error " << sum / va.size()
+            << " of the diagonal, max " << worst << ", smallest weight of the own vertex " << own_weight_min
+            << "; vertices added to A " << st.vertices_added_a << ", " << st.seconds_total << " s" << std::endl;
+  return EXIT_SUCCESS;
+}
+
+// A == B with the landmarks' partners shifted by one (landmark k of A on landmark k + 1 of B): A's map must move
+// them far, its copy is refined by Steiner vertices; both directions are still located, the landmarks exact, and
+// the locations of B's vertices on A (through the Steiner points' positions on A's faces) sum to 1.
+template <class Mesh>
+int shifted_landmarks(const std::string& file)
+{
+  Mesh a, b;
+  CHECK(CGAL::IO::read_polygon_mesh(file, a) && CGAL::IO::read_polygon_mesh(file, b), "read " << file);
+  const auto la = PE::internal::spread_interior_vertices(a, 5);
+  const auto lb = PE::internal::spread_interior_vertices(b, 5);
+  std::vector<std::pair<typename boost::graph_traits<Mesh>::vertex_descriptor,
+                        typename boost::graph_traits<Mesh>::vertex_descriptor> > landmarks;
+  for(std::size_t k = 0; k < la.size(); ++k) landmarks.emplace_back(la[k], lb[(k + 1) % lb.size()]);
+  Location_map<Mesh> loc, back;
+  PE::Cross_parameterization_statistics st;
+  RUN(certified_cross(a, b, landmarks, loc, st, back));
+  CHECK(st.vertices_added_a > 0, "A's copy refined");
+  for(const auto& l : back)
+  {
+    const double sum = l.second.second[0] + l.second.second[1] + l.second.second[2];
+    CHECK(std::abs(sum - 1) < 1e-12 && *std::min_element(l.second.second.begin(), l.second.second.end()) >= 0,
+          "coordinates of a vertex of B on A");
+  }
+  std::cout << "shifted landmarks on " << file << " (" << mesh_name<Mesh>() << "): " << st.vertices_added_a
+            << " vertices added to A's copy, both directions located, landmarks exact, " << st.seconds_total << " s"
+            << std::endl;
+  return EXIT_SUCCESS;
+}
+
+// A a libcgal-demo disk, B its isotropically remeshed copy; landmarks: vertices of A spread out, matched to the
+// nearest vertex of B. The mean 3D distance between a vertex of A and the image of it on B, relative to the
+// bounding-box diagonal.
+template <class MeshA>
+int remeshed_pair(const std::string& file, std::size_t count, double& mean_error, double& max_error)
+{
+  typedef Surface_mesh MeshB;
+  MeshA a;
+  MeshB b;
+  CHECK(CGAL::IO::read_polygon_mesh(file, a) && CGAL::IO::read_polygon_mesh(file, b), "read " << file);
+  PE::internal::remesh_isotropically(b);
+  b.collect_garbage();
+  const auto landmarks = PE::internal::nearest_vertex_landmarks(a, b, PE::internal::spread_interior_vertices(a, count));
+  std::unordered_map<typename boost::graph_traits<MeshA>::vertex_descriptor, PE::Cross_location<MeshB>,
+                     boost::hash<typename boost::graph_traits<MeshA>::vertex_descriptor> > loc;
+  std::unordered_map<MeshB::Vertex_index, PE::Cross_location<MeshA> > back;
+  PE::Cross_parameterization_statistics st;
+  RUN(certified_cross(a, b, landmarks, loc, st, back));
+  const double diag = PE::internal::bbox_diagonal(a);
+  std::tie(mean_error, max_error) = PE::internal::correspondence_error(a, b, boost::make_assoc_property_map(loc));
+  // the other direction: B's vertices on A
+  const std::pair<double, double> back_error = PE::internal::correspondence_error(b, a, boost::make_assoc_property_map(back));
+  CHECK(back_error.first < 2 * mean_error + 1e-3, "B -> A error " << back_error.first);
+  for(const auto& p : landmarks) CHECK(weight_of(b, loc.at(p.first), p.second) == 1., "landmark exact");
+  // the transfer of B's points gives the same points as PMP::construct_point()
+  std::unordered_map<typename boost::graph_traits<MeshA>::vertex_descriptor, Epick::Point_3,
+                     boost::hash<typename boost::graph_traits<MeshA>::vertex_descriptor> > moved;
+  PE::transfer_vertex_property(a, b, boost::make_assoc_property_map(loc), get(CGAL::vertex_point, b), boost::make_assoc_property_map(moved));
+  for(auto v : vertices(a))
+    CHECK(CGAL::squared_distance(moved.at(v), PMP::construct_point(loc.at(v), b)) <= 1e-20 * diag * diag, "transfer");
+  // a scalar: B's height
+  std::unordered_map<MeshB::Vertex_index, double> height_b;
+  for(auto w : vertices(b)) height_b[w] = b.point(w).z();
+  std::unordered_map<typename boost::graph_traits<MeshA>::vertex_descriptor, double,
+                     boost::hash<typename boost::graph_traits<MeshA>::vertex_descriptor> > height_a;
+  PE::transfer_vertex_property(a, b, boost::make_assoc_property_map(loc), boost::make_assoc_property_map(height_b),
+                               boost::make_assoc_property_map(height_a));
+  for(auto v : vertices(a))
+    CHECK(std::abs(height_a.at(v) - moved.at(v).z()) <= 1e-12 * diag, "scalar transfer");
+  std::cout << file << " (" << mesh_name<MeshA>() << ", " << st.vertices_a << " vertices) -> remeshed ("
+            << st.vertices_b << " vertices), " << count << " landmarks: mean error " << mean_error
+            << " of the diagonal, max " << max_error << " (B -> A: mean " << back_error.first << ", max "
+            << back_error.second << "); vertices added to A " << st.vertices_added_a
+            << "; on B: " << st.located_in_face << " in faces, " << st.located_on_edge << " on edges, "
+            << st.located_on_vertex << " on vertices; seconds: B " << st.seconds_map_b << ", A " << st.seconds_map_a
+            << ", location " << st.seconds_location << ", total " << st.seconds_total << std::endl;
+  return EXIT_SUCCESS;
+}
+
+template <class MeshA>
+int remeshed(const std::string& data_dir, const std::string& name, double bound)
+{
+  const std::string file = data_dir + "/meshes/" + name;
+  double mean5 = 0, max5 = 0, mean20 = 0, max20 = 0;
+  RUN(remeshed_pair<MeshA>(file, 5, mean5, max5));
+  RUN(remeshed_pair<MeshA>(file, 20, mean20, max20));
+  CHECK(mean5 < bound && mean20 < bound, "mean errors " << mean5 << ", " << mean20 << " below " << bound);
+  CHECK(mean20 < mean5, "the mean error falls from 5 to 20 landmarks: " << mean5 << " -> " << mean20);
+  return EXIT_SUCCESS;
+}
+
+// every error: the code, the landmark and the mesh named, nothing written
+template <class Mesh>
+int errors(const std::string& data_dir)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vd;
+  Mesh a, b, holed;
+  PE::internal::make_grid_disk(6, a);
+  PE::internal::make_grid_disk(6, b);
+  PE::internal::make_grid_disk(6, holed);
+  const std::vector<vd> ia = interior_vertices(a), ib = interior_vertices(b);
+  std::vector<vd> ba, bb;
+  for(auto v : vertices(a)) if(CGAL::is_border(v, a)) ba.push_back(v);
+  for(auto v : vertices(b)) if(CGAL::is_border(v, b)) bb.push_back(v);
+  // a hole in the middle: two border cycles
+  {
+    const std::vector<vd> ih = interior_vertices(holed);
+    CGAL::Euler::remove_face(halfedge(*faces_around_target(halfedge(ih[ih.size() / 2], holed), holed).begin(), holed), holed);
+  }
+  vd foreign;
+  {
+    // a vertex of another mesh with more vertices
+    static Mesh big;
+    PE::internal::make_grid_disk(9, big);
+    foreign = *std::prev(vertices(big).end());
+  }
+  (void)data_dir;
+  Location_map<Mesh> loc;
+  auto run = [&](const Mesh& ma, const Mesh& mb, const std::vector<std::pair<vd, vd> >& l, PE::Error_code expected,
+                 std::size_t failed_landmark, int failed_mesh, const char* what) -> int
+  {
+    PE::Cross_parameterization_statistics st;
+    const std::size_t na = num_vertices(ma), nb = num_vertices(mb);
+    const PE::Error_code ec = PE::cross_parameterization(ma, mb, l, boost::make_assoc_property_map(loc), PE::parameters::statistics(&st));
+    CHECK(ec == expected, what << ": " << PE::get_error_name(ec));
+    CHECK(st.failed_landmark == failed_landmark && st.failed_mesh == failed_mesh,
+          what << ": landmark " << st.failed_landmark << ", mesh " << st.failed_mesh);
+    CHECK(loc.empty(), what << ": nothing written");
+    CHECK(num_vertices(ma) == na && num_vertices(mb) == nb, what << ": meshes untouched");
+    std::cout << "  " << mesh_name<Mesh>() << ", " << what << ": " << PE::get_error_name(ec) << std::endl;
+    return EXIT_SUCCESS;
+  };
+  const std::size_t none = std::size_t(-1);
+  RUN(run(holed, b, {}, PE::ERROR_NOT_A_DISK, none, 0, "A not a disk"));
+  RUN(run(a, holed, {}, PE::ERROR_NOT_A_DISK, none, 1, "B not a disk"));
+  RUN(run(a, b, { { ia[0], ib[0] }, { foreign, ib[1] } }, PE::ERROR_WRONG_PARAMETER, 1, 0, "landmark not of A"));
+  RUN(run(a, b, { { ia[0], ib[0] }, { ia[1], foreign } }, PE::ERROR_WRONG_PARAMETER, 1, 1, "landmark not of B"));
+  RUN(run(a, b, { { ia[0], ib[0] }, { ia[0], ib[1] } }, PE::ERROR_DUPLICATE_CONSTRAINT, 1, 0, "vertex of A twice"));
+  RUN(run(a, b, { { ia[0], ib[0] }, { ia[1], ib[0] } }, PE::ERROR_DUPLICATE_CONSTRAINT, 1, 1, "vertex of B twice"));
+  RUN(run(a, b, { { ia[0], ib[0] }, { ba[0], ib[1] } }, PE::ERROR_CONSTRAINT_ON_BORDER, 1, 0, "landmark on A's border"));
+  RUN(run(a, b, { { ia[0], ib[0] }, { ia[1], bb[0] } }, PE::ERROR_CONSTRAINT_ON_BORDER, 1, 1, "landmark on B's border"));
+  {
+    PE::Cross_parameterization_statistics st;
+    const PE::Error_code ec = PE::cross_parameterization(a, b, std::vector<std::pair<vd, vd> >(), boost::make_assoc_property_map(loc),
+      PE::parameters::border_vertex_pair(std::make_pair(ia[0], bb[0]), PE::parameters::statistics(&st)));
+    CHECK(ec == PE::ERROR_WRONG_PARAMETER && st.failed_mesh == 0 && loc.empty(), "border pair not on A's border");
+    std::cout << "  " << mesh_name<Mesh>() << ", border pair not on A's border: " << PE::get_error_name(ec) << std::endl;
+  }
+  return EXIT_SUCCESS;
+}
+
+// the location step in exact rationals: B's map of a small disk converted exactly to Gmpq; the map's own vertices,
+// edge midpoints and face centroids located the same way as in double, on vertices and edges exactly
+int exact_location()
+{
+  Surface_mesh m;
+  PE::internal::make_grid_disk(8, m);
+  auto uv = m.add_property_map<Surface_mesh::Vertex_index, Epick::Point_2>("v:uv").first;
+  const PE::Error_code ec = PE::parameterize_certified(m, boost::graph_traits<Surface_mesh>::null_halfedge(), uv,
+    PE::parameters::border_shape(PE::Border_shape::CIRCLE, PE::parameters::optimization_policy(PE::Optimization_policy::ALWAYS)));
+  CHECK(ec == PE::OK, PE::get_error_message(ec));
+  std::vector<Epick::Point_2> pd;
+  std::vector<Kq::Point_2> pq;
+  for(auto v : vertices(m)) { pd.push_back(uv[v]); pq.push_back(Kq::Point_2(CGAL::Gmpq(uv[v].x()), CGAL::Gmpq(uv[v].y()))); }
+  std::vector<std::array<std::size_t, 3> > f;
+  for(auto fc : faces(m))
+  {
+    const auto h = halfedge(fc, m);
+    f.push_back({{ std::size_t(source(h, m)), std::size_t(target(h, m)), std::size_t(target(next(h, m), m)) }});
+  }
+  std::vector<Kq::Point_2> qq(pq);
+  std::vector<std::size_t> kind(pq.size(), 2);
+  for(const auto& t : f)
+  {
+    qq.push_back(CGAL::midpoint(pq[t[0]], pq[t[1]]));
+    kind.push_back(1);
+    qq.push_back(CGAL::centroid(pq[t[0]], pq[t[1]], pq[t[2]]));
+    kind.push_back(0);
+  }
+  std::vector<PE::internal::Map_location> rq, rd;
+  CHECK(PE::internal::locate_in_map(pq, f, qq, rq) == 0, "every exact query located");
+  // in double: the vertices (exact) and the rounded centroids
+  std::vector<Epick::Point_2> qd;
+  for(const auto& q : qq) qd.push_back(Epick::Point_2(CGAL::to_double(q.x()), CGAL::to_double(q.y())));
+  CHECK(PE::internal::locate_in_map(pd, f, qd, rd) == 0, "every double query located");
+  std::size_t same = 0;
+  for(std::size_t i = 0; i < qq.size(); ++i)
+  {
+    CHECK(rq[i].zeros == int(kind[i]) || (kind[i] == 1 && rq[i].zeros == 1), "exact kind of query " << i);
+    if(kind[i] == 2) CHECK(std::count(rq[i].barycentric.begin(), rq[i].barycentric.end(), 1.) == 1, "vertex weight 1");
+    if(kind[i] == 1) CHECK(std::count(rq[i].barycentric.begin(), rq[i].barycentric.end(), 0.5) == 2, "midpoint weights 1/2");
+    if(i < pq.size()) CHECK(rd[i].face == rq[i].face && rd[i].barycentric == rq[i].barycentric, "double = Gmpq on vertices");
+    if(rd[i].face == rq[i].face) ++same;
+  }
+  std::cout << "exact location (Gmpq): " << qq.size() << " queries (vertices, edge midpoints, centroids) located, on"
+            << " vertices and edges exactly; double gives the same face for " << same << std::endl;
+  return EXIT_SUCCESS;
+}
+
+} // namespace
+
+PE_TEST_GROUP(cross_identical)
+{
+  RUN(identical_grid<Surface_mesh>());
+  RUN(identical_grid<Polyhedron>());
+  RUN(identical_mesh<Surface_mesh>(data_dir + "/meshes/mushroom.off"));
+  return EXIT_SUCCESS;
+}
+
+PE_TEST_GROUP(cross_shifted)
+{
+  RUN(shifted_landmarks<Surface_mesh>(data_dir + "/meshes/mushroom.off"));
+  RUN(shifted_landmarks<Polyhedron>(data_dir + "/meshes/mushroom.off"));
+  return EXIT_SUCCESS;
+}
+
+PE_TEST_GROUP(cross_remeshed)
+{
+  RUN(remeshed<Surface_mesh>(data_dir, "mushroom.off", 0.02));
+  return EXIT_SUCCESS;
+}
+
+PE_TEST_GROUP(cross_polyhedron)
+{
+  RUN(remeshed<Polyhedron>(data_dir, "mushroom.off", 0.02));
+  return EXIT_SUCCESS;
+}
+
+PE_TEST_GROUP(cross_errors)
+{
+  RUN(errors<Surface_mesh>(data_dir));
+  RUN(errors<Polyhedron>(data_dir));
+  return EXIT_SUCCESS;
+}
+
+PE_TEST_GROUP(cross_exact_location)
+{
+  RUN(exact_location());
+  return EXIT_SUCCESS;
+}

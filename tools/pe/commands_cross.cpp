@@ -1,0 +1,138 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+// pe cross: the location on B of every vertex of A through a cross-parameterization with matched
+// landmarks (cross_parameterization()).
+
+#include "cli.h"
+#include "pe.h"
+
+#include <CGAL/Progressive_embedding/cross_parameterization.h>
+#include <CGAL/Progressive_embedding/IO/internal/atomic_output.h>
+
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace pe_tool {
+
+namespace {
+
+typedef std::pair<vertex_descriptor, vertex_descriptor> Landmark;
+
+// Reads `a_index b_index` lines (blank lines and `#` comments skipped); `lines[k]` is the line of landmark k.
+int read_landmarks(Run& run, const std::string& filename, const Mesh& a, const Mesh& b,
+                   std::vector<Landmark>& landmarks, std::vector<std::size_t>& lines)
+{
+  const std::string what = "cannot use the landmarks '" + filename + "'";
+  const std::string problem = input_file_problem(filename);
+  if(!problem.empty()) return run.fail(PE::ERROR_CANNOT_READ_FILE, what, problem);
+  std::ifstream in(filename, std::ios::binary);
+  const std::size_t na = a.number_of_vertices(), nb = b.number_of_vertices();
+  std::string line;
+  for(std::size_t lineno = 1; std::getline(in, line); ++lineno)
+  {
+    const std::string at = "line " + std::to_string(lineno) + ": ";
+    if(line.size() > 4096) return run.fail(PE::ERROR_MALFORMED_FILE, what, at + "line too long");
+    std::istringstream ls(line);
+    std::vector<std::string> tokens;
+    for(std::string t; tokens.size() < 3 && ls >> t; ) tokens.push_back(t);
+    if(tokens.empty() || tokens[0][0] == '#') continue;
+    std::string why;
+    unsigned long long ia = 0, ib = 0;
+    if(tokens.size() != 2) why = tokens.size() < 2 ? "one field" : "more than 2 fields";
+    else if(!parse_count(tokens[0], 0, na - 1, ia, why)) why = "a_index " + why;
+    else if(!parse_count(tokens[1], 0, nb - 1, ib, why)) why = "b_index " + why;
+    if(!why.empty())
+      return run.fail(PE::ERROR_MALFORMED_FILE, what, at + why + " (expected 'a_index b_index' with 0 <= a_index < " +
+                      std::to_string(na) + " and 0 <= b_index < " + std::to_string(nb) + ")");
+    landmarks.emplace_back(vertex_descriptor(static_cast<Mesh::size_type>(ia)), vertex_descriptor(static_cast<Mesh::size_type>(ib)));
+    lines.push_back(lineno);
+  }
+  return EXIT_VALID;
+}
+
+} // namespace
+
+int cmd_cross(const Arguments& a)
+{
+  Run run(a);
+  run.summary << "cross " << a.positional[0] << " -> " << a.positional[1] << ": ";
+  Input in_a, in_b;
+  int status = read_input(run, a.positional[0], in_a, Uv_mode::IGNORED, Shape::DISK, "A");
+  if(status != EXIT_VALID) return status;
+  status = read_input(run, a.positional[1], in_b, Uv_mode::IGNORED, Shape::DISK, "B");
+  if(status != EXIT_VALID) return status;
+  std::vector<Landmark> landmarks;
+  std::vector<std::size_t> lines;
+  status = read_landmarks(run, a.positional[2], in_a.mesh, in_b.mesh, landmarks, lines);
+  if(status != EXIT_VALID) return status;
+  status = check_output_path(run, a.positional[3]);
+  if(status != EXIT_VALID) return status;
+  run.result.add("output", a.positional[3]);
+  run.result.add("landmarks", landmarks.size());
+
+  const Budget budget(a);
+  std::vector<PE::Cross_location<Mesh> > located(in_a.mesh.number_of_vertices());
+  auto out = boost::make_iterator_property_map(located.begin(), get(CGAL::vertex_index, in_a.mesh));
+  PE::Cross_parameterization_statistics st;
+  const PE::Error_code ec = PE::cross_parameterization(in_a.mesh, in_b.mesh, landmarks, out,
+    PE::parameters::statistics(&st, CGAL::parameters::maximum_running_time(budget.remaining())));
+  run.result.add("vertices_a", st.vertices_a);
+  run.result.add("vertices_b", st.vertices_b);
+  run.result.add("vertices_added_a", st.vertices_added_a);
+  if(ec != PE::OK)
+  {
+    std::string detail;
+    if(st.failed_landmark < landmarks.size())
+    {
+      const Landmark& l = landmarks[st.failed_landmark];
+      detail = "'" + a.positional[2] + "' line " + std::to_string(lines[st.failed_landmark]) + ": landmark " +
+               std::to_string(std::size_t(l.first)) + " " + std::to_string(std::size_t(l.second)) + ": " +
+               (st.failed_mesh == 0 ? "the vertex of A " : "the vertex of B ");
+      detail += ec == PE::ERROR_CONSTRAINT_ON_BORDER ? "is on the border (landmarks must be interior)"
+              : ec == PE::ERROR_DUPLICATE_CONSTRAINT ? "is used by an earlier landmark" : PE::get_error_message(ec);
+      run.result.add("failed_landmark_line", lines[st.failed_landmark]);
+    }
+    else if(st.failed_mesh >= 0)
+      detail = std::string(st.failed_mesh == 0 ? "A" : "B") + ": " + PE::get_error_message(ec);
+    return run.fail(ec, "cross-parameterization of '" + in_a.filename + "' and '" + in_b.filename + "' failed", detail);
+  }
+  run.result.add("valid_a", st.report_a.is_valid());
+  run.result.add("valid_b", st.report_b.is_valid());
+  run.result.add("landmarks_exact", st.landmarks_exact);
+  run.result.add("on_vertex", st.located_on_vertex);
+  run.result.add("on_edge", st.located_on_edge);
+  run.result.add("in_face", st.located_in_face);
+  run.result.add("seconds_map_b", st.seconds_map_b);
+  run.result.add("seconds_map_a", st.seconds_map_a);
+  run.result.add("seconds_location", st.seconds_location);
+
+  // B's faces in file order (the reader adds them in order, no face removed), the coordinates in the
+  // order the face lists its vertices in B's file (vertices_around_face starts at target(halfedge(f)))
+  const PE::Error_code wec = PE::IO::internal::write_file_atomically(a.positional[3], [&](std::ostream& os) {
+    os << std::setprecision(17);
+    for(vertex_descriptor v : in_a.mesh.vertices())
+    {
+      const PE::Cross_location<Mesh>& l = located[std::size_t(v)];
+      // PMP order: source(h), target(h), target(next(h)); file order: target(h), target(next(h)), source(h)
+      os << std::size_t(l.first) << ' ' << l.second[1] << ' ' << l.second[2] << ' ' << l.second[0] << '\n';
+    }
+    return os ? PE::OK : PE::ERROR_CANNOT_WRITE_FILE;
+  });
+  if(wec != PE::OK) return run.fail(wec, "cannot write '" + a.positional[3] + "'");
+  run.result.add("written", true);
+  run.result.add("valid", true);
+  run.result.add("status", "OK");
+  run.result.add("seconds", run.timer.seconds());
+  run.summary << st.vertices_a << " vertices of A located on B (" << st.located_on_vertex << " on vertices, "
+              << st.located_on_edge << " on edges), " << landmarks.size() << " landmarks exact, both maps valid, "
+              << st.vertices_added_a << " vertices added to A's copy, " << seconds_string(run.timer.seconds());
+  return run.finish(EXIT_VALID);
+}
+
+} // namespace pe_tool

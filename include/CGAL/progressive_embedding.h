@@ -17,7 +17,9 @@
 #include <CGAL/Progressive_embedding/progressive_embedding.h>
 #include <CGAL/Progressive_embedding/embed_patch.h>
 #include <CGAL/Progressive_embedding/triangulate_self_overlapping_polygon_2.h>
+#include <CGAL/Progressive_embedding/Constrained_embedding_statistics.h>
 #include <CGAL/Progressive_embedding/constrained_embedding.h>
+#include <CGAL/Progressive_embedding/cross_parameterization.h>
 #include <CGAL/Progressive_embedding/Progressive_embedding_parameterizer_3.h>
 #include <CGAL/Progressive_embedding/distortion.h>
 #include <CGAL/Progressive_embedding/optimize_distortion.h>

@@ -126,8 +126,10 @@ inline double corner_angle(const Polygon& Q, std::size_t o, std::size_t a, std::
   return std::atan2(ux * vy - uy * vx, ux * vx + uy * vy);
 }
 
-// Empty if at every vertex k the triangles' corners sum to the polygon's angle (in (0, 2 pi], from
-// k->next to k->prev) plus 2 pi turns[k], within `tol` (small integer coordinates only).
+// Empty if at every vertex k the triangles' corners sum to the polygon's angle (in (0, 2 pi), from
+// k->next to k->prev) plus 2 pi turns[k], within `tol` (small integer coordinates only). A reversal
+// (k->next and k->prev in the same direction: an angle of 0 or 2 pi) has no such angle; the
+// function's contract refuses it, whatever the rotation index.
 inline std::string angle_sum_failure(const Polygon& Q, const std::vector<Tri>& T, const std::vector<int>& turns, double tol)
 {
   const std::size_t n = Q.size();
@@ -136,6 +138,9 @@ inline std::string angle_sum_failure(const Polygon& Q, const std::vector<Tri>& T
     for(int c = 0; c < 3; ++c) sum[t[c]] += corner_angle(Q, t[c], t[(c + 1) % 3], t[(c + 2) % 3]);
   for(std::size_t k = 0; k < n; ++k)
   {
+    const std::size_t next = (k + 1) % n, prev = (k + n - 1) % n;
+    if(Q.orientation(k, next, prev) == CGAL::COLLINEAR && (Q[next] - Q[k]) * (Q[prev] - Q[k]) > 0)
+      return "vertex " + std::to_string(k) + ": a reversal";
     double base = corner_angle(Q, k, (k + 1) % n, (k + n - 1) % n);
     if(base <= 0) base += two_pi;
     if(!(std::abs(sum[k] - (base + two_pi * turns[k])) <= tol)) return "vertex " + std::to_string(k) + ": angle sum";

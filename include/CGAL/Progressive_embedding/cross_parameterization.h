@@ -101,22 +101,40 @@ struct Cross_parameterization_statistics
   /// the mesh an error is about: 0 for A, 1 for B, -1 for none (a mesh that is not a disk, a landmark vertex, a
   /// border vertex of `border_vertex_pair`, a map that failed)
   int failed_mesh = -1;
-  /// vertices and faces of A (as given) and of B
-  std::size_t vertices_a = 0, faces_a = 0, vertices_b = 0, faces_b = 0;
+  /// vertices of A (as given)
+  std::size_t vertices_a = 0;
+  /// faces of A (as given)
+  std::size_t faces_a = 0;
+  /// vertices of B
+  std::size_t vertices_b = 0;
+  /// faces of B
+  std::size_t faces_b = 0;
   /// landmark pairs
   std::size_t landmarks = 0;
   /// vertices added to A's copy by `constrained_embedding()` (kept after its coarsening); they are not reported
   std::size_t vertices_added_a = 0;
-  /// vertices of A located inside a face of B, on an edge of B, on a vertex of B (decided exactly)
-  std::size_t located_in_face = 0, located_on_edge = 0, located_on_vertex = 0;
+  /// vertices of A located inside a face of B (decided exactly)
+  std::size_t located_in_face = 0;
+  /// vertices of A located on an edge of B (decided exactly)
+  std::size_t located_on_edge = 0;
+  /// vertices of A located on a vertex of B (decided exactly)
+  std::size_t located_on_vertex = 0;
   /// vertices of A not located in B's map (0 unless a certificate is wrong: the call then fails)
   std::size_t unlocated = 0;
   /// whether every landmark of A is located exactly on its partner (barycentric coordinate 1 there)
   bool landmarks_exact = false;
   /// with `b_to_a_locations`: vertices of B located on A (all of them on success)
   std::size_t located_b_on_a = 0;
-  /// seconds: validation and border placement, B's map, A's map, point location, in all
-  double seconds_validation = 0, seconds_map_b = 0, seconds_map_a = 0, seconds_location = 0, seconds_total = 0;
+  /// seconds spent validating the input and placing the borders
+  double seconds_validation = 0;
+  /// seconds spent mapping B
+  double seconds_map_b = 0;
+  /// seconds spent mapping A
+  double seconds_map_a = 0;
+  /// seconds spent locating the vertices
+  double seconds_location = 0;
+  /// seconds in all
+  double seconds_total = 0;
   /// the certificate of B's map (`check_embedding()`)
   Embedding_report report_b;
   /// the certificate of A's map, on A's refined copy (`check_embedding()`)

@@ -171,31 +171,9 @@ void run_child(const std::string& data, const std::string& name, const std::stri
 Result run_one(const std::string& data, const std::string& name, const std::string& type, double limit, double memory_mb)
 {
   Result r;
-  int fds[2];
-  if(pipe(fds) != 0) return r;
-  const pid_t pid = fork();
-  if(pid < 0) return r;
-  if(pid == 0)
-  {
-    close(fds[0]);
-    if(memory_mb > 0)
-    {
-      struct rlimit rl;
-      rl.rlim_cur = rl.rlim_max = static_cast<rlim_t>(memory_mb * 1024 * 1024);
-      setrlimit(RLIMIT_AS, &rl);
-    }
-    run_child(data, name, type, limit, fds[1]);
-    close(fds[1]);
-    _exit(0);
-  }
-  close(fds[1]);
-  std::string out;
-  char buf[512];
-  ssize_t k;
-  while((k = read(fds[0], buf, sizeof buf)) > 0) out.append(buf, std::size_t(k));
-  close(fds[0]);
   int status = 0;
-  waitpid(pid, &status, 0);
+  const std::string out = pe_bench::run_in_child([&](int fd) { run_child(data, name, type, limit, fd); }, memory_mb, status);
+  if(status == -1) return r;
   std::istringstream is(out);
   Result got;
   if(is >> got.status >> got.vertices >> got.unknowns >> got.seconds >> got.peak_mb >> got.digest) return got;

@@ -94,25 +94,9 @@ static void run_child(const std::string& shape, std::size_t size, double budget,
 
 static bool run_one(const std::string& shape, std::size_t size, double budget, Row& row)
 {
-  int fds[2];
-  if(pipe(fds) != 0) return false;
-  const pid_t pid = fork();
-  if(pid < 0) return false;
-  if(pid == 0)
-  {
-    close(fds[0]);
-    run_child(shape, size, budget, fds[1]);
-    close(fds[1]);
-    _exit(0);
-  }
-  close(fds[1]);
-  std::string out;
-  char buf[512];
-  ssize_t k;
-  while((k = read(fds[0], buf, sizeof buf)) > 0) out.append(buf, std::size_t(k));
-  close(fds[0]);
   int status = 0;
-  waitpid(pid, &status, 0);
+  const std::string out = pe_bench::run_in_child([&](int fd) { run_child(shape, size, budget, fd); }, 0., status);
+  if(status == -1) return false;
   std::istringstream is(out);
   int ok = 0;
   row.shape = shape;

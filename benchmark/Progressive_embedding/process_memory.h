@@ -2,10 +2,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 // Author(s) : Progressive_embedding contributors
 
-// Benchmark helpers (Linux): the process's resident memory, from /proc/self/status.
+// Benchmark helpers (Linux): the process's resident memory, from /proc/self/status; a measurement run
+// in a child process (its own memory peak, a crash or a memory limit seen as such).
 
 #ifndef PE_BENCHMARK_PROCESS_MEMORY_H
 #define PE_BENCHMARK_PROCESS_MEMORY_H
+
+#include <sys/resource.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <fstream>
@@ -34,6 +40,39 @@ inline bool reset_peak_rss()
   std::ofstream f("/proc/self/clear_refs");
   f << "5" << std::flush;
   return bool(f);
+}
+
+// Runs `child(fd)` in a forked process (with an address-space limit of `memory_mb` MB when positive)
+// and returns what it wrote to `fd`; `status` receives its waitpid() status (-1 if it could not start).
+template <class Child>
+std::string run_in_child(Child child, double memory_mb, int& status)
+{
+  status = -1;
+  int fds[2];
+  if(pipe(fds) != 0) return std::string();
+  const pid_t pid = fork();
+  if(pid < 0) { close(fds[0]); close(fds[1]); return std::string(); }
+  if(pid == 0)
+  {
+    close(fds[0]);
+    if(memory_mb > 0)
+    {
+      struct rlimit rl;
+      rl.rlim_cur = rl.rlim_max = static_cast<rlim_t>(memory_mb * 1024 * 1024);
+      setrlimit(RLIMIT_AS, &rl);
+    }
+    child(fds[1]);
+    close(fds[1]);
+    _exit(0);
+  }
+  close(fds[1]);
+  std::string out;
+  char buf[512];
+  ssize_t k;
+  while((k = read(fds[0], buf, sizeof buf)) > 0) out.append(buf, std::size_t(k));
+  close(fds[0]);
+  waitpid(pid, &status, 0);
+  return out;
 }
 
 } // namespace pe_bench

@@ -80,6 +80,9 @@ if [ "$constrained" = 1 ]; then
     --meshes "$meshes" --seeds 10 --counts 3 --optimize-seeds 0 --budget 60 --repeat 3 || true
   "$build/bin/constrained_benchmark" "$build/cgal_data/data" "$results/constrained_embedding_many" \
     --meshes "$meshes" --seeds 3 --counts 10,50 --optimize-seeds 0 --budget 60 --repeat 3 || true
+  # the same without the kinetic tracing: what it changes, side by side
+  "$build/bin/constrained_benchmark" "$build/cgal_data/data" "$results/constrained_embedding_many_no_kinetic" \
+    --meshes "$meshes" --seeds 3 --counts 10,50 --optimize-seeds 0 --budget 60 --repeat 3 --no-kinetic || true
   "$build/bin/constrained_benchmark" "$build/cgal_data/data" "$results/constrained_embedding_optimized" \
     --meshes retinal.off,dino.off,homer.off,mushroom.off,lion-head.off --seeds 1 --counts 3,10 --targets layout \
     --optimize-seeds 1 --budget 120 || true

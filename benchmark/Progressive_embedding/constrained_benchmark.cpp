@@ -20,12 +20,13 @@
 //   constrained_benchmark DATA_DIR OUT_PREFIX [--meshes a.off,b.off] [--seeds S] [--counts 3,10,50]
 //        [--min-vertices N] [--max-vertices N] [--no-disks] [--no-closed] [--optimize-seeds K]
 //        [--seeds-large S] [--budget SECONDS] [--max-steiner N] [--targets layout,jittered,random] [--jitter D]
-//        [--sequential] [--repeat R] [--no-coarsen]
+//        [--sequential] [--repeat R] [--no-coarsen] [--no-kinetic]
 //
 // --repeat R: every constrained run R times, the row of the median time to the certified map kept (the
 // host is shared and its timings noisy; the maps are the same, a failure in any repeat is kept).
 // --seeds-large S: only seeds < S for K > 3 (default: all).
 // --no-coarsen: the added vertices are all kept (constrained_embedding()'s coarsening off), for A/B runs.
+// --no-kinetic: constrained_embedding()'s kinetic tracing off (the tracings before it), for A/B runs.
 // Writes OUT_PREFIX.csv (one row per run) and OUT_PREFIX.md (per mesh and constraint count: medians
 // over the seeds; totals). The optimization (and its unconstrained reference) runs on seeds < K
 // (default 3); every run is certified before optimizing, and the time to the certified map is the sum
@@ -119,6 +120,7 @@ struct Row
   double mean_before = 0, max_before = 0, mean_after = 0, max_after = 0;
   std::size_t iterations = 0;
   std::string optimization_status;
+  std::string tracing = "-"; // the tracing whose paths were kept: shortest, kinetic, overlay, guided
   double unconstrained_mean = -1; // optimized, same border, no constraint (-1: not run)
 };
 
@@ -153,6 +155,8 @@ bool sequential = false;
 int repeat = 1;
 // --no-coarsen: constrained_embedding()'s coarsening off
 bool coarsen = true;
+// --no-kinetic: constrained_embedding()'s kinetic tracing off (kinetic_tracing(false))
+bool kinetic = true;
 
 // constrained_embedding() on a copy of `m0`, whose "v:uv" property holds the border
 Row run(const SM& m0, const std::vector<std::pair<vertex_descriptor, K::Point_2> >& constraints,
@@ -165,8 +169,8 @@ Row run(const SM& m0, const std::vector<std::pair<vertex_descriptor, K::Point_2>
   // max_steiner 0: constrained_embedding()'s default budgets
   // PE_VERBOSE=1 in the environment: constrained_embedding() reports its phases on std::cerr
   const bool verbose = std::getenv("PE_VERBOSE") != nullptr;
-  const auto np = PE::parameters::optimize(optimize, PE::parameters::coarsen(coarsen,
-                   PE::parameters::statistics(&st, CGAL::parameters::maximum_running_time(budget).verbose(verbose))));
+  const auto np = PE::parameters::optimize(optimize, PE::parameters::coarsen(coarsen, PE::parameters::kinetic_tracing(kinetic,
+                   PE::parameters::statistics(&st, CGAL::parameters::maximum_running_time(budget).verbose(verbose)))));
   auto call = [&](auto tag, const auto& params) {
     return max_steiner ? PE::constrained_embedding<decltype(tag)>(m, constraints, uv, PE::parameters::maximum_steiner_vertices(max_steiner, params))
                        : PE::constrained_embedding<decltype(tag)>(m, constraints, uv, params);
@@ -184,6 +188,7 @@ Row run(const SM& m0, const std::vector<std::pair<vertex_descriptor, K::Point_2>
   r.t_certified = r.t_validation + r.t_partition + r.t_tracing + r.t_patches + r.t_certification;
   r.t_optimization = st.seconds_optimization; r.t_coarsening = st.seconds_coarsening; r.t_output = st.seconds_output; r.t_total = st.seconds_total;
   r.optimized = st.optimized;
+  r.tracing = st.kinetic_tracing_kept ? "kinetic" : st.overlay_tracing_kept ? "overlay" : st.guided_tracing_kept ? "guided" : "shortest";
   r.optimization_status = st.optimized ? PE::get_error_name(st.optimization_status) : "-";
   r.iterations = st.optimization.iterations;
   r.mean_before = st.report_before_optimization.mean_energy_3d;
@@ -215,7 +220,7 @@ int main(int argc, char** argv)
   {
     std::cerr << "usage: constrained_benchmark DATA_DIR OUT_PREFIX [--meshes a.off,b.off] [--seeds S] [--counts 3,10,50]\n"
                  "       [--min-vertices N] [--max-vertices N] [--no-disks] [--no-closed] [--optimize-seeds K] [--seeds-large S] [--budget S]\n"
-                 "       [--max-steiner N] [--targets layout,jittered,random] [--jitter D] [--sequential] [--repeat R] [--no-coarsen]\n"
+                 "       [--max-steiner N] [--targets layout,jittered,random] [--jitter D] [--sequential] [--repeat R] [--no-coarsen] [--no-kinetic]\n"
                  "  --sequential: patches embedded one after the other (default: in parallel, CGAL::Parallel_if_available_tag)\n"
                  "  --repeat R: each run R times, the one of median time to the certified map kept (default 1)\n";
     return 2;
@@ -249,6 +254,7 @@ int main(int argc, char** argv)
     else if(a == "--no-disks") disks = false;
     else if(a == "--sequential") sequential = true;
     else if(a == "--no-coarsen") coarsen = false;
+    else if(a == "--no-kinetic") kinetic = false;
     else if(a == "--repeat" && has) repeat = std::max(1, std::atoi(argv[++i]));
     else if(a == "--no-closed") closed = false;
     else { std::cerr << "constrained_benchmark: unknown option " << a << "\n"; return 2; }
@@ -356,7 +362,7 @@ int main(int argc, char** argv)
          "repaired_patches,status,certified,constraint_error,s_validation,s_partition,s_tracing,s_patches,"
          "s_certification,s_certified_map,s_optimization,s_output,s_total,peak_rss_mb,optimized,optimization_status,"
          "iterations,mean_sd_before,max_sd_before,mean_sd_after,max_sd_after,unconstrained_mean_sd,steiner_inserted,"
-         "steiner_removed,s_coarsening\n";
+         "steiner_removed,s_coarsening,tracing\n";
   csv << std::setprecision(6);
   for(const Row& r : rows)
     csv << r.kind << ',' << r.mesh << ',' << r.seed << ',' << r.count << ',' << r.targets << ',' << r.v_in << ',' << r.v_out << ','
@@ -367,7 +373,7 @@ int main(int argc, char** argv)
         << r.t_output << ',' << r.t_total << ',' << r.peak_mb << ',' << (r.optimized ? 1 : 0) << ','
         << r.optimization_status << ',' << r.iterations << ',' << r.mean_before << ',' << r.max_before << ','
         << r.mean_after << ',' << r.max_after << ',' << r.unconstrained_mean << ',' << r.inserted << ',' << r.removed << ','
-        << r.t_coarsening << '\n';
+        << r.t_coarsening << ',' << r.tracing << '\n';
 
   // Markdown: per (mesh, count) medians over the seeds
   std::size_t ok = 0, certified = 0, exact = 0;
@@ -393,7 +399,9 @@ int main(int argc, char** argv)
         "moved by up to " << jitter << " in x and y (`jittered`: nearby constraints may swap, which the Tutte map's "
         "compressed regions make frequent). Time to the certified map: validation, partition, path tracing, patch embeddings and the "
         "certificate (before the optimization). Added vertices: inserted by the refinement, removed again by the "
-        "coarsening after the optimization (" << (coarsen ? "on" : "off: `--no-coarsen`") << "), kept in the output. Symmetric Dirichlet energies against the 3D triangles (an isometry "
+        "coarsening after the optimization (" << (coarsen ? "on" : "off: `--no-coarsen`") << "), kept in the output. Path tracings: "
+        "shortest paths, then, when they add many vertices, the kinetic tracing (" << (kinetic ? "on" : "off: `--no-kinetic`") <<
+        "), the overlay and the guided ones, the one with the fewest added vertices kept (column `tracing`). Symmetric Dirichlet energies against the 3D triangles (an isometry "
         "scores 4), optimized with border and constraints fixed, next to the optimized map with no constraint on the "
         "same border.\n\n"
      << "- runs: " << rows.size() << "; OK: " << ok << "; certified again by check_embedding(): " << certified

@@ -193,6 +193,12 @@ namespace Progressive_embedding {
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{kinetic_tracing}
+///     \cgalParamDescription{whether to trace the paths also in the class of the targets' straight-line motion when
+///                           shortest paths add many vertices (see above); `false` keeps the other tracings only}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{statistics}
 ///     \cgalParamDescription{receives counts, times and certificates}
 ///     \cgalParamType{`Constrained_embedding_statistics*`}

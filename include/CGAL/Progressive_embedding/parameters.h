@@ -81,6 +81,7 @@ enum class Weights
   X(rotation_indices) \
   X(vertex_rotation_index_map) \
   X(coarsen) \
+  X(kinetic_tracing) \
   X(optimization_time_limit) \
   X(optimization_policy) \
   X(pipeline_statistics) \

@@ -12,3 +12,5 @@ pe_constrained_test(constrained_embedding_holes "constrained;matchmaker;holes" 6
 pe_constrained_test(constrained_embedding_phases "constrained;matchmaker")
 pe_constrained_test(constrained_embedding_traits "constrained;matchmaker")
 pe_constrained_test(constrained_embedding_progress "constrained;matchmaker")
+pe_constrained_test(constrained_embedding_kinetic "constrained;matchmaker;kinetic" 600)
+pe_constrained_test(kinetic_triangulation "constrained;kinetic")

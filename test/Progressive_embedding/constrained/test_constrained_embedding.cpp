@@ -9,6 +9,7 @@
 #include <CGAL/Progressive_embedding/constrained_embedding.h>
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
 #include <CGAL/Progressive_embedding/check_embedding.h>
+#include <CGAL/Progressive_embedding/internal/constrained/kinetic_triangulation.h>
 
 #include "registry.h"
 #include "../test_util.h"
@@ -23,6 +24,7 @@
 #include <functional>
 #include <limits>
 #include <random>
+#include <array>
 #include <set>
 #include <algorithm>
 #include <string>
@@ -144,7 +146,7 @@ random_constraints(const Mesh& m, const UVM& uv, std::size_t n, unsigned seed, b
 template <class K, class Mesh>
 int run_case(Mesh& m, std::size_t n, unsigned seed, const std::string& what, bool fixed_border,
              PE::Border_shape shape = PE::Border_shape::SQUARE, bool consistent = false, std::size_t max_steiner = 0,
-             PE::Constrained_embedding_statistics* stats_out = nullptr, bool optimize = true)
+             PE::Constrained_embedding_statistics* stats_out = nullptr, bool optimize = true, bool kinetic = true)
 {
   typedef typename K::Point_2 Point_2;
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor VD;
@@ -159,10 +161,11 @@ int run_case(Mesh& m, std::size_t n, unsigned seed, const std::string& what, boo
   if(max_steiner == 0) max_steiner = 4 * static_cast<std::size_t>(num_edges(m)) + 1000; // the default
   const PE::Error_code ec = fixed_border
     ? PE::constrained_embedding(m, C, uv, PE::parameters::statistics(&st, PE::parameters::steiner_points(&sp,
-                                            PE::parameters::maximum_steiner_vertices(max_steiner).optimize(optimize))))
+                                            PE::parameters::maximum_steiner_vertices(max_steiner).optimize(optimize)
+                                            .kinetic_tracing(kinetic))))
     : PE::constrained_embedding(m, C, uv, PE::parameters::statistics(&st, PE::parameters::steiner_points(&sp,
                                             PE::parameters::maximum_steiner_vertices(max_steiner,
-                                            PE::parameters::border_shape(shape)).optimize(optimize))));
+                                            PE::parameters::border_shape(shape)).optimize(optimize).kinetic_tracing(kinetic))));
   std::cout << what << (consistent ? " consistent" : " random") << " n=" << n << " seed " << seed << ": " << PE::get_error_message(ec) << ", vertices "
             << st.input_vertices << " -> " << st.output_vertices << ", Steiner " << st.steiner_vertices << " ("
             << st.chord_splits << " chord splits), paths " << st.paths << ", patches " << st.patches << " ("
@@ -363,7 +366,8 @@ PE_TEST_GROUP(constrained_embedding_winding)
     Surface_mesh m;
     if(!read_mesh(data_dir + "/meshes/mushroom.off", m)) return EXIT_FAILURE;
     PE::Constrained_embedding_statistics st;
-    RUN((run_case<Epick>(m, 30, seed, "mushroom winding", true, PE::Border_shape::SQUARE, false, 100000, &st, false)));
+    RUN((run_case<Epick>(m, 30, seed, "mushroom winding", true, PE::Border_shape::SQUARE, false, 100000, &st, false, false)));
+    CHECK(!st.kinetic_tracing, "kinetic_tracing(false): no kinetic tracing");
     CHECK(st.overlay_tracing && st.overlay_tracing_kept, "the overlay tracing's paths kept");
     CHECK(st.steiner_vertices > 1000, "winding paths need many Steiner vertices: " << st.steiner_vertices);
   }
@@ -371,7 +375,7 @@ PE_TEST_GROUP(constrained_embedding_winding)
     Polyhedron m;
     if(!read_mesh(data_dir + "/meshes/mushroom.off", m)) return EXIT_FAILURE;
     PE::Constrained_embedding_statistics st;
-    RUN((run_case<Epick>(m, 30, 1u, "mushroom Polyhedron_3 winding", true, PE::Border_shape::SQUARE, false, 100000, &st, false)));
+    RUN((run_case<Epick>(m, 30, 1u, "mushroom Polyhedron_3 winding", true, PE::Border_shape::SQUARE, false, 100000, &st, false, false)));
     CHECK(st.overlay_tracing_kept, "the overlay tracing's paths kept");
   }
   return EXIT_SUCCESS;
@@ -790,6 +794,101 @@ PE_TEST_GROUP(constrained_embedding_progress)
     const PE::Embedding_report r = PE::check_embedding(m, uv);
     CHECK(r.is_valid(), "the caller's map certified");
     for(const auto& c : C) CHECK(get(uv, c.first) == c.second, "constraint bit-exact");
+  }
+  return EXIT_SUCCESS;
+}
+
+// The paths in the class of the targets' straight-line motion: with 50 random targets (paths that wind),
+// the kinetic tracing runs; whichever tracing is kept, the map is certified on the caller's mesh with its
+// constraints bit-exact (run_case), and never with more vertices than without it (the same inputs,
+// kinetic_tracing(false)). On this input it is kept: 38.5k Steiner vertices against 64.7k.
+PE_TEST_GROUP(constrained_embedding_kinetic)
+{
+  std::size_t wins = 0;
+  for(unsigned seed : { 3u })
+  {
+    PE::Constrained_embedding_statistics with, without;
+    {
+      Surface_mesh m;
+      if(!read_mesh(data_dir + "/meshes/mushroom.off", m)) return EXIT_FAILURE;
+      RUN((run_case<Epick>(m, 50, seed, "mushroom kinetic", true, PE::Border_shape::SQUARE, false, 2000000, &with, false, true)));
+    }
+    {
+      Surface_mesh m;
+      if(!read_mesh(data_dir + "/meshes/mushroom.off", m)) return EXIT_FAILURE;
+      RUN((run_case<Epick>(m, 50, seed, "mushroom without kinetic", true, PE::Border_shape::SQUARE, false, 2000000, &without, false, false)));
+    }
+    CHECK(with.kinetic_tracing && with.kinetic_flips > 0 && !without.kinetic_tracing, "the kinetic tracing ran (flips " << with.kinetic_flips << ")");
+    CHECK(with.steiner_vertices <= without.steiner_vertices, "never more vertices: " << with.steiner_vertices << " vs " << without.steiner_vertices);
+    if(with.kinetic_tracing_kept)
+    {
+      ++wins;
+      CHECK(!with.overlay_tracing_kept && !with.guided_tracing_kept, "one tracing kept");
+      CHECK(with.steiner_vertices < without.steiner_vertices, "kept because it added fewer vertices");
+    }
+  }
+  CHECK(wins >= 1, "the kinetic tracing kept at least once");
+  return EXIT_SUCCESS;
+}
+
+// The motion itself (kinetic_triangulation.h) on random points of a 24-gon: the start triangulation has
+// 2n - h - 2 counterclockwise triangles at the start positions; replaying the flips on it gives the end
+// triangulation, every triangle counterclockwise at the targets (exactly); each flip replaces an edge of
+// the current triangulation by the other diagonal of its quadrilateral. Bad inputs fail.
+PE_TEST_GROUP(kinetic_triangulation)
+{
+  namespace PI = CGAL::Progressive_embedding::internal;
+  typedef std::array<double, 2> P2;
+  std::vector<P2> border;
+  for(int k = 0; k < 24; ++k) border.push_back({ { std::cos(2 * CGAL_PI * k / 24), std::sin(2 * CGAL_PI * k / 24) } });
+  auto orient = [](const P2& a, const P2& b, const P2& c) {
+    return CGAL::orientation(Epick::Point_2(a[0], a[1]), Epick::Point_2(b[0], b[1]), Epick::Point_2(c[0], c[1]));
+  };
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> U(-0.6, 0.6);
+  std::size_t total_flips = 0;
+  for(std::size_t n : { 1, 5, 20, 60 })
+  {
+    std::vector<P2> start(n), end(n);
+    for(std::size_t i = 0; i < n; ++i) { start[i] = { { U(rng), U(rng) } }; end[i] = { { U(rng), U(rng) } }; }
+    PI::Kinetic_triangulation kt;
+    CHECK(PI::kinetic_triangulation(border, start, end, 1000000, kt), "motion of " << n << " points");
+    const std::size_t nb = border.size(), nn = nb + n;
+    CHECK(kt.initial.size() == 2 * nn - nb - 2 && kt.final_triangles.size() == kt.initial.size(), "triangle counts");
+    auto pos = [&](std::size_t v, bool at_end) -> const P2& { return v < nb ? border[v] : (at_end ? end[v - nb] : start[v - nb]); };
+    for(const auto& t : kt.initial) CHECK(orient(pos(t[0], false), pos(t[1], false), pos(t[2], false)) == CGAL::LEFT_TURN, "start ccw");
+    for(const auto& t : kt.final_triangles) CHECK(orient(pos(t[0], true), pos(t[1], true), pos(t[2], true)) == CGAL::LEFT_TURN, "end ccw");
+    // replay: triangles as sorted triples, edges by id
+    std::multiset<std::array<std::size_t, 3> > tris;
+    auto key = [](std::size_t a, std::size_t b, std::size_t c) { std::array<std::size_t, 3> k{ { a, b, c } }; std::sort(k.begin(), k.end()); return k; };
+    for(const auto& t : kt.initial) tris.insert(key(t[0], t[1], t[2]));
+    std::vector<std::array<std::size_t, 2> > edge = kt.edges;
+    for(const auto& f : kt.flips)
+    {
+      CHECK(f.edge < edge.size() && std::minmax(edge[f.edge][0], edge[f.edge][1]) == std::minmax(f.a, f.b), "the flipped edge is current");
+      auto t1 = tris.find(key(f.a, f.b, f.c)), t2 = tris.find(key(f.a, f.b, f.d));
+      CHECK(t1 != tris.end() && t2 != tris.end() && f.c != f.d, "its two triangles are current");
+      tris.erase(t1); tris.erase(tris.find(key(f.a, f.b, f.d)));
+      tris.insert(key(f.a, f.d, f.c)); tris.insert(key(f.c, f.d, f.b));
+      edge[f.edge] = { { f.c, f.d } };
+      for(std::ptrdiff_t side : { f.ca, f.cb, f.db, f.da })
+        CHECK(side < static_cast<std::ptrdiff_t>(edge.size()), "side ids");
+    }
+    std::multiset<std::array<std::size_t, 3> > fin;
+    for(const auto& t : kt.final_triangles) fin.insert(key(t[0], t[1], t[2]));
+    CHECK(fin == tris, "the flips lead from the start to the end triangulation");
+    total_flips += kt.flips.size();
+    std::cout << "  " << n << " moving points: " << kt.initial.size() << " triangles, " << kt.flips.size() << " flips" << std::endl;
+  }
+  CHECK(total_flips > 0, "points crossed edges");
+  {
+    PI::Kinetic_triangulation kt;
+    std::vector<P2> s{ { { 0.1, 0.1 } }, { { 0.1, 0.1 } } }, e{ { { 0.2, 0.1 } }, { { -0.2, 0.1 } } };
+    CHECK(!PI::kinetic_triangulation(border, s, e, 1000, kt), "two equal start points refused");
+    s = { { { 0.1, 0.1 } } }; e = { { { 1.5, 0.1 } } };
+    CHECK(!PI::kinetic_triangulation(border, s, e, 1000, kt), "a target outside refused");
+    s = { { { -0.5, 0.0 } }, { { 0.0, 0.05 } }, { { 0.0, -0.05 } } }; e = { { { 0.5, 0.0 } }, { { 0.0, 0.05 } }, { { 0.0, -0.05 } } };
+    CHECK(!PI::kinetic_triangulation(border, s, e, 0, kt), "no flip allowed: the budget runs out");
   }
   return EXIT_SUCCESS;
 }

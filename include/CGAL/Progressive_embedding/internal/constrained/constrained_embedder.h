@@ -44,6 +44,8 @@
 #include <CGAL/Progressive_embedding/internal/constrained/path_network.h>
 #include <CGAL/Progressive_embedding/internal/constrained/trace_paths.h>
 #include <CGAL/Progressive_embedding/internal/constrained/trace_overlay.h>
+#include <CGAL/Progressive_embedding/internal/constrained/trace_kinetic.h>
+#include <CGAL/Progressive_embedding/internal/constrained/guide_map.h>
 #include <CGAL/Progressive_embedding/internal/constrained/patch_chords.h>
 #include <CGAL/Progressive_embedding/internal/constrained/embed_patches.h>
 #include <CGAL/Progressive_embedding/internal/constrained/refinement.h>
@@ -302,7 +304,7 @@ public:
   typename Traits::Exact_orientation_2 orient;
   Border_shape shape = Border_shape::FIXED;
   Weights wts = Weights::UNIFORM;
-  bool optimize = true, coarsen = true, verbose = false;
+  bool optimize = true, coarsen = true, kinetic = true, verbose = false;
   double max_seconds = std::numeric_limits<double>::infinity();
   double optimization_seconds = std::numeric_limits<double>::infinity();
   CGAL::Real_timer timer;
@@ -426,6 +428,7 @@ public:
     wts = choose_parameter(get_parameter(np, internal_np::weights), Weights::UNIFORM);
     optimize = choose_parameter(get_parameter(np, internal_np::optimize), true);
     coarsen = choose_parameter(get_parameter(np, internal_np::coarsen), true);
+    kinetic = choose_parameter(get_parameter(np, internal_np::kinetic_tracing), true);
     verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
     max_seconds = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
                                    std::numeric_limits<double>::infinity());
@@ -694,6 +697,74 @@ public:
   }
 
   // ---- 3b. path tracing, chord splits -------------------------------------------------------
+  // The paths in the class of the targets' straight-line motion from where a uniform Tutte map of the
+  // copy puts the constrained vertices (kinetic_triangulation.h, trace_kinetic.h), on `work` as copied;
+  // `kpart` receives the partition that the motion's end triangulation merges into. For a convex
+  // border without holes and with targets only.
+  Error_code trace_kinetic(internal::Domain_partition& kpart, std::size_t max_steiner, double seconds)
+  {
+    if(holes || immersed || non_convex || targets.empty()) return ERROR_WRONG_PARAMETER;
+    const std::size_t n = static_cast<std::size_t>(num_vertices(work)), nt = T.size();
+    std::vector<std::vector<std::size_t> > adjacency(n);
+    for(wvertex v : vertices(work))
+      for(auto h : CGAL::halfedges_around_target(v, work))
+        adjacency[static_cast<std::size_t>(v)].push_back(static_cast<std::size_t>(source(h, work)));
+    std::vector<char> fixed(n, 0);
+    std::vector<internal::Guide_point> pos(n, internal::Guide_point{ { 0., 0. } });
+    for(std::size_t k = 0; k < nb; ++k)
+    {
+      const std::size_t w = static_cast<std::size_t>(to_work.at(disk.vertices[disk.border[k]]));
+      fixed[w] = 1;
+      pos[w] = { { CGAL::to_double(Bfull[k].x()), CGAL::to_double(Bfull[k].y()) } };
+    }
+    if(!internal::solve_barycentric(adjacency, fixed, pos)) return ERROR_PATH_TRACING_FAILED;
+    std::vector<std::array<double, 2> > border, start, end;
+    for(const Point_2& p : B) border.push_back({ { CGAL::to_double(p.x()), CGAL::to_double(p.y()) } });
+    for(std::size_t i = 0; i < nt; ++i)
+    {
+      start.push_back(pos[static_cast<std::size_t>(nodes[nbn + i])]);
+      end.push_back({ { CGAL::to_double(T[i].x()), CGAL::to_double(T[i].y()) } });
+    }
+    internal::Kinetic_triangulation kt;
+    const std::size_t max_flips = 64 * (nbn + nt) * (nt + 1) + 1000;
+    const bool moved = internal::kinetic_triangulation(border, start, end, max_flips, kt);
+    stats.kinetic_flips = kt.flips.size();
+    if(verbose)
+      std::cerr << "[constrained_embedding] kinetic triangulation: " << (moved ? "" : "failed, ") << kt.flips.size()
+                << " flips" << std::endl;
+    if(!moved) return ERROR_PATH_TRACING_FAILED;
+    // the end triangulation, exactly, then merged into convex polygons as partition_domain() merges
+    const internal::domain_detail::Node_points<Point_2> point{ B, T };
+    const std::size_t nf = kt.final_triangles.size(), nh = 3 * nf, none = std::size_t(-1);
+    std::vector<std::size_t> from(nh), to(nh), next(nh), prev(nh), twin(nh, none);
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> half;
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      const auto& t = kt.final_triangles[f];
+      if(internal::exact_orientation(point(t[0]), point(t[1]), point(t[2])) != CGAL::LEFT_TURN) return ERROR_PATH_TRACING_FAILED;
+      for(std::size_t i = 0; i < 3; ++i)
+      {
+        const std::size_t h = 3 * f + i;
+        from[h] = t[(i + 1) % 3]; to[h] = t[(i + 2) % 3];
+        next[h] = 3 * f + (i + 1) % 3; prev[h] = 3 * f + (i + 2) % 3;
+        half[std::make_pair(from[h], to[h])] = h;
+      }
+    }
+    for(std::size_t h = 0; h < nh; ++h)
+    {
+      const auto it = half.find(std::make_pair(to[h], from[h]));
+      if(it != half.end()) twin[h] = it->second;
+    }
+    std::vector<char> flat(nbn, 0);
+    for(std::size_t i = 0; i < nbn; ++i)
+      flat[i] = internal::exact_orientation(B[(i + nbn - 1) % nbn], B[i], B[(i + 1) % nbn]) == CGAL::COLLINEAR;
+    Error_code ec = internal::domain_detail::merge_into_convex_polygons<Point_2>(point, nbn, nt, true, flat, from, to, next, prev,
+                                                                                twin, popt, kpart);
+    if(ec != OK) return ec;
+    return internal::trace_paths_kinetic(work, wvpm, nodes, kt, kpart, paths, steiner,
+                                         parameters::maximum_steiner_vertices(max_steiner).maximum_running_time(seconds));
+  }
+
   Error_code trace()
   {
     using CGAL::parameters::choose_parameter;
@@ -733,15 +804,38 @@ public:
         Work best_work;
         std::vector<std::vector<wvertex> > best_paths;
         std::vector<internal::Steiner_vertex<Work> > best_steiner;
+        const internal::Domain_partition original_partition = partition;
+        internal::Domain_partition best_partition;
         const Error_code first_ec = ec;
         bool have_best = false;
         auto keep_if_best = [&]()
         {
           if(ec != OK || (have_best && steiner.size() >= best_steiner.size())) return;
           best_work = std::move(work); best_paths.swap(paths); best_steiner.swap(steiner);
+          best_partition = partition;
           have_best = true;
         };
         keep_if_best();
+        // the class of the targets' straight-line motion: a partition of its own (kinetic_triangulation.h)
+        if(!holes && !immersed && !non_convex && !targets.empty() && remaining() > 0 && kinetic)
+        {
+          work = before_tracing;
+          wvpm = get(CGAL::vertex_point, work);
+          paths.clear();
+          steiner.clear();
+          const std::size_t max_k = have_best ? best_steiner.size() - 1 : (user_max != unset ? user_max : internal::overlay_tracing_budget.of(ne));
+          const double t_kinetic = timer.time();
+          internal::Domain_partition kpart;
+          ec = trace_kinetic(kpart, max_k, remaining());
+          stats.kinetic_tracing = true;
+          if(verbose)
+            std::cerr << "[constrained_embedding] kinetic tracing: " << get_error_message(ec) << ", "
+                      << steiner.size() << " Steiner vertices, " << timer.time() - t_kinetic << " s" << std::endl;
+          if(ec == OK && (!have_best || steiner.size() < best_steiner.size())) stats.kinetic_tracing_kept = true;
+          if(ec == OK) partition = kpart;
+          keep_if_best();
+          partition = original_partition;
+        }
         double t_overlay_start = timer.time();
         if(!holes && remaining() > 0)
         {
@@ -759,7 +853,11 @@ public:
           if(verbose)
             std::cerr << "[constrained_embedding] overlay tracing: " << get_error_message(ec) << ", "
                       << steiner.size() << " Steiner vertices, " << timer.time() - t_overlay_start << " s" << std::endl;
-          if(ec == OK && (!have_best || steiner.size() < best_steiner.size())) stats.overlay_tracing_kept = true;
+          if(ec == OK && (!have_best || steiner.size() < best_steiner.size()))
+          {
+            stats.overlay_tracing_kept = true;
+            stats.kinetic_tracing_kept = false;
+          }
           keep_if_best();
         }
         // After a successful overlay tracing, the guided ones run only when it added at most 4 times the
@@ -794,6 +892,7 @@ public:
           {
             stats.guided_tracing_kept = true;
             stats.overlay_tracing_kept = false;
+            stats.kinetic_tracing_kept = false;
           }
           keep_if_best();
         }
@@ -804,6 +903,8 @@ public:
           wvpm = get(CGAL::vertex_point, work);
           paths.swap(best_paths);
           steiner.swap(best_steiner);
+          partition = std::move(best_partition);
+          stats.paths = partition.edges.size();
         }
         else ec = first_ec; // every tracing failed: the shortest paths' reason (a guided search may give up)
       }

@@ -120,6 +120,10 @@ public:
   }
 
   std::size_t crossings() const { return crossing_.size(); }
+  // the crossings of the curves not taken out (remove())
+  std::size_t live_crossings() const { return live_; }
+  // the ends of curve c as traced (from, to)
+  std::pair<vertex_descriptor, vertex_descriptor> curve_ends(int c) const { return curve_ends_.at(static_cast<std::size_t>(c)); }
 
   // the cost of a crossing: `w` mean edge lengths (each crossing is a Steiner vertex), added to the
   // 3D length between the crossed edges' midpoints
@@ -227,6 +231,41 @@ public:
     std::reverse(states.begin(), states.end());
     commit(curve, u, v, states);
     return true;
+  }
+
+  // Takes curve `curve` out: its crossings and chords, its places at its two nodes. Later curves may
+  // use the gaps it leaves (the kinetic tracing replaces flipped partition edges this way).
+  void remove(int curve)
+  {
+    if(curve < 0 || static_cast<std::size_t>(curve) >= curve_crossings_.size()) return;
+    std::vector<int>& xs = curve_crossings_[static_cast<std::size_t>(curve)];
+    if(xs.empty()) return;
+    removed_.resize(crossing_.size(), 0);
+    for(int x : xs) removed_[static_cast<std::size_t>(x)] = 1;
+    auto gone = [&](const End& e) { return !e.corner && removed_[static_cast<std::size_t>(e.crossing)]; };
+    std::vector<std::size_t> touched;
+    for(int x : xs) touched.push_back(crossing_[static_cast<std::size_t>(x)].edge);
+    std::sort(touched.begin(), touched.end());
+    touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+    for(std::size_t e : touched)
+    {
+      for(halfedge_descriptor h : { eh_[e], opposite(eh_[e], tm_) })
+      {
+        if(is_border(h, tm_)) continue;
+        const std::size_t f = static_cast<std::size_t>(get(fid_, face(h, tm_)));
+        std::vector<Chord>& ch = chords_[f];
+        ch.erase(std::remove_if(ch.begin(), ch.end(), [&](const Chord& c) { return gone(c.a) || gone(c.b); }), ch.end());
+        fdata_[f].valid = false;
+      }
+      std::vector<int>& cr = cross_[e];
+      cr.erase(std::remove_if(cr.begin(), cr.end(), [&](int x) { return removed_[static_cast<std::size_t>(x)] != 0; }), cr.end());
+      for(std::size_t k = 0; k < cr.size(); ++k) cpos_[static_cast<std::size_t>(cr[k])] = static_cast<int>(k);
+    }
+    const auto& ends = curve_ends_[static_cast<std::size_t>(curve)];
+    node_curves_.erase(std::make_pair(ends.first, curve));
+    node_curves_.erase(std::make_pair(ends.second, curve));
+    live_ -= xs.size();
+    xs.clear();
   }
 
   // Refines tm: the crossings become vertices (midpoint splits), the chords edges, the faces
@@ -619,9 +658,15 @@ private:
       for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f1, tm_), tm_)) if(source(h, tm_) == v) g = h;
       node_curves_[std::make_pair(v, curve)] = std::make_pair(g, gs.back().id);
     }
-    if(curve_crossings_.size() <= static_cast<std::size_t>(curve)) curve_crossings_.resize(static_cast<std::size_t>(curve) + 1);
+    if(curve_crossings_.size() <= static_cast<std::size_t>(curve))
+    {
+      curve_crossings_.resize(static_cast<std::size_t>(curve) + 1);
+      curve_ends_.resize(static_cast<std::size_t>(curve) + 1);
+    }
+    curve_ends_[static_cast<std::size_t>(curve)] = std::make_pair(u, v);
     curve_crossings_[static_cast<std::size_t>(curve)].clear();
     for(const G& g : gs) curve_crossings_[static_cast<std::size_t>(curve)].push_back(g.id);
+    live_ += gs.size();
   }
   // splits the edge (a, b), a piece of input edge e, at its midpoint for the crossing of median rank
   // among cross_[e][lo, hi), then the two halves for the others
@@ -667,6 +712,8 @@ private:
   std::vector<int> cpos_;                     // per crossing: its index in cross_ of its edge
   std::vector<Face_data> fdata_;              // per input face, cached
   std::vector<std::vector<int> > curve_crossings_;
+  std::vector<std::pair<vertex_descriptor, vertex_descriptor> > curve_ends_;
+  std::vector<char> removed_;                 // per crossing: taken out with its curve
   std::map<std::pair<vertex_descriptor, int>, std::pair<halfedge_descriptor, int> > node_curves_;
   // per input edge e and side (0: seen from face(eh_[e]), 1: from the other face)
   struct Side { int face = -1; std::size_t k = 0; vertex_descriptor apex; }; // face index (-1: border), index of e in Face_data::h, corner opposite e
@@ -681,44 +728,42 @@ private:
   std::vector<char> opened_scratch_;
   std::vector<std::array<int, 3> > gaps_scratch_;
   double step_ = 0;                           // the cost of one crossing
+  std::size_t live_ = 0;                      // crossings of the curves not taken out
 };
 
-/// traces the partition edges as curves crossing the input edges, then refines the mesh once (see above)
-template <class TriangleMesh, class VertexPointMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
-Error_code trace_paths_overlay(TriangleMesh& tm, VertexPointMap vpm,
-                               const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& nodes,
-                               const std::vector<std::array<std::size_t, 2> >& edges,
-                               const std::vector<std::vector<std::size_t> >& rotation,
-                               std::vector<std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> >& paths,
-                               std::vector<Steiner_vertex<TriangleMesh> >& steiner,
-                               const NamedParameters& np = CGAL::parameters::default_values())
+// The budgets of a curve tracing (named parameters maximum_running_time, default none, and
+// maximum_steiner_vertices, default overlay_tracing_budget), then the check that tm is a triangulated disk.
+template <class TriangleMesh, class NamedParameters>
+Error_code read_curve_tracing_budgets(const TriangleMesh& tm, const NamedParameters& np, double& max_seconds, std::size_t& max_splits)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  const double max_seconds = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
-                                              std::numeric_limits<double>::infinity());
+  max_seconds = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), std::numeric_limits<double>::infinity());
   if(!(max_seconds >= 0)) return ERROR_WRONG_PARAMETER;
-  CGAL::Real_timer timer;
-  timer.start();
-  paths.assign(edges.size(), std::vector<vertex_descriptor>());
-  Error_code status = check_triangulated_disk(tm);
-  if(status != OK) return status;
-  const std::size_t max_splits = choose_parameter(get_parameter(np, internal_np::maximum_steiner_vertices),
-                                                  overlay_tracing_budget.of(static_cast<std::size_t>(num_edges(tm))));
-  const double penalty_units = choose_parameter(get_parameter(np, internal_np::split_penalty), 4.);
-  if(!(penalty_units >= 0) || !std::isfinite(penalty_units)) return ERROR_WRONG_PARAMETER;
+  max_splits = choose_parameter(get_parameter(np, internal_np::maximum_steiner_vertices),
+                                overlay_tracing_budget.of(static_cast<std::size_t>(num_edges(tm))));
+  return check_triangulated_disk(tm);
+}
+
+// Traces every edge of the partition (nodes, edges, rotation) with `tracer`, curve id = edge index, in
+// tracing_order() (after the checks of mark_nodes_and_check_partition(); a disk only). ERROR_BUDGET_EXHAUSTED
+// when the curves cross more than max_splits input edges or the timer passes max_seconds.
+template <class TriangleMesh, class VertexPointMap>
+Error_code trace_partition_curves(TriangleMesh& tm, VertexPointMap vpm, Overlay_tracer<TriangleMesh, VertexPointMap>& tracer,
+                                  const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& nodes,
+                                  const std::vector<std::array<std::size_t, 2> >& edges,
+                                  const std::vector<std::vector<std::size_t> >& rotation,
+                                  std::size_t max_splits, const CGAL::Real_timer& timer, double max_seconds)
+{
   std::vector<std::size_t> order;
   {
     Path_network<TriangleMesh> net(tm);
     std::vector<std::vector<std::size_t> > loops;
-    status = mark_nodes_and_check_partition(tm, net, nodes, edges, rotation, loops);
+    const Error_code status = mark_nodes_and_check_partition(tm, net, nodes, edges, rotation, loops);
     if(status != OK) return status;
     if(loops.size() != 1) return ERROR_WRONG_PARAMETER; // a disk only
     tracing_order(vpm, net, nodes, edges, loops, false, order);
   }
-  Overlay_tracer<TriangleMesh, VertexPointMap> tracer(tm, vpm);
-  tracer.set_crossing_cost(penalty_units);
   std::vector<char> traced(edges.size(), 0);
   auto neighbours = [&](std::size_t i, std::size_t e, int& before, int& after)
   {
@@ -736,8 +781,37 @@ Error_code trace_paths_overlay(TriangleMesh& tm, VertexPointMap vpm,
     // at b the curve arrives: its counterclockwise order around b is the rotation's
     if(!tracer.trace(static_cast<int>(e), nodes[a], ba, aa, nodes[b], bb, ab)) return ERROR_PATH_TRACING_FAILED;
     traced[e] = 1;
-    if(tracer.crossings() > max_splits) return ERROR_BUDGET_EXHAUSTED;
+    if(tracer.live_crossings() > max_splits) return ERROR_BUDGET_EXHAUSTED;
   }
+  return OK;
+}
+
+/// traces the partition edges as curves crossing the input edges, then refines the mesh once (see above)
+template <class TriangleMesh, class VertexPointMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Error_code trace_paths_overlay(TriangleMesh& tm, VertexPointMap vpm,
+                               const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& nodes,
+                               const std::vector<std::array<std::size_t, 2> >& edges,
+                               const std::vector<std::vector<std::size_t> >& rotation,
+                               std::vector<std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> >& paths,
+                               std::vector<Steiner_vertex<TriangleMesh> >& steiner,
+                               const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  CGAL::Real_timer timer;
+  timer.start();
+  paths.assign(edges.size(), std::vector<vertex_descriptor>());
+  double max_seconds = 0;
+  std::size_t max_splits = 0;
+  Error_code status = read_curve_tracing_budgets(tm, np, max_seconds, max_splits);
+  if(status != OK) return status;
+  const double penalty_units = choose_parameter(get_parameter(np, internal_np::split_penalty), 4.);
+  if(!(penalty_units >= 0) || !std::isfinite(penalty_units)) return ERROR_WRONG_PARAMETER;
+  Overlay_tracer<TriangleMesh, VertexPointMap> tracer(tm, vpm);
+  tracer.set_crossing_cost(penalty_units);
+  status = trace_partition_curves(tm, vpm, tracer, nodes, edges, rotation, max_splits, timer, max_seconds);
+  if(status != OK) return status;
   std::vector<std::pair<vertex_descriptor, vertex_descriptor> > ends;
   for(const auto& e : edges) ends.emplace_back(nodes[e[0]], nodes[e[1]]);
   if(!edges.empty() && !tracer.realize(ends, paths, steiner)) return ERROR_PATH_TRACING_FAILED;

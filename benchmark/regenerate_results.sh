@@ -83,6 +83,13 @@ if [ "$constrained" = 1 ]; then
   # the same without the kinetic tracing: what it changes, side by side
   "$build/bin/constrained_benchmark" "$build/cgal_data/data" "$results/constrained_embedding_many_no_kinetic" \
     --meshes "$meshes" --seeds 3 --counts 10,50 --optimize-seeds 0 --budget 60 --repeat 3 --no-kinetic || true
+  # 100 and 200 random constraints on the 20k-vertex disks, with and without the kinetic tracing
+  for k in "" --no-kinetic; do
+    "$build/bin/constrained_benchmark" "$build/cgal_data/data" "$results/constrained_embedding_200${k:+_no_kinetic}" \
+      --meshes man.off,diplodocus.off --seeds 2 --counts 100,200 --targets random --optimize-seeds 0 --budget 120 $k || true
+  done
+  # the default pe constrain command (optimization included) with 50 random constraints, as a user runs it
+  python3 "$repo/benchmark/constrained_default_command.py" "$build" --optimize-time 5 --out "$results/constrained_default_command"
   "$build/bin/constrained_benchmark" "$build/cgal_data/data" "$results/constrained_embedding_optimized" \
     --meshes retinal.off,dino.off,homer.off,mushroom.off,lion-head.off --seeds 1 --counts 3,10 --targets layout \
     --optimize-seeds 1 --budget 120 || true

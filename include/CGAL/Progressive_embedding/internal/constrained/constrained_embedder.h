@@ -826,7 +826,10 @@ public:
           const std::size_t max_k = have_best ? best_steiner.size() - 1 : (user_max != unset ? user_max : internal::overlay_tracing_budget.of(ne));
           const double t_kinetic = timer.time();
           internal::Domain_partition kpart;
-          ec = trace_kinetic(kpart, max_k, remaining());
+          // under a time budget, a quarter of what is left: the tracings after it keep the rest (measured:
+          // 100 random targets on a 17.5k-vertex disk, certified in 78 s of 120 without it, ran out with it)
+          const double kinetic_seconds = std::isfinite(remaining()) ? 0.25 * remaining() : remaining();
+          ec = trace_kinetic(kpart, max_k, kinetic_seconds);
           stats.kinetic_tracing = true;
           if(verbose)
             std::cerr << "[constrained_embedding] kinetic tracing: " << get_error_message(ec) << ", "

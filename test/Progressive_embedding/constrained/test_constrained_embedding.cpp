@@ -10,6 +10,7 @@
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
 #include <CGAL/Progressive_embedding/check_embedding.h>
 #include <CGAL/Progressive_embedding/internal/constrained/kinetic_triangulation.h>
+#include <CGAL/Progressive_embedding/internal/constrained/domain_partition.h>
 
 #include "registry.h"
 #include "../test_util.h"
@@ -877,6 +878,16 @@ PE_TEST_GROUP(kinetic_triangulation)
     std::multiset<std::array<std::size_t, 3> > fin;
     for(const auto& t : kt.final_triangles) fin.insert(key(t[0], t[1], t[2]));
     CHECK(fin == tris, "the flips lead from the start to the end triangulation");
+    // the end triangulation merged into convex polygons (as the Delaunay partition is); the start one,
+    // not valid at the targets once points crossed edges, refused
+    std::vector<Epick::Point_2> bp, ep;
+    for(const P2& p : border) bp.emplace_back(p[0], p[1]);
+    for(const P2& p : end) ep.emplace_back(p[0], p[1]);
+    PI::Domain_partition part;
+    CHECK(PI::merge_triangulation(bp, ep, kt.final_triangles, part) == PE::OK && !part.polygons.empty()
+          && part.polygons.size() <= kt.final_triangles.size() && part.number_of_targets == n, "end triangulation merged");
+    if(!kt.flips.empty())
+      CHECK(PI::merge_triangulation(bp, ep, kt.initial, part) == PE::ERROR_DEGENERATE_BORDER, "start triangulation refused at the targets");
     total_flips += kt.flips.size();
     std::cout << "  " << n << " moving points: " << kt.initial.size() << " triangles, " << kt.flips.size() << " flips" << std::endl;
   }

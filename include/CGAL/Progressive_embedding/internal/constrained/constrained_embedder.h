@@ -733,34 +733,8 @@ public:
       std::cerr << "[constrained_embedding] kinetic triangulation: " << (moved ? "" : "failed, ") << kt.flips.size()
                 << " flips" << std::endl;
     if(!moved) return ERROR_PATH_TRACING_FAILED;
-    // the end triangulation, exactly, then merged into convex polygons as partition_domain() merges
-    const internal::domain_detail::Node_points<Point_2> point{ B, T };
-    const std::size_t nf = kt.final_triangles.size(), nh = 3 * nf, none = std::size_t(-1);
-    std::vector<std::size_t> from(nh), to(nh), next(nh), prev(nh), twin(nh, none);
-    std::map<std::pair<std::size_t, std::size_t>, std::size_t> half;
-    for(std::size_t f = 0; f < nf; ++f)
-    {
-      const auto& t = kt.final_triangles[f];
-      if(internal::exact_orientation(point(t[0]), point(t[1]), point(t[2])) != CGAL::LEFT_TURN) return ERROR_PATH_TRACING_FAILED;
-      for(std::size_t i = 0; i < 3; ++i)
-      {
-        const std::size_t h = 3 * f + i;
-        from[h] = t[(i + 1) % 3]; to[h] = t[(i + 2) % 3];
-        next[h] = 3 * f + (i + 1) % 3; prev[h] = 3 * f + (i + 2) % 3;
-        half[std::make_pair(from[h], to[h])] = h;
-      }
-    }
-    for(std::size_t h = 0; h < nh; ++h)
-    {
-      const auto it = half.find(std::make_pair(to[h], from[h]));
-      if(it != half.end()) twin[h] = it->second;
-    }
-    std::vector<char> flat(nbn, 0);
-    for(std::size_t i = 0; i < nbn; ++i)
-      flat[i] = internal::exact_orientation(B[(i + nbn - 1) % nbn], B[i], B[(i + 1) % nbn]) == CGAL::COLLINEAR;
-    Error_code ec = internal::domain_detail::merge_into_convex_polygons<Point_2>(point, nbn, nt, true, flat, from, to, next, prev,
-                                                                                twin, popt, kpart);
-    if(ec != OK) return ec;
+    // the end triangulation, checked exactly at the targets, merged into convex polygons as the Delaunay one is
+    if(internal::merge_triangulation(B, T, kt.final_triangles, kpart, popt) != OK) return ERROR_PATH_TRACING_FAILED;
     return internal::trace_paths_kinetic(work, wvpm, nodes, kt, kpart, paths, steiner,
                                          parameters::maximum_steiner_vertices(max_steiner).maximum_running_time(seconds));
   }

@@ -171,6 +171,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <type_traits>
 #include <utility>
@@ -714,6 +715,46 @@ Error_code partition_domain(const std::vector<Point_2>& border, const std::vecto
 
   return domain_detail::merge_into_convex_polygons<Point_2>(point, nb, nt, ccw, flat, from, to, next, prev, twin,
                                                             options, out);
+}
+
+/// The partition of a convex, counterclockwise `border` with `targets` merged from a given triangulation of
+/// them (nodes numbered as partition_domain() numbers them; `triangles` counterclockwise, tiling the domain),
+/// by the same greedy merge as partition_domain(). Each triangle is checked strictly counterclockwise exactly
+/// first: ERROR_DEGENERATE_BORDER when one is not (the caller's triangulation is not valid at these points).
+/// \param out written on success only
+template <class Point_2>
+Error_code merge_triangulation(const std::vector<Point_2>& border, const std::vector<Point_2>& targets,
+                               const std::vector<std::array<std::size_t, 3> >& triangles, Domain_partition& out,
+                               const Domain_partition_options& options = Domain_partition_options())
+{
+  const std::size_t nb = border.size(), nt = targets.size(), nn = nb + nt;
+  const domain_detail::Node_points<Point_2> point{ border, targets };
+  // half-edge 3f+i of triangle f runs counterclockwise along the edge opposite its corner i
+  const std::size_t nf = triangles.size(), nh = 3 * nf, none = std::size_t(-1);
+  std::vector<std::size_t> from(nh), to(nh), next(nh), prev(nh), twin(nh, none);
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> half;
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    const auto& t = triangles[f];
+    if(t[0] >= nn || t[1] >= nn || t[2] >= nn) return ERROR_DEGENERATE_BORDER;
+    if(exact_orientation(point(t[0]), point(t[1]), point(t[2])) != CGAL::LEFT_TURN) return ERROR_DEGENERATE_BORDER;
+    for(std::size_t i = 0; i < 3; ++i)
+    {
+      const std::size_t h = 3 * f + i;
+      from[h] = t[(i + 1) % 3]; to[h] = t[(i + 2) % 3];
+      next[h] = 3 * f + (i + 1) % 3; prev[h] = 3 * f + (i + 2) % 3;
+      half[std::make_pair(from[h], to[h])] = h;
+    }
+  }
+  for(std::size_t h = 0; h < nh; ++h)
+  {
+    const auto it = half.find(std::make_pair(to[h], from[h]));
+    if(it != half.end()) twin[h] = it->second;
+  }
+  std::vector<char> flat(nb, 0);
+  for(std::size_t i = 0; i < nb; ++i)
+    flat[i] = exact_orientation(border[(i + nb - 1) % nb], border[i], border[(i + 1) % nb]) == CGAL::COLLINEAR;
+  return domain_detail::merge_into_convex_polygons<Point_2>(point, nb, nt, true, flat, from, to, next, prev, twin, options, out);
 }
 
 /// Cuts the immersed disk bounded by the weakly self-overlapping polygon `border` into strictly convex

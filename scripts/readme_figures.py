@@ -208,6 +208,43 @@ def _(d):
     return table(["input", "vertices", "progressive embedding (s)", "Tutte solve (s)", "PE / Tutte"], out)
 
 
+@block("large_meshes", README, "large_meshes.csv")
+def _(d):
+    rows = d.rows("large_meshes.csv")
+    grids = [r for r in rows if r["case"].startswith("grid:") and r["blas"] != "reference"]
+    out = []
+    previous = None  # the default solver's row of the previous size
+    for n in sorted({int(r["vertices"]) for r in grids}):
+        rs = [r for r in grids if int(r["vertices"]) == n]
+
+        def get(solver):
+            got = [r for r in rs if r["solver"] == solver and r["status"] == "OK"]
+            return got[0] if got else None
+        ldlt, default = get("ldlt_amd"), get("default")
+        side = rs[0]["case"][len("grid:"):]
+        growth = ""
+        if default and previous:
+            growth = sig((float(default["tutte_s"]) / float(previous["tutte_s"]))
+                         ** (1 / math.log2(n / int(previous["vertices"]))), 3) + "×"
+        previous = default
+        out.append(["%s×%s" % (side, side), n,
+                    sig(ldlt["tutte_s"]) if ldlt else "", sig(default["tutte_s"]) if default else "",
+                    sig(float(ldlt["tutte_s"]) / float(default["tutte_s"]), 2) + "×" if ldlt and default else "",
+                    growth, sig(default["certificate_s"]) if default else "",
+                    integer(default["peak_rss_mb"]) if default else "",
+                    ("yes" if default["valid"] == "true" else "**no**") if default else ""])
+    return table(["grid disk", "vertices", "Tutte, Eigen LDLT (s)", "Tutte, default solver (s)", "speed-up",
+                  "default: growth per doubling", "certificate (s)", "peak MB", "certified"], out)
+
+
+@block("large_meshes_file", README, "large_meshes.csv", inline=True)
+def _(d):
+    r = [r for r in d.rows("large_meshes.csv") if not r["case"].startswith("grid:")][0]
+    return ("read %s s, Tutte map %s s, certificate %s s, OBJ written %s s: **%s s** in all, peak %s MB"
+            % (sig(r["make_s"]), sig(r["tutte_s"]), sig(r["certificate_s"]), sig(r["write_s"]), sig(r["total_s"]),
+               integer(r["peak_rss_mb"])))
+
+
 @block("constrained_3", README, "constrained_embedding.csv")
 def _(d):
     rows = d.rows("constrained_embedding.csv")

@@ -37,6 +37,7 @@
 #include <CGAL/Progressive_embedding/internal/tutte_failure_protocol.h>
 #include <CGAL/Progressive_embedding/internal/disk_generators.h>
 #include "process_memory.h"
+#include "table_util.h"
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -70,14 +71,9 @@ typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
 
 namespace {
 
-std::vector<std::string> split(const std::string& s, char c)
-{
-  std::vector<std::string> out;
-  std::string cur;
-  for(char ch : s) { if(ch == c) { out.push_back(cur); cur.clear(); } else cur += ch; }
-  out.push_back(cur);
-  return out;
-}
+using pe_bench::split;
+using pe_bench::median;
+using pe_bench::fixed;
 
 // FNV-1a over the limbs of a rational (numerator, then denominator, signs included)
 struct Digest
@@ -181,14 +177,6 @@ Result run_one(const std::string& data, const std::string& name, const std::stri
   return r;
 }
 
-double median(std::vector<double> v)
-{
-  if(v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const std::size_t k = v.size() / 2;
-  return v.size() % 2 ? v[k] : 0.5 * (v[k - 1] + v[k]);
-}
-
 struct Row
 {
   std::string name, type, status, digest;
@@ -224,8 +212,6 @@ std::map<std::string, Row> read_rows(const std::string& file)
   }
   return rows;
 }
-
-std::string fixed(double x, int d) { std::ostringstream os; os << std::fixed << std::setprecision(d) << x; return os.str(); }
 
 std::string family(const std::string& name) { return split(name, ':')[0]; }
 

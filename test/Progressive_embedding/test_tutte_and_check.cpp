@@ -17,6 +17,8 @@
 #include <CGAL/Progressive_embedding/IO/OBJ_with_uv.h>
 #include <CGAL/Progressive_embedding/internal/disk_generators.h>
 #include <CGAL/Progressive_embedding/internal/tutte_failure_protocol.h>
+#include <CGAL/Progressive_embedding/Progressive_embedding_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
 #include "test_util.h"
 
@@ -980,6 +982,89 @@ int test_unreadable_file()
   return EXIT_SUCCESS;
 }
 
+// A user's solver of the Tutte system: Eigen's simplicial LLT, counting its factorizations (copies share the count).
+struct Counting_solver : CGAL::Eigen_solver_traits<Eigen::SimplicialLLT<CGAL::Eigen_sparse_matrix<double>::EigenType> >
+{
+  typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLLT<CGAL::Eigen_sparse_matrix<double>::EigenType> > Base;
+  std::shared_ptr<int> factors = std::make_shared<int>(0);
+  bool factor(const Matrix& A, NT& D) { ++*factors; return Base::factor(A, D); }
+};
+
+// The solvers of the double Tutte system: the default one by size (CHOLMOD's supernodal Cholesky from
+// cholmod_minimum_unknowns unknowns when built with it, Eigen's LDLT otherwise), the same map as the LDLT's up
+// to rounding; a user's solver through `sparse_linear_solver` and through the parameterizer's SolverTraits_.
+template <class Mesh>
+int test_solvers()
+{
+  const std::size_t threshold = PE::internal::cholmod_minimum_unknowns;
+#ifdef CGAL_PROGRESSIVE_EMBEDDING_CHOLMOD_ENABLED
+  const bool cholmod = true;
+#else
+  const bool cholmod = false;
+#endif
+  std::cout << "[" << mesh_name<Mesh>() << "] built " << (cholmod ? "with" : "without") << " CHOLMOD; threshold "
+            << threshold << " unknowns" << std::endl;
+  CHECK(!PE::internal::default_tutte_solver_is_cholmod(threshold - 1), "small systems: Eigen's LDLT");
+  CHECK(PE::internal::default_tutte_solver_is_cholmod(threshold) == cholmod, "large systems: CHOLMOD when built with it");
+
+  // below the threshold: Eigen's LDLT on the matrix built in place, bit for bit the map of the same LDLT given as
+  // CGAL solver traits (through CGAL::Eigen_sparse_matrix)
+  typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::EigenType> > LDLT;
+  const auto circle = PE::parameters::border_shape(PE::Border_shape::CIRCLE);
+  {
+    Mesh g;
+    PE::internal::make_grid_disk(60, g);
+    auto a = make_uv_map(g, Epick::Point_2());
+    auto b = make_uv_map(g, Epick::Point_2());
+    CHECK(PE::tutte_embedding(g, null_h<Mesh>(), a, circle) == PE::OK, "default solver, small system");
+    CHECK(PE::tutte_embedding(g, null_h<Mesh>(), b, circle.sparse_linear_solver(LDLT())) == PE::OK, "LDLT traits, small system");
+    for(auto v : vertices(g)) CHECK(get(a, v) == get(b, v), "the same map, bit for bit");
+  }
+
+  // a grid disk just above the threshold: 320 x 320 vertices, 101,124 unknowns
+  Mesh m;
+  PE::internal::make_grid_disk(320, m);
+  const std::size_t unknowns = 318 * 318;
+  CHECK(unknowns >= threshold && PE::internal::default_tutte_solver_is_cholmod(unknowns) == cholmod, unknowns);
+  auto uv_default = make_uv_map(m, Epick::Point_2());
+  auto uv_ldlt = make_uv_map(m, Epick::Point_2());
+  auto uv_user = make_uv_map(m, Epick::Point_2());
+  CGAL::Real_timer t;
+  t.start();
+  CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uv_default, circle) == PE::OK, "default solver");
+  const double t_default = t.time();
+  t.reset();
+  CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uv_ldlt, circle.sparse_linear_solver(LDLT())) == PE::OK, "LDLT");
+  const double t_ldlt = t.time();
+  Counting_solver counting;
+  CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uv_user, circle.sparse_linear_solver(counting)) == PE::OK, "user's solver");
+  CHECK(*counting.factors == 1, "the user's solver factors the system once: " << *counting.factors);
+  double diff = 0, diff_user = 0;
+  for(auto v : vertices(m))
+  {
+    diff = (std::max)(diff, CGAL::to_double(CGAL::squared_distance(get(uv_default, v), get(uv_ldlt, v))));
+    diff_user = (std::max)(diff_user, CGAL::to_double(CGAL::squared_distance(get(uv_user, v), get(uv_ldlt, v))));
+  }
+  std::cout << "  " << unknowns << " unknowns: default " << t_default << " s, LDLT " << t_ldlt << " s; largest distance "
+            << std::sqrt(diff) << " (default), " << std::sqrt(diff_user) << " (LLT)" << std::endl;
+  CHECK(std::sqrt(diff) < 1e-9 && std::sqrt(diff_user) < 1e-9, "the same map up to rounding");
+  CHECK(cholmod || diff == 0, "without CHOLMOD the default is the LDLT, bit for bit");
+  CHECK(PE::check_embedding(m, uv_default).is_valid(), "certified");
+
+  // the drop-in parameterizer with the user's solver (CGAL's SolverTraits_ template parameter)
+  Mesh small;
+  PE::internal::make_grid_disk(20, small);
+  auto uv = make_uv_map(small, Epick::Point_2());
+  typedef PE::Progressive_embedding_parameterizer_3<Mesh, CGAL::Default, Counting_solver> Parameterizer;
+  Counting_solver solver;
+  Parameterizer p(typename Parameterizer::Border_parameterizer(), Parameterizer::Optimization::WHEN_REPAIRED, solver);
+  const auto bhd = *std::find_if(halfedges(small).begin(), halfedges(small).end(), [&](auto h) { return is_border(h, small); });
+  CHECK(CGAL::Surface_mesh_parameterization::parameterize(small, p, bhd, uv) == CGAL::Surface_mesh_parameterization::OK, "parameterizer");
+  CHECK(*solver.factors == 1, "the parameterizer solves with the given solver: " << *solver.factors << " factorizations");
+  CHECK(PE::check_embedding(small, uv).is_valid(), "certified");
+  return EXIT_SUCCESS;
+}
+
 template <class Mesh>
 int run_group(const std::string& group, const std::string& data)
 {
@@ -997,6 +1082,7 @@ int run_group(const std::string& group, const std::string& data)
   if(group == "traits") return test_traits<Mesh>();
   if(group == "helpers") return test_helpers<Mesh>();
   if(group == "named_parameters") return test_named_parameters<Mesh>();
+  if(group == "solvers") return test_solvers<Mesh>();
   if(group == "bad_inputs")
   {
     RUN(test_bad_inputs<Mesh>());
@@ -1010,7 +1096,7 @@ int run_group(const std::string& group, const std::string& data)
 
 // Usage: test_tutte_and_check DATA_DIR [GROUP [surface_mesh|polyhedron]]
 // GROUP: stacked, bull, disks, bad_inputs, exact_scales, zero_length_border, budget, traits, helpers,
-// named_parameters
+// named_parameters, solvers
 // (default: all, on both mesh types)
 int main(int argc, char** argv)
 {
@@ -1022,7 +1108,7 @@ int main(int argc, char** argv)
   const std::string data = argv[1];
   const std::string group = (argc > 2) ? argv[2] : "all", mesh = (argc > 3) ? argv[3] : "all";
   const std::vector<std::string> groups = { "stacked", "bull", "disks", "bad_inputs", "exact_scales", "zero_length_border",
-                                            "budget", "traits", "helpers", "named_parameters" };
+                                            "budget", "traits", "helpers", "named_parameters", "solvers" };
   bool ran = false;
   for(const std::string& g : groups)
   {

@@ -83,8 +83,9 @@ std::string optimization_summary(const PE::Optimization_statistics& os)
 namespace {
 
 // The common end of untangle and embed: repair_and_optimize() (the optimization unless --no-optimize),
-// then the output
-int repair_optimize_and_finish(Run& run, Input& in, const Arguments& a, const Budget& budget)
+// then the output. With `tutte`, the map given is embed's Tutte map: its certificate, the one
+// repair_and_optimize() takes first, is reported as the Tutte map's (no second pass over a large map).
+int repair_optimize_and_finish(Run& run, Input& in, const Arguments& a, const Budget& budget, bool tutte = false)
 {
   const bool optimize = !a.has("--no-optimize");
   const Optimize_settings o = optimize_settings(a, 1000);
@@ -101,6 +102,15 @@ int repair_optimize_and_finish(Run& run, Input& in, const Arguments& a, const Bu
     PE::parameters::convergence_tolerance(o.tolerance,
     CGAL::parameters::number_of_iterations(o.iterations).maximum_running_time(budget.remaining()))))));
   bar.finish();
+  if(tutte)
+  {
+    const PE::Embedding_report& tutte_report = ps.input_report;
+    run.result.add("tutte_valid", tutte_report.is_valid());
+    run.result.add("tutte_flipped", tutte_report.flipped);
+    run.result.add("tutte_degenerate", tutte_report.degenerate);
+    run.summary << "faces " << count_faces(in.mesh) << ", Tutte " << (tutte_report.is_valid() ? "valid" : "INVALID")
+                << " (flipped " << tutte_report.flipped << ", degenerate " << tutte_report.degenerate << ")";
+  }
   add_statistics(run.result, ps);
   if(ps.repaired) run.summary << ", progressive embedding: " << statistics_summary(ps.repair);
   if(ec != PE::OK)
@@ -150,13 +160,7 @@ int cmd_embed(const Arguments& a)
   PE::Embedding_report unused;
   PE::Error_code ec = run_tutte(in, s, budget, unused);
   if(ec != PE::OK) return run.fail(ec, "Tutte failed on '" + in.filename + "'");
-  const PE::Embedding_report tutte_report = certify(in).report;
-  run.result.add("tutte_valid", tutte_report.is_valid());
-  run.result.add("tutte_flipped", tutte_report.flipped);
-  run.result.add("tutte_degenerate", tutte_report.degenerate);
-  run.summary << "faces " << count_faces(in.mesh) << ", Tutte " << (tutte_report.is_valid() ? "valid" : "INVALID")
-              << " (flipped " << tutte_report.flipped << ", degenerate " << tutte_report.degenerate << ")";
-  return repair_optimize_and_finish(run, in, a, budget);
+  return repair_optimize_and_finish(run, in, a, budget, true);
 }
 
 int cmd_optimize(const Arguments& a)

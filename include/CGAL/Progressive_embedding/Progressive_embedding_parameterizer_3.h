@@ -22,6 +22,7 @@
 #include <CGAL/Default.h>
 
 #include <memory>
+#include <type_traits>
 
 namespace CGAL {
 namespace Progressive_embedding {
@@ -45,9 +46,13 @@ namespace Progressive_embedding {
 /// \tparam TriangleMesh_ a model of `FaceGraph`
 /// \tparam BorderParameterizer_ a model of `Parameterizer_3` that places a convex border;
 ///         default: `CGAL::Surface_mesh_parameterization::Circular_border_arc_length_parameterizer_3<TriangleMesh_>`
+/// \tparam SolverTraits_ a model of `SparseLinearAlgebraWithFactorTraits_d` over `double` that solves the Tutte
+///         system (the `sparse_linear_solver` of `tutte_embedding()`), as in CGAL's `Fixed_border_parameterizer_3`;
+///         default: the solver `tutte_embedding()` chooses (`Eigen::SimplicialLDLT`, or CHOLMOD's supernodal
+///         Cholesky for 100,000 interior vertices or more when the package is built with CHOLMOD)
 ///
 /// \cgalModels `Parameterizer_3`
-template <class TriangleMesh_, class BorderParameterizer_ = CGAL::Default>
+template <class TriangleMesh_, class BorderParameterizer_ = CGAL::Default, class SolverTraits_ = CGAL::Default>
 class Progressive_embedding_parameterizer_3
 {
 public:
@@ -58,6 +63,8 @@ public:
   /// the border parameterizer
   typedef BorderParameterizer_ Border_parameterizer;
 #endif
+  /// the solver of the Tutte system (`CGAL::Default`: the one `tutte_embedding()` chooses)
+  typedef SolverTraits_ Solver_traits;
   /// the mesh type
   typedef TriangleMesh_ TriangleMesh;
   /// halfedge descriptor of the mesh
@@ -74,9 +81,11 @@ public:
   /// constructs the parameterizer. The default, `Optimization::WHEN_REPAIRED`, keeps the drop-in promise (a valid
   /// Tutte map is returned unchanged, as CGAL's `Barycentric_mapping_parameterizer_3` computes it) while a repaired
   /// map, whose faces inherit Tutte's areas of \f$10^{-20}\f$ and below, becomes a map that can be textured.
+  /// `solver` solves the Tutte system when `SolverTraits_` is not `CGAL::Default`.
   Progressive_embedding_parameterizer_3(Border_parameterizer border_parameterizer = Border_parameterizer(),
-                                        Optimization optimization = Optimization::WHEN_REPAIRED)
-    : m_border(border_parameterizer), m_optimization(optimization), m_state(std::make_shared<State>()) { }
+                                        Optimization optimization = Optimization::WHEN_REPAIRED,
+                                        Solver_traits solver = Solver_traits())
+    : m_border(border_parameterizer), m_optimization(optimization), m_solver(solver), m_state(std::make_shared<State>()) { }
 
   /// returns the statistics of the last call (progressive embedding counts are zero when Tutte was valid).
   /// Copies share them: `CGAL::Surface_mesh_parameterization::parameterize()` takes the parameterizer by value,
@@ -109,7 +118,7 @@ public:
     m_stats = Progressive_embedding_statistics();
     SMP::Error_code status = m_border.parameterize(mesh, bhd, uvmap, vimap, vpmap);
     if(status != SMP::OK) return status;
-    Error_code ec = tutte_embedding(mesh, bhd, uvmap);
+    Error_code ec = solve_tutte(mesh, bhd, uvmap);
     if(ec == ERROR_NOT_A_DISK && bhd != boost::graph_traits<TriangleMesh>::null_halfedge())
       return parameterize_component(mesh, bhd, uvmap, vimap, vpmap);
     if(ec == ERROR_NON_CONVEX_BORDER || ec == ERROR_DEGENERATE_BORDER) return SMP::ERROR_NON_CONVEX_BORDER;
@@ -132,6 +141,21 @@ public:
   }
 
 private:
+  template <typename VertexUVmap>
+  Error_code solve_tutte(const TriangleMesh& mesh, halfedge_descriptor bhd, VertexUVmap uvmap)
+  {
+    if constexpr(std::is_same<Solver_traits, CGAL::Default>::value) return tutte_embedding(mesh, bhd, uvmap);
+    else return tutte_embedding(mesh, bhd, uvmap, CGAL::parameters::sparse_linear_solver(m_solver));
+  }
+
+  // CGAL's barycentric mapping with the same border parameterizer and, when one is given, the same solver
+  template <class Tutte>
+  Tutte make_barycentric() const
+  {
+    if constexpr(std::is_same<Solver_traits, CGAL::Default>::value) return Tutte(m_border);
+    else return Tutte(m_border, m_solver);
+  }
+
   static Optimization_policy policy(Optimization o)
   {
     return o == Optimization::NEVER ? Optimization_policy::NEVER
@@ -145,12 +169,12 @@ private:
   parameterize_component(const TriangleMesh& mesh, halfedge_descriptor bhd, VertexUVmap uvmap,
                          VertexIndexMap vimap, VertexParameterizedMap vpmap)
   {
-    typedef CGAL::Surface_mesh_parameterization::Barycentric_mapping_parameterizer_3<TriangleMesh, Border_parameterizer> Tutte;
+    typedef CGAL::Surface_mesh_parameterization::Barycentric_mapping_parameterizer_3<TriangleMesh, Border_parameterizer, SolverTraits_> Tutte;
     typedef Certified_parameterizer_3<TriangleMesh, Tutte> Wrapper;
     typename Wrapper::Optimization o = m_optimization == Optimization::NEVER ? Wrapper::Optimization::NEVER
                                      : m_optimization == Optimization::ALWAYS ? Wrapper::Optimization::ALWAYS
                                                                               : Wrapper::Optimization::WHEN_REPAIRED;
-    Wrapper w(Tutte(m_border), o);
+    Wrapper w(make_barycentric<Tutte>(), o);
     const auto status = w.parameterize(const_cast<TriangleMesh&>(mesh), bhd, uvmap, vimap, vpmap);
     m_state->repaired = w.repaired();
     m_state->optimized = w.optimized();
@@ -168,6 +192,7 @@ private:
   };
   Border_parameterizer m_border;
   Optimization m_optimization;
+  Solver_traits m_solver;
   std::shared_ptr<State> m_state;
 };
 

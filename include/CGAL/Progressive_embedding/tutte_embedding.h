@@ -66,7 +66,7 @@ Error_code place_border(const Indexed_disk<TriangleMesh>& disk, VertexUVMap uvm,
 // Solves the system with the solver the named parameters give, or the default one for FT:
 // Eigen (LDLT or LU) in floating point, the exact elimination otherwise.
 template <class FT, class NamedParameters>
-Error_code solve_tutte_system(const Tutte_system<FT>& S, bool symmetric, const NamedParameters& np,
+Error_code solve_tutte_system(Tutte_system<FT>& S, bool symmetric, const NamedParameters& np,
                               Progress_budget& budget, std::vector<FT>& xu, std::vector<FT>& xv)
 {
   using CGAL::parameters::choose_parameter;
@@ -77,6 +77,9 @@ Error_code solve_tutte_system(const Tutte_system<FT>& S, bool symmetric, const N
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::sparse_linear_solver_t>::value)
     return solve_with_solver_traits(S, choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver),
                                                         Default_solver()), budget, xu, xv);
+  else if constexpr(std::is_same<FT, double>::value)
+    // symmetric: Eigen's LDLT, or CHOLMOD for large systems, on a matrix built in place
+    return symmetric ? solve_symmetric_default(S, budget, xu, xv) : solve_with_solver_traits(S, LU_solver(), budget, xu, xv);
   else if constexpr(std::is_floating_point<FT>::value)
     return symmetric ? solve_with_solver_traits(S, Default_solver(), budget, xu, xv)
                      : solve_with_solver_traits(S, LU_solver(), budget, xu, xv);
@@ -102,11 +105,14 @@ Error_code tutte_interior(const Indexed_disk<TriangleMesh>& disk, VPM vpm, const
   typedef typename CGAL::Kernel_traits<Point_2>::Kernel::FT FT;
   if(disk.number_of_interior_vertices() == 0) return OK;
   const Weights wts = choose_parameter(get_parameter(np, internal_np::weights), Weights::UNIFORM);
-  std::vector<std::vector<std::pair<std::size_t, double> > > adj;
-  Error_code status = tutte_weights(disk, vpm, wts, adj);
-  if(status != OK) return status;
   Tutte_system<FT> S;
-  assemble_tutte_system(disk, adj, pos, S);
+  {
+    std::vector<std::vector<std::pair<std::size_t, double> > > adj;
+    const Error_code status = tutte_weights(disk, vpm, wts, adj);
+    if(status != OK) return status;
+    assemble_tutte_system(disk, adj, pos, S);
+  } // the weights are released before the solve
+  Error_code status = OK;
   std::vector<FT> xu, xv;
   status = solve_tutte_system(S, wts == Weights::UNIFORM, np, budget, xu, xv);
   if(status != OK) return status;
@@ -215,8 +221,11 @@ Error_code tutte_interior(const Indexed_disk<TriangleMesh>& disk, VPM vpm, const
 ///     \cgalParamDescription{the solver, a model of `SparseLinearAlgebraWithFactorTraits_d` whose scalar is the uv `FT`}
 ///     \cgalParamType{a class model of `SparseLinearAlgebraWithFactorTraits_d`}
 ///     \cgalParamDefault{`CGAL::Eigen_solver_traits` over `Eigen::SimplicialLDLT` (double, uniform weights) or
-///                      `Eigen::SparseLU` with COLAMD ordering (double, mean value weights); with `CGAL::Gmpq`, the
-///                      package's p-adic solve; in other number types, the package's sparse elimination}
+///                      `Eigen::SparseLU` with COLAMD ordering (double, mean value weights); with uniform weights in
+///                      double and 100,000 interior vertices or more, CHOLMOD's supernodal Cholesky
+///                      (`Eigen::CholmodSupernodalLLT`) when the package is built with CHOLMOD (see the manual's
+///                      section "The Linear Solver and Large Meshes"); with `CGAL::Gmpq`, the package's p-adic solve; in other number types, the
+///                      package's sparse elimination}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{geom_traits}
 ///     \cgalParamDescription{the traits class whose exact orientation predicate checks the border and the triangle

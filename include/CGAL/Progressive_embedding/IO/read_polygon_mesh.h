@@ -980,7 +980,9 @@ Read_result pm_read_buffer(const std::string& buf, const std::string& format, Po
     points.push_back(Point_3(make_ft<FT>(s.points[v][0]), make_ft<FT>(s.points[v][1]), make_ft<FT>(s.points[v][2])));
   }
   for(auto& f : s.faces) for(std::size_t& v : f) v = new_index[v];
-  if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(s.faces))
+  // pm_check_topology() proved CGAL's condition on the faces as read (distinct vertices, each edge in at most
+  // two faces and in opposite directions, manifold vertices); after a reorientation CGAL checks it again
+  if(r.reoriented && !CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(s.faces))
   {
     pm_fail(r, ERROR_NON_MANIFOLD, 0, "the faces do not form a manifold polygon mesh");
     return r;

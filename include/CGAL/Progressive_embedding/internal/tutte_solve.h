@@ -6,9 +6,11 @@
 #define CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_TUTTE_SOLVE_H
 
 // Solvers of the Tutte system (internal/tutte_system.h) and the progress/time budget.
-//  - solve_with_solver_traits: a model of SparseLinearAlgebraWithFactorTraits_d (Eigen's LDLT
-//    or LU through CGAL::Eigen_solver_traits by default in floating point). Its factorization
+//  - solve_with_solver_traits: a model of SparseLinearAlgebraWithFactorTraits_d (the user's, or Eigen's
+//    LU through CGAL::Eigen_solver_traits for a non-symmetric floating-point system). Its factorization
 //    cannot be observed: progress is reported before and after, and the clock read there.
+//  - solve_symmetric_default: a symmetric double system, Eigen's LDLT or (large systems, when built with
+//    it) CHOLMOD's supernodal Cholesky, on an Eigen matrix built in place; progress as above.
 //  - solve_by_elimination: sparse Gaussian elimination in the number type itself, in a
 //    fill-reducing order (AMD on the symmetric pattern), for multiprecision and exact types
 //    (for CGAL::Gmpq, the fallback of the p-adic solve of internal/tutte_p_adic.h). The pattern of
@@ -33,6 +35,9 @@
 #include <Eigen/SparseLU>
 #include <Eigen/SparseCholesky>
 #include <Eigen/OrderingMethods>
+#ifdef CGAL_PROGRESSIVE_EMBEDDING_CHOLMOD_ENABLED
+#include <Eigen/CholmodSupport>
+#endif
 
 #include <algorithm>
 #include <chrono>
@@ -58,6 +63,30 @@ struct Default_tutte_solver<double, true>
   typedef CGAL::Eigen_solver_traits<
             Eigen::SimplicialLDLT<typename CGAL::Eigen_sparse_matrix<double>::EigenType> > type;
 };
+
+// CHOLMOD's supernodal Cholesky factorization (SuiteSparse, through Eigen's CholmodSupport) when the
+// package is built with it (CMake defines CGAL_PROGRESSIVE_EMBEDDING_CHOLMOD_ENABLED where CHOLMOD is
+// found): the default solver of a symmetric double system from `cholmod_minimum_unknowns` unknowns on.
+// Below that size Eigen's simplicial LDLT is as fast, and keeping it there keeps the Tutte maps of the
+// corpus and of the tests those of the solver they were measured with. The threshold comes from
+// benchmark/results/large_meshes.md (grid disks: equal times at 65k unknowns, CHOLMOD ahead from 262k on).
+constexpr std::size_t cholmod_minimum_unknowns = 100000;
+
+#ifdef CGAL_PROGRESSIVE_EMBEDDING_CHOLMOD_ENABLED
+typedef CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<typename CGAL::Eigen_sparse_matrix<double>::EigenType> >
+  Cholmod_tutte_solver;
+#endif
+
+// true if the default solver of a symmetric double system of `unknowns` unknowns is CHOLMOD's
+inline bool default_tutte_solver_is_cholmod(std::size_t unknowns)
+{
+#ifdef CGAL_PROGRESSIVE_EMBEDDING_CHOLMOD_ENABLED
+  return unknowns >= cholmod_minimum_unknowns;
+#else
+  (void)unknowns;
+  return false;
+#endif
+}
 
 // A progress callback and a running-time limit. `report(f)` calls the callback with the
 // fraction f done (at most about every thousandth, and at 0 and 1) and returns false when the
@@ -129,6 +158,61 @@ Error_code solve_with_solver_traits(const Tutte_system<FT>& S, Solver solver, Pr
   }
   if(!budget.report(1)) return ERROR_BUDGET_EXHAUSTED;
   return OK;
+}
+
+// The default double solvers of a symmetric system (Eigen's LDLT, CHOLMOD) on an Eigen matrix built in place:
+// no triplet list and no second copy as through CGAL::Eigen_sparse_matrix (at 1M unknowns the triplets alone
+// are 112 MB), and the rows of the system released once the matrix holds them. The matrix has the same entries
+// as the one solve_with_solver_traits() assembles, so Eigen's LDLT computes the same map, bit for bit.
+template <class EigenSolver>
+Error_code solve_symmetric_with_eigen(const Eigen::SparseMatrix<double>& A, const Tutte_system<double>& S,
+                                      Progress_budget& budget, std::vector<double>& xu, std::vector<double>& xv)
+{
+  typedef Eigen::Map<const Eigen::VectorXd> Rhs;
+  const Eigen::Index n = static_cast<Eigen::Index>(S.n);
+  EigenSolver solver;
+  solver.compute(A);
+  if(solver.info() != Eigen::Success) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  if(!budget.report(0.5)) return ERROR_BUDGET_EXHAUSTED;
+  const Eigen::VectorXd u = solver.solve(Rhs(S.bu.data(), n));
+  if(solver.info() != Eigen::Success) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  const Eigen::VectorXd v = solver.solve(Rhs(S.bv.data(), n));
+  if(solver.info() != Eigen::Success) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  xu.assign(u.data(), u.data() + n);
+  xv.assign(v.data(), v.data() + n);
+  if(!budget.report(1)) return ERROR_BUDGET_EXHAUSTED;
+  return OK;
+}
+
+// Solves a symmetric double system with the default solver for its size; S.off is released on the way.
+inline Error_code solve_symmetric_default(Tutte_system<double>& S, Progress_budget& budget,
+                                          std::vector<double>& xu, std::vector<double>& xv)
+{
+  if(!budget.report(0)) return ERROR_BUDGET_EXHAUSTED;
+  const Eigen::Index n = static_cast<Eigen::Index>(S.n);
+  Eigen::SparseMatrix<double> A(n, n);
+  {
+    Eigen::VectorXi sizes(n);
+    for(Eigen::Index r = 0; r < n; ++r) sizes[r] = static_cast<int>(S.off[static_cast<std::size_t>(r)].size()) + 1;
+    A.reserve(sizes);
+  }
+  // column r holds the entries of row r (the matrix is symmetric)
+  for(Eigen::Index r = 0; r < n; ++r)
+  {
+    A.insert(r, r) = S.diag[static_cast<std::size_t>(r)];
+    for(const auto& e : S.off[static_cast<std::size_t>(r)]) A.insert(static_cast<Eigen::Index>(e.first), r) = e.second;
+  }
+  A.makeCompressed();
+  std::vector<std::vector<std::pair<std::size_t, double> > >().swap(S.off);
+#ifdef CGAL_PROGRESSIVE_EMBEDDING_CHOLMOD_ENABLED
+  // CHOLMOD for large systems; Eigen's LDLT if it refuses the matrix
+  if(default_tutte_solver_is_cholmod(S.n))
+  {
+    const Error_code ec = solve_symmetric_with_eigen<Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double> > >(A, S, budget, xu, xv);
+    if(ec != ERROR_CANNOT_SOLVE_LINEAR_SYSTEM) return ec;
+  }
+#endif
+  return solve_symmetric_with_eigen<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > >(A, S, budget, xu, xv);
 }
 
 // A fill-reducing elimination order of the system's (symmetric) pattern: order[k] is the

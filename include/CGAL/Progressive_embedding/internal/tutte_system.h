@@ -93,6 +93,7 @@ void assemble_tutte_system(const Indexed_disk<TriangleMesh>& disk,
   {
     if(S.row[i] < 0) continue;
     const std::size_t r = static_cast<std::size_t>(S.row[i]);
+    S.off[r].reserve(adj[i].size());
     for(const auto& e : adj[i])
     {
       const FT w = make_ft<FT>(e.second);

@@ -6,7 +6,7 @@
 # (the test slurm_batch: scripts/slurm_batch.sh runs the README's job array on a one-node Slurm;
 # slurmctld and slurmd do not start on installation: they need /etc/slurm/slurm.conf), CHOLMOD
 # (libsuitesparse-dev: the solver of large Tutte systems) with the single-threaded OpenBLAS
-# (libopenblas0-serial: the supernodal factorization runs on BLAS, the reference BLAS is about 1.6 times
+# (libopenblas0-serial: the supernodal factorization runs on BLAS, the reference BLAS is 1.5-2.4 times
 # slower there, and a threaded BLAS loses several times over beside other busy processes, as in batch
 # runs), and libcgal-demo for its real meshes (without its recommended packages: it would pull in Qt).
 # Runs apt-get only when a package is missing; as a non-root user it uses sudo.

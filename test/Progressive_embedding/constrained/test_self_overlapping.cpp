@@ -466,6 +466,17 @@ PE_TEST_GROUP(self_overlapping_rotation_indices)
   for(std::size_t s = 0; s < glued.size(); s += 3)
     RUN(run_turns(rotated(glued, s), rotated(rg, s), "two wrapped vertices, start " + std::to_string(s)));
 
+  // Every chord at the wrapped vertex lies along or against one of its edges: (3, 1) sees its neighbours
+  // (1, 3) and (0, 3) again at positions 6 and 7, and the chords to (4, 0) and (3, 3) point against an
+  // edge at one end (an angle of pi on one side, which is allowed; along an edge is not)
+  const std::vector<Epick::Point_2> against = { Epick::Point_2(3, 1), Epick::Point_2(1, 3), Epick::Point_2(0, 3),
+    Epick::Point_2(4, 0), Epick::Point_2(3, 4), Epick::Point_2(3, 3), Epick::Point_2(1, 3), Epick::Point_2(0, 3) };
+  std::vector<int> ra(against.size(), 0);
+  ra[0] = 1;
+  for(std::size_t s = 0; s < against.size(); ++s)
+    RUN(run_turns(rotated(against, s), rotated(ra, s), "chords against an edge, start " + std::to_string(s)));
+  RUN(run_turns(to_q(against), ra, "chords against an edge, Gmpq"));
+
   // exact rationals: the same decisions, the same triangles
   std::vector<Kq::Point_2> fanq = to_q(fan);
   std::vector<Tri> Tq;
@@ -516,7 +527,7 @@ PE_TEST_GROUP(self_overlapping_rotation_indices)
   CHECK(PE::triangulate_self_overlapping_polygon_2(sq, std::back_inserter(Tsq), PE::parameters::rotation_indices(zsq)) == PE::OK
         && Tsq.size() == 2, "a square with zero indices");
   RUN(certify(sq, Tsq, true, "a square with zero indices"));
-  std::cout << "wrapped fans (1.25 and 2.25 turns, every start vertex), two wrapped vertices, Gmpq: certified; 12 errors as expected" << std::endl;
+  std::cout << "wrapped fans (1.25 and 2.25 turns, every start vertex), two wrapped vertices, chords against an edge, Gmpq: certified; 12 errors as expected" << std::endl;
   return EXIT_SUCCESS;
 }
 

@@ -49,6 +49,14 @@ inline bool turn_crossing(const Point_2& a, const Point_2& b, const Point_2& c, 
   return true;
 }
 
+// the direction o -> q is that of o -> p (o, p, q pairwise distinct): collinear and in the same half;
+// a direction opposite to o -> p (an angle of pi) is not
+template <class Point_2, class Orientation_2>
+inline bool same_direction(const Point_2& o, const Point_2& p, const Point_2& q, const Orientation_2& orient)
+{
+  return orient(o, p, q) == CGAL::COLLINEAR && upper_direction(o, p) == upper_direction(o, q);
+}
+
 // Kind of the angle at a vertex, interior on the left of the polygon's direction.
 enum class Corner_kind : unsigned char { CONVEX, FLAT, REFLEX };
 

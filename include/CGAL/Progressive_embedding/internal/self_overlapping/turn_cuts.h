@@ -90,10 +90,12 @@ public:
     for(std::size_t q = 2; q + 1 < m; ++q)
     {
       const Point_2& d = Q_[I[q]];
-      if(same_point(b, d) || orient_(b, c, d) == CGAL::COLLINEAR || orient_(b, a, d) == CGAL::COLLINEAR) continue;
+      // a chord along an edge at v or w leaves a side with an angle of 0 there; a chord opposite to an
+      // edge (an angle of pi on one side) is fine
+      if(same_point(b, d) || same_direction(b, c, d, orient_) || same_direction(b, a, d, orient_)) continue;
       const Point_2& wp = Q_[I[q - 1]];
       const Point_2& wn = Q_[I[q + 1]];
-      if(orient_(d, wn, b) == CGAL::COLLINEAR || orient_(d, wp, b) == CGAL::COLLINEAR) continue;
+      if(same_direction(d, wn, b, orient_) || same_direction(d, wp, b, orient_)) continue;
       const bool in_v = in_open_sector(a, b, c, kv, d, orient_);   // chord at v before v -> prev (first turn)
       const bool in_w = in_open_sector(wp, d, wn, kind(wp, d, wn), b, orient_); // at w, from w -> next
       if(R[q] == 0 && !in_w) continue;

@@ -10,9 +10,9 @@
 /// What `constrained_embedding()` reports: `Constrained_embedding_statistics` and `Steiner_point`.
 
 #include <CGAL/Progressive_embedding/Error_code.h>
-#include <CGAL/Progressive_embedding/check_embedding.h>
-#include <CGAL/Progressive_embedding/check_immersion.h>
-#include <CGAL/Progressive_embedding/optimize_distortion.h>
+#include <CGAL/Progressive_embedding/Embedding_report.h>
+#include <CGAL/Progressive_embedding/Immersion_report.h>
+#include <CGAL/Progressive_embedding/Optimization_statistics.h>
 
 #include <array>
 #include <cstddef>

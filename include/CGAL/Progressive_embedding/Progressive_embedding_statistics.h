@@ -7,7 +7,7 @@
 
 /// \file Progressive_embedding_statistics.h
 
-#include <CGAL/Progressive_embedding/check_embedding.h>
+#include <CGAL/Progressive_embedding/Embedding_report.h>
 
 #include <cstddef>
 

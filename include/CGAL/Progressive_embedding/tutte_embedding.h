@@ -12,13 +12,7 @@
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/parameters.h>
 #include <CGAL/Progressive_embedding/Progressive_embedding_traits_2.h>
-#include <CGAL/Progressive_embedding/internal/indexed_disk.h>
-#include <CGAL/Progressive_embedding/internal/number_utils.h>
-#include <CGAL/Progressive_embedding/internal/tutte_border.h>
-#include <CGAL/Progressive_embedding/internal/tutte_system.h>
-#include <CGAL/Progressive_embedding/internal/tutte_solve.h>
-#include <CGAL/Progressive_embedding/internal/tutte_p_adic.h>
-#include <CGAL/Progressive_embedding/internal/constrained/patch_chords.h>
+#include <CGAL/Progressive_embedding/internal/tutte_embedding_impl.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
@@ -32,105 +26,6 @@
 
 namespace CGAL {
 namespace Progressive_embedding {
-
-namespace internal {
-
-// Places the border vertices (`bpos`, in border order) as the named parameters ask.
-template <class TriangleMesh, class VertexUVMap, class VPM, class Traits, class NamedParameters>
-Error_code place_border(const Indexed_disk<TriangleMesh>& disk, VertexUVMap uvm, VPM vpm, const Traits& traits,
-                        const NamedParameters& np, std::vector<typename Traits::Point_2>& bpos)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef typename Traits::Point_2 Point_2;
-  typedef typename Traits::FT FT;
-  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  const Border_shape shape = choose_parameter(get_parameter(np, internal_np::border_shape), Border_shape::FIXED);
-  if(shape == Border_shape::FIXED) return fixed_border(disk, uvm, traits, bpos);
-  const std::vector<double> s = border_arc_length(disk, vpm);
-  if(shape == Border_shape::CIRCLE) { circle_border<FT>(s, bpos); return OK; }
-  if(shape == Border_shape::SQUARE) return square_border<FT>(s, bpos);
-  std::vector<std::size_t> ci;
-  if(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::triangle_corners_t>::value)
-  {
-    const std::array<vertex_descriptor, 3> corners =
-      choose_parameter(get_parameter(np, internal_np::triangle_corners), std::array<vertex_descriptor, 3>());
-    const Error_code ec = corner_positions(disk, corners, ci);
-    if(ec != OK) return ec;
-  }
-  const std::array<Point_2, 3> cp = choose_parameter(get_parameter(np, internal_np::triangle_corner_points),
-                                                     default_triangle_corner_points<Point_2>());
-  return triangle_border<FT>(s, ci, cp, traits, bpos);
-}
-
-// Solves the system with the solver the named parameters give, or the default one for FT:
-// Eigen (LDLT or LU) in floating point, the exact elimination otherwise.
-template <class FT, class NamedParameters>
-Error_code solve_tutte_system(Tutte_system<FT>& S, bool symmetric, const NamedParameters& np,
-                              Progress_budget& budget, std::vector<FT>& xu, std::vector<FT>& xv)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef typename Default_tutte_solver<FT, std::is_same<FT, double>::value>::type Default_solver;
-  // a non-symmetric system must not go to LDLT: LU for mean value weights in double too
-  typedef typename Default_tutte_solver<FT, false>::type LU_solver;
-  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::sparse_linear_solver_t>::value)
-    return solve_with_solver_traits(S, choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver),
-                                                        Default_solver()), budget, xu, xv);
-  else if constexpr(std::is_same<FT, double>::value)
-    // symmetric: Eigen's LDLT, or CHOLMOD for large systems, on a matrix built in place
-    return symmetric ? solve_symmetric_default(S, budget, xu, xv) : solve_with_solver_traits(S, LU_solver(), budget, xu, xv);
-  else if constexpr(std::is_floating_point<FT>::value)
-    return symmetric ? solve_with_solver_traits(S, Default_solver(), budget, xu, xv)
-                     : solve_with_solver_traits(S, LU_solver(), budget, xu, xv);
-  else if constexpr(std::is_same<FT, CGAL::Gmpq>::value)
-  {
-    // p-adic lifting, verified; rational elimination when it cannot conclude
-    const Error_code ec = solve_by_p_adic_lifting(S, budget, xu, xv);
-    return (ec == ERROR_CANNOT_SOLVE_LINEAR_SYSTEM) ? solve_by_elimination(S, budget, xu, xv) : ec;
-  }
-  else
-    return solve_by_elimination(S, budget, xu, xv);
-}
-
-// The interior positions of the Tutte map of `disk` (weights, solver, callback and time as the
-// named parameters of tutte_embedding() say), given the border positions in `pos` (by vertex
-// index); `pos` is written on the interior vertices only, and only on success.
-template <class TriangleMesh, class VPM, class Point_2, class NamedParameters>
-Error_code tutte_interior(const Indexed_disk<TriangleMesh>& disk, VPM vpm, const NamedParameters& np,
-                          Progress_budget& budget, std::vector<Point_2>& pos)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef typename CGAL::Kernel_traits<Point_2>::Kernel::FT FT;
-  if(disk.number_of_interior_vertices() == 0) return OK;
-  const Weights wts = choose_parameter(get_parameter(np, internal_np::weights), Weights::UNIFORM);
-  Tutte_system<FT> S;
-  {
-    std::vector<std::vector<std::pair<std::size_t, double> > > adj;
-    const Error_code status = tutte_weights(disk, vpm, wts, adj);
-    if(status != OK) return status;
-    assemble_tutte_system(disk, adj, pos, S);
-  } // the weights are released before the solve
-  Error_code status = OK;
-  std::vector<FT> xu, xv;
-  status = solve_tutte_system(S, wts == Weights::UNIFORM, np, budget, xu, xv);
-  if(status != OK) return status;
-  const std::size_t nv = disk.number_of_vertices();
-  std::vector<Point_2> sol(nv);
-  for(std::size_t i = 0; i < nv; ++i)
-  {
-    if(S.row[i] < 0) continue;
-    sol[i] = Point_2(xu[S.row[i]], xv[S.row[i]]);
-    if(!is_finite_ft(sol[i].x()) || !is_finite_ft(sol[i].y()))
-      return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-  }
-  for(std::size_t i = 0; i < nv; ++i)
-    if(S.row[i] >= 0) pos[i] = sol[i];
-  return OK;
-}
-
-} // namespace internal
 
 /// \ingroup PkgProgressiveEmbeddingMainFunctions
 ///
@@ -259,53 +154,7 @@ Error_code tutte_embedding(const TriangleMesh& tm,
                            VertexUVMap uvm,
                            const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef typename internal::Uv_map_types<VertexUVMap>::Traits                    Default_traits;
-  typedef typename CGAL::internal_np::Lookup_named_param_def<
-            CGAL::internal_np::geom_traits_t, CGAL_NP_CLASS, Default_traits>::type  Traits;
-  typedef typename Traits::Point_2                                                Point_2;
-  static_assert(std::is_same<Point_2, typename internal::Uv_map_types<VertexUVMap>::Point_2>::value,
-                "the geom_traits' Point_2 must be the value type of the uv map");
-
-  const Traits traits = choose_parameter<Traits>(get_parameter(np, CGAL::internal_np::geom_traits));
-  const Border_shape shape = choose_parameter(get_parameter(np, internal_np::border_shape), Border_shape::FIXED);
-  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
-  const std::function<bool(double)> callback =
-    choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
-  const double max_seconds = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
-                                              std::numeric_limits<double>::infinity());
-  if(!(max_seconds >= 0)) return ERROR_WRONG_PARAMETER;
-
-  internal::Indexed_disk<TriangleMesh> disk;
-  Error_code status = internal::make_indexed_disk(tm, bhd, disk);
-  if(status != OK) return status;
-  const std::size_t nv = disk.number_of_vertices(), nb = disk.border.size();
-  if(nb < 3) return ERROR_BORDER_TOO_SHORT;
-
-  std::vector<Point_2> bpos;
-  status = internal::place_border(disk, uvm, vpm, traits, np, bpos);
-  if(status != OK) return status;
-  std::vector<Point_2> pos(nv);
-  for(std::size_t k = 0; k < nb; ++k) pos[disk.border[k]] = bpos[k];
-
-  if(shape == Border_shape::FIXED)
-  {
-    // a weakly convex border: an interior edge along one of its sides would be flattened
-    std::vector<std::pair<std::size_t, std::size_t> > chords;
-    internal::flat_chords(disk, bpos, traits.exact_orientation_2_object(), chords);
-    if(!chords.empty()) return ERROR_DEGENERATE_CHORD;
-  }
-
-  internal::Progress_budget budget(callback, max_seconds);
-  status = internal::tutte_interior(disk, vpm, np, budget, pos);
-  if(status != OK) return status;
-
-  // written only now: on every error the uv map is left as it was
-  for(std::size_t i = 0; i < nv; ++i)
-    if(!disk.on_border[i] || shape != Border_shape::FIXED)
-      put(uvm, disk.vertices[i], pos[i]);
-  return OK;
+  return internal::tutte_embedding_impl(tm, bhd, uvm, np);
 }
 
 } // namespace Progressive_embedding

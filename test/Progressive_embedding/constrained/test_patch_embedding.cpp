@@ -14,7 +14,7 @@
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
 #include <CGAL/Progressive_embedding/progressive_embedding.h>
 #include <CGAL/Progressive_embedding/check_embedding.h>
-#include <CGAL/Progressive_embedding/internal/constrained/patch_chords.h>
+#include <CGAL/Progressive_embedding/internal/patch_chords.h>
 
 #include "registry.h"
 #include "../test_util.h"

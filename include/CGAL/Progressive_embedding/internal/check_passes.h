@@ -14,7 +14,7 @@
 //    double evaluation is unreliable), in the map's units and scaled;
 //  - border_pass: exact count of self-intersections of the border polygon;
 //  - loop_areas / loops_pass: with several border loops (a multiply connected domain, see
-//    internal/constrained/holes_domain.h), the exact signed area of every loop, the outer loop
+//    internal/holes_domain.h), the exact signed area of every loop, the outer loop
 //    (largest absolute area), and the exact counts of self-intersections, of contacts between two
 //    loops, of holes not oriented opposite to the outer loop and of holes not inside it;
 //  - overlap_pass: exact count of overlapping pairs of faces (conservative boxes + exact tests);
@@ -26,7 +26,7 @@
 #include <CGAL/Progressive_embedding/internal/border_polygon.h>
 #include <CGAL/Progressive_embedding/internal/number_utils.h>
 #include <CGAL/Progressive_embedding/internal/symmetric_dirichlet.h>
-#include <CGAL/Progressive_embedding/internal/constrained/holes_domain.h>
+#include <CGAL/Progressive_embedding/internal/holes_domain.h>
 
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/Box_intersection_d/Box_with_info_d.h>

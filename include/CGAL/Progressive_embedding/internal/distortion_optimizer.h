@@ -15,7 +15,7 @@
 //                       contact, so that the line search sees the border closing before the exact
 //                       test refuses it (see border_barrier_terms() in internal/newton_step.h)
 //   vertex_sweep()      per-vertex projected Newton steps (border phase checked for simplicity)
-// Multiply connected maps (several border loops, see internal/constrained/holes_domain.h): the
+// Multiply connected maps (several border loops, see internal/holes_domain.h): the
 // outer loop is the border (fixed unless free_border), the hole vertices are free. A step that
 // keeps every face positive could still make a hole loop self-intersect, touch another loop, or
 // turn a hole inside out (its faces then cover a region twice around a vertex of angle 4 pi), so
@@ -30,13 +30,14 @@
 // Directions are computed in double; positions are stored and certified in the uv number type.
 
 #include <CGAL/Progressive_embedding/Error_code.h>
-#include <CGAL/Progressive_embedding/check_embedding.h>
-#include <CGAL/Progressive_embedding/check_immersion.h>
+#include <CGAL/Progressive_embedding/Optimization_statistics.h>
+#include <CGAL/Progressive_embedding/internal/check_embedding_impl.h>
+#include <CGAL/Progressive_embedding/internal/check_immersion_impl.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 #include <CGAL/Progressive_embedding/internal/border_polygon.h>
 #include <CGAL/Progressive_embedding/internal/number_utils.h>
 #include <CGAL/Progressive_embedding/internal/newton_step.h>
-#include <CGAL/Progressive_embedding/internal/constrained/holes_domain.h>
+#include <CGAL/Progressive_embedding/internal/holes_domain.h>
 #include <CGAL/Progressive_embedding/internal/symmetric_dirichlet.h>
 
 #include <CGAL/Real_timer.h>
@@ -66,47 +67,6 @@
 
 namespace CGAL {
 namespace Progressive_embedding {
-
-/// \ingroup PkgProgressiveEmbeddingEnums
-/// The energy minimized by `optimize_distortion()`.
-enum class Distortion_energy
-{
-  SYMMETRIC_DIRICHLET, ///< \f$\|J\|_F^2 + \|J^{-1}\|_F^2\f$, a barrier against degeneracy (4 for an isometry)
-  ARAP                 ///< as-rigid-as-possible, \f$\|J - R\|_F^2\f$ with \f$R\f$ the closest rotation
-};
-
-/// \ingroup PkgProgressiveEmbeddingReports
-/// What `optimize_distortion()` did, filled when a pointer to it is passed with the `optimization_statistics` named parameter.
-struct Optimization_statistics
-{
-  /// iterations performed
-  std::size_t iterations = 0;
-  /// `true` if the convergence criterion was met
-  bool converged = false;
-  /// area-weighted mean symmetric Dirichlet energy of the input, as `check_embedding()` reports it (`mean_energy_3d`)
-  double energy_before = 0;
-  /// the same for the output (with a free border both are measured against the 3D triangles scaled to the current border area)
-  double energy_after = 0;
-  /// the energy of the current map while the optimization runs: updated after each iteration, before the `callback`
-  /// is called (the optimizer's own measure, the same area-weighted mean in double)
-  double energy_current = 0;
-  /// seconds
-  double seconds = 0;
-  /// global (Newton) steps accepted
-  std::size_t global_steps = 0;
-  /// per-vertex sweeps run
-  std::size_t vertex_sweeps = 0;
-  /// certificate of the output (of the input when the input is refused); for an immersion, its energies
-  /// (its overlap test is skipped and it reports the border as not simple, by design)
-  Embedding_report report;
-  /// `true` if the input map was an immersion whose border overlaps itself (a map onto a weakly self-overlapping
-  /// polygon, e.g. from `constrained_embedding()`): it was optimized as an immersion and certified by
-  /// `check_immersion()` (`immersion_report`)
-  bool immersion = false;
-  /// the immersion certificate of the output (of the input when refused), when `immersion` is `true`
-  Immersion_report immersion_report;
-};
-
 namespace internal {
 
 // SVD-based quantities of one face's Jacobian for an isotropic energy psi(s1, s2):
@@ -218,7 +178,7 @@ public:
     nv_ = disk_.number_of_vertices(); nf_ = disk_.number_of_faces();
 
     // the input must be valid: the optimization never leaves the valid set
-    stats.report = check_embedding(tm_, uvm_, parameters::multiply_connected(holes_,
+    stats.report = check_embedding_impl(tm_, uvm_, parameters::multiply_connected(holes_,
                                                 CGAL::parameters::vertex_point_map(vpm_).geom_traits(traits_)));
     if(stats.report.status != OK) return stats.report.status;
     if(stats.report.non_finite > 0) return ERROR_NON_FINITE_COORDINATES;
@@ -310,7 +270,7 @@ public:
   Embedding_report certify() const
   {
     const auto vid = vertex_indices();
-    return check_embedding(tm_, current_uv(vid), parameters::multiply_connected(holes_,
+    return check_embedding_impl(tm_, current_uv(vid), parameters::multiply_connected(holes_,
                                            parameters::check_overlap(!immersion_,
                                              CGAL::parameters::vertex_point_map(vpm_).geom_traits(traits_))));
   }

@@ -32,12 +32,12 @@
 #include <CGAL/Progressive_embedding/Constrained_embedding_statistics.h>
 #include <CGAL/Progressive_embedding/parameters.h>
 #include <CGAL/Progressive_embedding/Progressive_embedding_traits_2.h>
-#include <CGAL/Progressive_embedding/check_embedding.h>
-#include <CGAL/Progressive_embedding/check_immersion.h>
-#include <CGAL/Progressive_embedding/triangulate_self_overlapping_polygon_2.h>
-#include <CGAL/Progressive_embedding/tutte_embedding.h>
-#include <CGAL/Progressive_embedding/embed_patch.h>
-#include <CGAL/Progressive_embedding/optimize_distortion.h>
+#include <CGAL/Progressive_embedding/internal/check_embedding_impl.h>
+#include <CGAL/Progressive_embedding/internal/check_immersion_impl.h>
+#include <CGAL/Progressive_embedding/internal/self_overlapping/triangulate_polygon_impl.h>
+#include <CGAL/Progressive_embedding/internal/tutte_embedding_impl.h>
+#include <CGAL/Progressive_embedding/internal/embed_patch_impl.h>
+#include <CGAL/Progressive_embedding/internal/optimize_distortion_impl.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 #include <CGAL/Progressive_embedding/internal/parallel_for.h>
 #include <CGAL/Progressive_embedding/internal/constrained/domain_partition.h>
@@ -46,7 +46,7 @@
 #include <CGAL/Progressive_embedding/internal/constrained/trace_overlay.h>
 #include <CGAL/Progressive_embedding/internal/constrained/trace_kinetic.h>
 #include <CGAL/Progressive_embedding/internal/constrained/guide_map.h>
-#include <CGAL/Progressive_embedding/internal/constrained/patch_chords.h>
+#include <CGAL/Progressive_embedding/internal/patch_chords.h>
 #include <CGAL/Progressive_embedding/internal/constrained/embed_patches.h>
 #include <CGAL/Progressive_embedding/internal/constrained/refinement.h>
 #include <CGAL/Progressive_embedding/internal/constrained/holes.h>
@@ -560,9 +560,9 @@ public:
   {
     sheet_triangles.clear();
     const Error_code e = turns.empty()
-      ? triangulate_self_overlapping_polygon_2(border, std::back_inserter(sheet_triangles),
+      ? triangulate_self_overlapping_polygon_2_impl(border, std::back_inserter(sheet_triangles),
                                                CGAL::parameters::geom_traits(traits))
-      : triangulate_self_overlapping_polygon_2(border, std::back_inserter(sheet_triangles),
+      : triangulate_self_overlapping_polygon_2_impl(border, std::back_inserter(sheet_triangles),
                                                parameters::rotation_indices(turns).maximum_running_time(remaining())
                                                  .geom_traits(traits));
     if(e != OK) return e;
@@ -1033,14 +1033,14 @@ public:
     work_turns = work.template add_property_map<wvertex, int>("v:pe_rotation_index", 0).first;
     if(!border_turns.empty())
       for(std::size_t k = 0; k < nb; ++k) work_turns[to_work.at(disk.vertices[disk.border[k]])] = border_turns[k];
-    stats.report_before_optimization = check_embedding(work, wuv, parameters::check_overlap(!immersed).geom_traits(traits));
+    stats.report_before_optimization = check_embedding_impl(work, wuv, parameters::check_overlap(!immersed).geom_traits(traits));
     if(immersed)
     {
       // locally injective with the border bit-exactly the given polygon (an immersion overlaps itself:
       // the embedding certificate above fails on the border, by design)
       stats.immersion = true;
       std::vector<Point_2> polygon(Bfull.begin(), Bfull.begin() + static_cast<std::ptrdiff_t>(nb));
-      stats.immersion_report = check_immersion(work, wuv, to_work.at(disk.vertices[disk.border[0]]), polygon,
+      stats.immersion_report = check_immersion_impl(work, wuv, to_work.at(disk.vertices[disk.border[0]]), polygon,
                                                parameters::vertex_rotation_index_map(work_turns).geom_traits(traits));
       stats.seconds_certification = timer.time() - t_cert;
       if(verbose) std::cerr << "[constrained_embedding] " << stats.immersion_report.summary() << std::endl;
@@ -1084,7 +1084,7 @@ public:
         }
       }
       for(wface f : hole_faces) CGAL::Euler::remove_face(halfedge(f, work), work);
-      stats.report_before_optimization = check_embedding(work, wuv, parameters::multiply_connected(true).geom_traits(traits));
+      stats.report_before_optimization = check_embedding_impl(work, wuv, parameters::multiply_connected(true).geom_traits(traits));
       if(!stats.report_before_optimization.is_valid())
       {
         stats.report = stats.report_before_optimization;
@@ -1107,7 +1107,7 @@ public:
       stopped = true;
       return false;
     };
-    const Error_code e = optimize_distortion<ConcurrencyTag>(work, wuv, parameters::optimization_statistics(&os,
+    const Error_code e = optimize_distortion_impl<ConcurrencyTag>(work, wuv, parameters::optimization_statistics(&os,
                            parameters::constrained_vertices(constrained_nodes).maximum_running_time(seconds)
                            .geom_traits(traits).callback(each_iteration)));
     stats.seconds_optimization += timer.time() - t_opt;
@@ -1122,12 +1122,12 @@ public:
       stats.optimized = true;
       stats.optimization_status = run_optimization(stats.optimization, (std::min)(remaining(), optimization_seconds));
       // OK / ERROR_BUDGET_EXHAUSTED: a certified, improved map was written; otherwise nothing was
-      stats.report = check_embedding(work, wuv, parameters::multiply_connected(holes, parameters::check_overlap(!immersed).geom_traits(traits)));
+      stats.report = check_embedding_impl(work, wuv, parameters::multiply_connected(holes, parameters::check_overlap(!immersed).geom_traits(traits)));
       if(immersed)
       {
         // the optimizer keeps immersions (border fixed): certified again here, with the border polygon
         std::vector<Point_2> polygon(Bfull.begin(), Bfull.begin() + static_cast<std::ptrdiff_t>(nb));
-        stats.immersion_report = check_immersion(work, wuv, to_work.at(disk.vertices[disk.border[0]]), polygon,
+        stats.immersion_report = check_immersion_impl(work, wuv, to_work.at(disk.vertices[disk.border[0]]), polygon,
                                                  parameters::vertex_rotation_index_map(work_turns).geom_traits(traits));
         if(!stats.immersion_report.is_immersion() || stats.immersion_report.border_mismatches != 0)
           return ERROR_INVALID_EMBEDDING;
@@ -1177,7 +1177,7 @@ public:
       }
       stats.steiner_vertices_removed = removals.size();
       // every face of every fan was tested positive, exactly; the whole map is certified again
-      stats.report = check_embedding(work, wuv, parameters::multiply_connected(holes).geom_traits(traits));
+      stats.report = check_embedding_impl(work, wuv, parameters::multiply_connected(holes).geom_traits(traits));
       stats.seconds_coarsening = timer.time() - t_coarsen;
       if(verbose)
         std::cerr << "[constrained_embedding] coarsening: " << removals.size() << " of " << steiner.size()
@@ -1191,7 +1191,7 @@ public:
         stats.reoptimized = true;
         const Error_code rec = run_optimization(stats.reoptimization, left);
         if(rec != OK && rec != ERROR_BUDGET_EXHAUSTED && stats.optimization_status == OK) stats.optimization_status = rec;
-        stats.report = check_embedding(work, wuv, parameters::multiply_connected(holes).geom_traits(traits));
+        stats.report = check_embedding_impl(work, wuv, parameters::multiply_connected(holes).geom_traits(traits));
         if(!stats.report.is_valid()) return ERROR_INVALID_EMBEDDING;
       }
     }

@@ -29,7 +29,7 @@
 
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/Progressive_embedding_statistics.h>
-#include <CGAL/Progressive_embedding/embed_patch.h>
+#include <CGAL/Progressive_embedding/internal/embed_patch_impl.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 #include <CGAL/Progressive_embedding/internal/number_utils.h>
 

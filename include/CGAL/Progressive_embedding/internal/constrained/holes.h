@@ -68,10 +68,10 @@
 
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/parameters.h>
-#include <CGAL/Progressive_embedding/check_embedding.h>
-#include <CGAL/Progressive_embedding/tutte_embedding.h>
-#include <CGAL/Progressive_embedding/progressive_embedding.h>
-#include <CGAL/Progressive_embedding/internal/constrained/holes_domain.h>
+#include <CGAL/Progressive_embedding/internal/check_embedding_impl.h>
+#include <CGAL/Progressive_embedding/internal/tutte_embedding_impl.h>
+#include <CGAL/Progressive_embedding/internal/progressive_embedding_impl.h>
+#include <CGAL/Progressive_embedding/internal/holes_domain.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
@@ -278,14 +278,14 @@ Error_code embed_with_holes(const TriangleMesh& tm, typename boost::graph_traits
   Filled_holes<Work> rec;
   ec = fill_holes(work, wouter, get(CGAL::vertex_point, work), rec);
   if(ec != OK) return ec;
-  ec = tutte_embedding(work, wouter, wuv, CGAL::Progressive_embedding::parameters::border_shape(shape,
+  ec = tutte_embedding_impl(work, wouter, wuv, CGAL::Progressive_embedding::parameters::border_shape(shape,
                          CGAL::Progressive_embedding::parameters::weights(wts,
                          CGAL::Progressive_embedding::parameters::triangle_corner_points(corners,
                          CGAL::parameters::maximum_running_time(max_seconds)))));
   if(ec != OK) return ec;
-  if(!check_embedding(work, wuv).is_valid())
+  if(!check_embedding_impl(work, wuv).is_valid())
   {
-    ec = progressive_embedding(work, wuv, CGAL::parameters::maximum_running_time(max_seconds));
+    ec = progressive_embedding_impl(work, wuv, CGAL::parameters::maximum_running_time(max_seconds));
     if(ec != OK) return ec;
   }
   // the holes opened: the uv of the original vertices, certified on the caller's mesh before writing
@@ -293,7 +293,7 @@ Error_code embed_with_holes(const TriangleMesh& tm, typename boost::graph_traits
   for(const auto& vv : v2v) put(wv, vv.first, vv.second);
   auto result = boost::make_function_property_map<vertex_descriptor, Point_2>(
     [&](vertex_descriptor v) -> Point_2 { return get(wuv, get(wv, v)); });
-  const Embedding_report r = check_embedding(tm, result, CGAL::Progressive_embedding::parameters::multiply_connected(true,
+  const Embedding_report r = check_embedding_impl(tm, result, CGAL::Progressive_embedding::parameters::multiply_connected(true,
                                                            CGAL::parameters::vertex_point_map(vpm)));
   if(report) *report = r;
   if(!r.is_valid()) return ERROR_INVALID_EMBEDDING;

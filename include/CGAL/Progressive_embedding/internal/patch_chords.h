@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 // Author(s) : Progressive_embedding contributors
 
-#ifndef CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CONSTRAINED_PATCH_CHORDS_H
-#define CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CONSTRAINED_PATCH_CHORDS_H
+#ifndef CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_PATCH_CHORDS_H
+#define CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_PATCH_CHORDS_H
 
 // Flat chords of a disk (or patch) whose border is a weakly convex polygon: interior edges
 // whose two endpoints are border vertices on one straight side of the polygon (corners
@@ -193,4 +193,4 @@ Error_code find_flat_chords(const TriangleMesh& tm, const FaceRange& patch_faces
 } // namespace Progressive_embedding
 } // namespace CGAL
 
-#endif // CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CONSTRAINED_PATCH_CHORDS_H
+#endif // CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_PATCH_CHORDS_H

@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 // Author(s) : Progressive_embedding contributors
 
-#ifndef CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CONSTRAINED_HOLES_DOMAIN_H
-#define CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CONSTRAINED_HOLES_DOMAIN_H
+#ifndef CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_HOLES_DOMAIN_H
+#define CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_HOLES_DOMAIN_H
 
 // Multiply connected domains: a connected genus-0 triangle mesh with k >= 1 border loops.
 //
@@ -292,4 +292,4 @@ long winding_number(const std::vector<Point_2>& P, const std::vector<std::size_t
 } // namespace Progressive_embedding
 } // namespace CGAL
 
-#endif // CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CONSTRAINED_HOLES_DOMAIN_H
+#endif // CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_HOLES_DOMAIN_H

@@ -12,10 +12,13 @@
 //
 // Usage: test_progressive_embedding DATA_DIR   (DATA_DIR contains libcgal-demo's meshes/)
 
+// counts the indexings of a mesh (internal::indexing_count()): the pipelines index once
+#define CGAL_PROGRESSIVE_EMBEDDING_COUNT_INDEXING
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
 #include <CGAL/Progressive_embedding/check_embedding.h>
 #include <CGAL/Progressive_embedding/progressive_embedding.h>
 #include <CGAL/Progressive_embedding/certified_pipeline.h>
+#include <CGAL/Progressive_embedding/optimize_distortion.h>
 #include <CGAL/Progressive_embedding/internal/disk_generators.h>
 #include <CGAL/Progressive_embedding/internal/tutte_failure_protocol.h>
 
@@ -673,7 +676,9 @@ int test_pipeline()
     std::map<vertex_descriptor<Mesh>, Epick::Point_2> before;
     for(auto v : vertices(m)) before[v] = get(uv, v);
     PE::Pipeline_statistics ps;
+    PE::internal::indexing_count() = 0;
     const PE::Error_code ec = PE::repair_and_optimize(m, uv, PE::parameters::optimization_policy(policy).pipeline_statistics(&ps));
+    CHECK(PE::internal::indexing_count() == 1, "the stages share one indexing of the mesh, not " << PE::internal::indexing_count());
     std::cout << "  broken map, policy " << int(policy) << ": " << PE::get_error_name(ec) << ", repaired " << ps.repaired
               << ", optimized " << ps.optimized << ", " << ps.report.summary() << std::endl;
     CHECK(ec == PE::OK && !ps.input_report.is_valid() && ps.repaired && ps.repair.collapses > 0, "the broken map is repaired");
@@ -708,14 +713,44 @@ int test_pipeline()
     CHECK(PE::repair_and_optimize(g, uvg, PE::parameters::pipeline_statistics(&ps).optimization_policy(Policy::ALWAYS)) == PE::OK
           && !ps.repaired && ps.optimized && ps.report.is_valid(), "ALWAYS optimizes a valid map");
   }
-  // parameterize_certified: Tutte, then the policy
+  // parameterize_certified: Tutte, then the policy, on one indexing of the mesh; from every border halfedge the
+  // map of the stages run one by one (each indexing the mesh itself), bit for bit
   {
-    PE::Pipeline_statistics ps;
-    pin_corners<Epick>(uv, c);
-    const PE::Error_code ec = PE::parameterize_certified(m, null_h<Mesh>(), uv,
-                                PE::parameters::border_shape(PE::Border_shape::FIXED).pipeline_statistics(&ps));
-    CHECK(ec == PE::OK && !ps.input_report.is_valid() && ps.repaired && ps.optimized && ps.report.is_valid()
-          && ps.seconds_tutte > 0 && ps.seconds_total >= ps.seconds_tutte, "parameterize_certified: Tutte, repair, optimization");
+    std::size_t starts = 0;
+    for(auto bh : halfedges(m))
+    {
+      if(!CGAL::is_border(bh, m) || ++starts > 3) continue;
+      PE::Pipeline_statistics ps;
+      pin_corners<Epick>(uv, c);
+      PE::internal::indexing_count() = 0;
+      const PE::Error_code ec = PE::parameterize_certified(m, bh, uv,
+                                  PE::parameters::border_shape(PE::Border_shape::FIXED).pipeline_statistics(&ps));
+      CHECK(ec == PE::OK && !ps.input_report.is_valid() && ps.repaired && ps.optimized && ps.report.is_valid()
+            && ps.seconds_tutte > 0 && ps.seconds_total >= ps.seconds_tutte, "parameterize_certified: Tutte, repair, optimization");
+      CHECK(PE::internal::indexing_count() == 1, "parameterize_certified indexes the mesh once, not " << PE::internal::indexing_count());
+      auto uv2 = make_uv_map(m, Epick::Point_2());
+      pin_corners<Epick>(uv2, c);
+      CHECK(PE::tutte_embedding(m, bh, uv2, PE::parameters::border_shape(PE::Border_shape::FIXED)) == PE::OK
+            && PE::check_embedding(m, uv2).flipped > 0
+            && PE::progressive_embedding(m, uv2, PE::parameters::minimum_area_ratio(1e-3)) == PE::OK
+            && PE::optimize_distortion(m, uv2) == PE::OK, "the stages one by one");
+      bool same = true;
+      for(auto v : vertices(m)) same = same && get(uv, v) == get(uv2, v);
+      CHECK(same, "parameterize_certified from a border halfedge: the map of the stages one by one");
+    }
+    // the border of a disk indexed from any border halfedge, started as make_indexed_disk() starts it by default
+    PE::internal::Indexed_disk<Mesh> d0, d;
+    CHECK(PE::internal::make_indexed_disk(m, null_h<Mesh>(), d0) == PE::OK, "indexed");
+    std::size_t rotated = 0;
+    for(auto bh : halfedges(m))
+    {
+      if(!CGAL::is_border(bh, m)) continue;
+      CHECK(PE::internal::make_indexed_disk(m, bh, d) == PE::OK, "indexed from a border halfedge");
+      rotated += (d.border != d0.border);
+      PE::internal::start_border_as_default(m, d);
+      CHECK(d.border == d0.border && d.faces == d0.faces && d.vertices == d0.vertices, "start_border_as_default");
+    }
+    CHECK(rotated > 0, "some border halfedges start the border elsewhere");
   }
   // budget and errors: the uv map unchanged
   {

@@ -118,7 +118,10 @@ public:
     m_stats = Progressive_embedding_statistics();
     SMP::Error_code status = m_border.parameterize(mesh, bhd, uvmap, vimap, vpmap);
     if(status != SMP::OK) return status;
-    Error_code ec = solve_tutte(mesh, bhd, uvmap);
+    // one indexed disk for every stage
+    internal::Indexed_disk<TriangleMesh> disk;
+    const bool indexed = internal::make_indexed_disk(mesh, bhd, disk) == OK;
+    Error_code ec = solve_tutte(mesh, bhd, uvmap, indexed ? &disk : nullptr);
     if(ec == ERROR_NOT_A_DISK && bhd != boost::graph_traits<TriangleMesh>::null_halfedge())
       return parameterize_component(mesh, bhd, uvmap, vimap, vpmap);
     if(ec == ERROR_NON_CONVEX_BORDER || ec == ERROR_DEGENERATE_BORDER) return SMP::ERROR_NON_CONVEX_BORDER;
@@ -130,7 +133,9 @@ public:
     // the package's repair-and-optimize policy (repair_and_optimize()); an optimization that fails leaves the
     // certified repaired map, which is returned
     Pipeline_statistics ps;
-    ec = repair_and_optimize(mesh, uvmap, parameters::optimization_policy(policy(m_optimization)).pipeline_statistics(&ps));
+    internal::start_border_as_default(mesh, disk);
+    ec = internal::repair_and_optimize_impl(mesh, uvmap, parameters::optimization_policy(policy(m_optimization)).pipeline_statistics(&ps),
+                                            &disk);
     m_repaired = ps.repaired;
     if(ps.repaired) m_stats = ps.repair;
     else m_stats.report = ps.input_report;
@@ -142,10 +147,12 @@ public:
 
 private:
   template <typename VertexUVmap>
-  Error_code solve_tutte(const TriangleMesh& mesh, halfedge_descriptor bhd, VertexUVmap uvmap)
+  Error_code solve_tutte(const TriangleMesh& mesh, halfedge_descriptor bhd, VertexUVmap uvmap,
+                         const internal::Indexed_disk<TriangleMesh>* disk)
   {
-    if constexpr(std::is_same<Solver_traits, CGAL::Default>::value) return tutte_embedding(mesh, bhd, uvmap);
-    else return tutte_embedding(mesh, bhd, uvmap, CGAL::parameters::sparse_linear_solver(m_solver));
+    if constexpr(std::is_same<Solver_traits, CGAL::Default>::value)
+      return internal::tutte_embedding_impl(mesh, bhd, uvmap, CGAL::parameters::default_values(), disk);
+    else return internal::tutte_embedding_impl(mesh, bhd, uvmap, CGAL::parameters::sparse_linear_solver(m_solver), disk);
   }
 
   // CGAL's barycentric mapping with the same border parameterizer and, when one is given, the same solver

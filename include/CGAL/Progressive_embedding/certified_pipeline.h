@@ -15,6 +15,7 @@
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
 #include <CGAL/Progressive_embedding/progressive_embedding.h>
 #include <CGAL/Progressive_embedding/optimize_distortion.h>
+#include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
@@ -135,6 +136,83 @@ inline bool tolerated_optimization_status(Error_code ec)
   return ec == OK || ec == ERROR_BUDGET_EXHAUSTED || ec == ERROR_NO_FREE_VERTEX || ec == ERROR_DEGENERATE_3D_FACE;
 }
 
+// the body of repair_and_optimize() (see its documentation there); `given`: the disk already indexed from `tm`
+// (with the default border start, see start_border_as_default()) by the caller, or null
+template <typename TriangleMesh, typename VertexUVMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Error_code repair_and_optimize_impl(const TriangleMesh& tm, VertexUVMap uvm, const CGAL_NP_CLASS& np,
+                                   const Indexed_disk<TriangleMesh>* given = nullptr)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef std::function<bool(Pipeline_stage, double)> Stage_callback;
+
+  CGAL::Real_timer timer;
+  timer.start();
+  Pipeline_statistics local;
+  Pipeline_statistics* out = choose_parameter(get_parameter(np, internal_np::pipeline_statistics),
+                                              static_cast<Pipeline_statistics*>(nullptr));
+  Pipeline_statistics& s = out ? *out : local;
+  s = Pipeline_statistics();
+  auto finish = [&](Error_code ec) { s.seconds_total = timer.time(); return ec; };
+
+  const Optimization_policy policy = choose_parameter(get_parameter(np, internal_np::optimization_policy),
+                                                      Optimization_policy::WHEN_REPAIRED);
+  const Stage_callback callback = choose_parameter(get_parameter(np, internal_np::stage_callback), Stage_callback());
+  const double max_seconds = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
+                                              std::numeric_limits<double>::infinity());
+  if(!(max_seconds >= 0)) return finish(ERROR_WRONG_PARAMETER);
+  auto remaining = [&]() { const double r = max_seconds - timer.time(); return r > 0 ? r : 0.; };
+  auto stage = [&](Pipeline_stage st) {
+    return std::function<bool(double)>(callback ? [callback, st](double x) { return callback(st, x); }
+                                                : std::function<bool(double)>());
+  };
+
+  // every stage decides its signs with the caller's traits and reads the caller's 3D positions
+  typedef typename Check_traits<VertexUVMap, CGAL_NP_CLASS>::type Traits;
+  const Traits traits = choose_parameter<Traits>(get_parameter(np, CGAL::internal_np::geom_traits));
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+  const auto common = CGAL::parameters::geom_traits(traits).vertex_point_map(vpm);
+
+  // the stages share one indexed disk: the mesh is indexed once
+  Indexed_disk<TriangleMesh> own;
+  const Indexed_disk<TriangleMesh>* disk = given;
+  if(!disk && make_indexed_disk(tm, boost::graph_traits<TriangleMesh>::null_halfedge(), own) == OK) disk = &own;
+  s.input_report = check_embedding_impl(tm, uvm, common, disk);
+  s.report = s.input_report;
+  if(s.input_report.status != OK) return finish(s.input_report.status);
+  if(s.input_report.non_finite > 0) return finish(ERROR_NON_FINITE_COORDINATES);
+
+  const bool invalid = !s.input_report.is_valid();
+  const bool optimize = policy == Optimization_policy::ALWAYS || (invalid && policy == Optimization_policy::WHEN_REPAIRED);
+  if(invalid)
+  {
+    s.repaired = true;
+    const double ratio = pipeline_minimum_area_ratio(optimize, Traits::has_exact_constructions);
+    const Error_code ec = progressive_embedding_impl(tm, uvm,
+      parameters::minimum_area_ratio(ratio,
+      parameters::statistics(&s.repair,
+      common.callback(stage(Pipeline_stage::REPAIR)).maximum_running_time(remaining()))), disk);
+    if(ec != OK) return finish(ec);
+    s.report = s.repair.report;
+  }
+  if(optimize)
+  {
+    s.optimized = true;
+    const std::size_t iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
+                                                    std::size_t(1000));
+    const double tolerance = choose_parameter(get_parameter(np, internal_np::convergence_tolerance), 1e-5);
+    s.optimization_status = optimize_distortion_impl(tm, uvm,
+      parameters::convergence_tolerance(tolerance,
+      parameters::optimization_statistics(&s.optimization,
+      common.callback(stage(Pipeline_stage::OPTIMIZATION)).number_of_iterations(iterations)
+            .maximum_running_time(remaining()))), disk);
+    // the optimizer certifies the map it writes, and writes nothing otherwise: no second certificate
+    if(s.optimization_status == OK || s.optimization_status == ERROR_BUDGET_EXHAUSTED) s.report = s.optimization.report;
+    if(!tolerated_optimization_status(s.optimization_status)) return finish(s.optimization_status);
+  }
+  return finish(s.report.is_valid() ? OK : ERROR_INVALID_EMBEDDING);
+}
+
 } // namespace internal
 
 /// \ingroup PkgProgressiveEmbeddingMainFunctions
@@ -213,71 +291,7 @@ template <typename TriangleMesh, typename VertexUVMap, typename CGAL_NP_TEMPLATE
 Error_code repair_and_optimize(const TriangleMesh& tm, VertexUVMap uvm,
                                const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef std::function<bool(Pipeline_stage, double)> Stage_callback;
-
-  CGAL::Real_timer timer;
-  timer.start();
-  Pipeline_statistics local;
-  Pipeline_statistics* out = choose_parameter(get_parameter(np, internal_np::pipeline_statistics),
-                                              static_cast<Pipeline_statistics*>(nullptr));
-  Pipeline_statistics& s = out ? *out : local;
-  s = Pipeline_statistics();
-  auto finish = [&](Error_code ec) { s.seconds_total = timer.time(); return ec; };
-
-  const Optimization_policy policy = choose_parameter(get_parameter(np, internal_np::optimization_policy),
-                                                      Optimization_policy::WHEN_REPAIRED);
-  const Stage_callback callback = choose_parameter(get_parameter(np, internal_np::stage_callback), Stage_callback());
-  const double max_seconds = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
-                                              std::numeric_limits<double>::infinity());
-  if(!(max_seconds >= 0)) return finish(ERROR_WRONG_PARAMETER);
-  auto remaining = [&]() { const double r = max_seconds - timer.time(); return r > 0 ? r : 0.; };
-  auto stage = [&](Pipeline_stage st) {
-    return std::function<bool(double)>(callback ? [callback, st](double x) { return callback(st, x); }
-                                                : std::function<bool(double)>());
-  };
-
-  // every stage decides its signs with the caller's traits and reads the caller's 3D positions
-  typedef typename internal::Check_traits<VertexUVMap, CGAL_NP_CLASS>::type Traits;
-  const Traits traits = choose_parameter<Traits>(get_parameter(np, CGAL::internal_np::geom_traits));
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
-  const auto common = CGAL::parameters::geom_traits(traits).vertex_point_map(vpm);
-
-  s.input_report = check_embedding(tm, uvm, common);
-  s.report = s.input_report;
-  if(s.input_report.status != OK) return finish(s.input_report.status);
-  if(s.input_report.non_finite > 0) return finish(ERROR_NON_FINITE_COORDINATES);
-
-  const bool invalid = !s.input_report.is_valid();
-  const bool optimize = policy == Optimization_policy::ALWAYS || (invalid && policy == Optimization_policy::WHEN_REPAIRED);
-  if(invalid)
-  {
-    s.repaired = true;
-    const double ratio = internal::pipeline_minimum_area_ratio(optimize, Traits::has_exact_constructions);
-    const Error_code ec = progressive_embedding(tm, uvm,
-      parameters::minimum_area_ratio(ratio,
-      parameters::statistics(&s.repair,
-      common.callback(stage(Pipeline_stage::REPAIR)).maximum_running_time(remaining()))));
-    if(ec != OK) return finish(ec);
-    s.report = s.repair.report;
-  }
-  if(optimize)
-  {
-    s.optimized = true;
-    const std::size_t iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
-                                                    std::size_t(1000));
-    const double tolerance = choose_parameter(get_parameter(np, internal_np::convergence_tolerance), 1e-5);
-    s.optimization_status = optimize_distortion(tm, uvm,
-      parameters::convergence_tolerance(tolerance,
-      parameters::optimization_statistics(&s.optimization,
-      common.callback(stage(Pipeline_stage::OPTIMIZATION)).number_of_iterations(iterations)
-            .maximum_running_time(remaining()))));
-    // the optimizer certifies the map it writes, and writes nothing otherwise: no second certificate
-    if(s.optimization_status == OK || s.optimization_status == ERROR_BUDGET_EXHAUSTED) s.report = s.optimization.report;
-    if(!internal::tolerated_optimization_status(s.optimization_status)) return finish(s.optimization_status);
-  }
-  return finish(s.report.is_valid() ? OK : ERROR_INVALID_EMBEDDING);
+  return internal::repair_and_optimize_impl(tm, uvm, np);
 }
 
 /// \ingroup PkgProgressiveEmbeddingMainFunctions
@@ -308,13 +322,18 @@ Error_code parameterize_certified(const TriangleMesh& tm,
                                               static_cast<Pipeline_statistics*>(nullptr));
   Pipeline_statistics& s = out ? *out : local;
   s = Pipeline_statistics();
-  const Error_code ec = tutte_embedding(tm, bhd, uvm, np);
+  // one indexed disk for every stage
+  internal::Indexed_disk<TriangleMesh> disk;
+  const bool indexed = internal::make_indexed_disk(tm, bhd, disk) == OK;
+  const Error_code ec = internal::tutte_embedding_impl(tm, bhd, uvm, np, indexed ? &disk : nullptr);
   const double tutte_seconds = timer.time();
   if(ec != OK) { s.seconds_tutte = s.seconds_total = tutte_seconds; return ec; }
   const double max_seconds = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
                                               std::numeric_limits<double>::infinity());
   const double left = max_seconds - timer.time();
-  const Error_code er = repair_and_optimize(tm, uvm, parameters::pipeline_statistics(&s, np.maximum_running_time(left > 0 ? left : 0.)));
+  internal::start_border_as_default(tm, disk);
+  const Error_code er = internal::repair_and_optimize_impl(tm, uvm, parameters::pipeline_statistics(&s,
+                                                           np.maximum_running_time(left > 0 ? left : 0.)), &disk);
   s.seconds_tutte = tutte_seconds;
   s.seconds_total = timer.time();
   return er;

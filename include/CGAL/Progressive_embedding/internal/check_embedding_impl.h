@@ -28,10 +28,12 @@ namespace CGAL {
 namespace Progressive_embedding {
 namespace internal {
 
-// the body of check_embedding() (see its documentation there)
+// the body of check_embedding() (see its documentation there); `given`: the disk already indexed from
+// `tm` by the caller (a pipeline indexes once), or null; not used with `multiply_connected`
 template <typename TriangleMesh, typename VertexUVMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Embedding_report check_embedding_impl(const TriangleMesh& tm, VertexUVMap uvm,
-                                      const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+                                      const CGAL_NP_CLASS& np = CGAL::parameters::default_values(),
+                                      const Indexed_disk<TriangleMesh>* given = nullptr)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -49,10 +51,15 @@ Embedding_report check_embedding_impl(const TriangleMesh& tm, VertexUVMap uvm,
   const bool holes = choose_parameter(get_parameter(np, internal_np::multiply_connected), false);
 
   internal::Indexed_domain<TriangleMesh> domain;
-  internal::Indexed_disk<TriangleMesh>& disk = domain.disk;
-  if(!holes)
+  const internal::Indexed_disk<TriangleMesh>* indexed = &domain.disk;
+  if(!holes && given)
   {
-    r.status = internal::make_indexed_disk(tm, boost::graph_traits<TriangleMesh>::null_halfedge(), disk);
+    indexed = given;
+    r.border_cycles = 1;
+  }
+  else if(!holes)
+  {
+    r.status = internal::make_indexed_disk(tm, boost::graph_traits<TriangleMesh>::null_halfedge(), domain.disk);
     if(r.status == ERROR_NOT_A_DISK)
     {
       // say how many border cycles there are (e.g. several: `multiply_connected` would check it)
@@ -68,6 +75,7 @@ Embedding_report check_embedding_impl(const TriangleMesh& tm, VertexUVMap uvm,
     r.border_cycles = domain.number_of_loops();
     if(r.status != OK) return r;
   }
+  const internal::Indexed_disk<TriangleMesh>& disk = *indexed;
   r.faces = disk.number_of_faces(); r.vertices = disk.number_of_vertices();
 
   internal::Uv_samples<Point_2> samples;

@@ -161,10 +161,14 @@ public:
       disk_(domain_.disk) {}
 
   // ---- set-up ------------------------------------------------------------------------------
-  Error_code initialize(const std::vector<vertex_descriptor>& constrained, Optimization_statistics& stats)
+  // `given`: the disk already indexed from the mesh (a pipeline indexes once), or null
+  Error_code initialize(const std::vector<vertex_descriptor>& constrained, Optimization_statistics& stats,
+                        const Indexed_disk<TriangleMesh>* given = nullptr)
   {
     if(!(s_.tolerance >= 0) || !(s_.time_budget >= 0)) return ERROR_WRONG_PARAMETER;
-    Error_code ec = make_indexed_disk(tm_, GT::null_halfedge(), disk_);
+    Error_code ec = OK;
+    if(given) disk_ = *given;
+    else ec = make_indexed_disk(tm_, GT::null_halfedge(), disk_);
     if(ec == ERROR_NOT_A_DISK)
     {
       // several border loops: a multiply connected domain (genus 0 and connected, or refused)
@@ -179,7 +183,8 @@ public:
 
     // the input must be valid: the optimization never leaves the valid set
     stats.report = check_embedding_impl(tm_, uvm_, parameters::multiply_connected(holes_,
-                                                CGAL::parameters::vertex_point_map(vpm_).geom_traits(traits_)));
+                                                CGAL::parameters::vertex_point_map(vpm_).geom_traits(traits_)),
+                                        holes_ ? nullptr : &disk_);
     if(stats.report.status != OK) return stats.report.status;
     if(stats.report.non_finite > 0) return ERROR_NON_FINITE_COORDINATES;
     if(!stats.report.is_valid())
@@ -272,7 +277,8 @@ public:
     const auto vid = vertex_indices();
     return check_embedding_impl(tm_, current_uv(vid), parameters::multiply_connected(holes_,
                                            parameters::check_overlap(!immersion_,
-                                             CGAL::parameters::vertex_point_map(vpm_).geom_traits(traits_))));
+                                             CGAL::parameters::vertex_point_map(vpm_).geom_traits(traits_))),
+                                holes_ ? nullptr : &disk_);
   }
 
   bool immersion() const { return immersion_; }

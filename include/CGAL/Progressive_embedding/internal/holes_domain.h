@@ -76,6 +76,7 @@ Error_code make_indexed_domain(const TriangleMesh& tm, Indexed_domain<TriangleMe
   typedef typename GT::halfedge_descriptor                   halfedge_descriptor;
   typedef typename GT::face_descriptor                       face_descriptor;
 
+  CGAL_PROGRESSIVE_EMBEDDING_COUNT_ONE_INDEXING();
   d = Indexed_domain<TriangleMesh>();
   Indexed_disk<TriangleMesh>& disk = d.disk;
   if(faces(tm).first == faces(tm).second) return ERROR_EMPTY_MESH;

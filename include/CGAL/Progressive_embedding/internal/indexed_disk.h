@@ -22,11 +22,21 @@
 #include <cstddef>
 #include <iterator>
 #include <unordered_map>
+#include <algorithm>
 #include <vector>
 
 namespace CGAL {
 namespace Progressive_embedding {
 namespace internal {
+
+#ifdef CGAL_PROGRESSIVE_EMBEDDING_COUNT_INDEXING
+// for the tests only: how many times a mesh was indexed (a pipeline indexes its mesh once and hands the
+// indexed disk from stage to stage)
+inline std::size_t& indexing_count() { static std::size_t n = 0; return n; }
+#define CGAL_PROGRESSIVE_EMBEDDING_COUNT_ONE_INDEXING() (++::CGAL::Progressive_embedding::internal::indexing_count())
+#else
+#define CGAL_PROGRESSIVE_EMBEDDING_COUNT_ONE_INDEXING()
+#endif
 
 template <class TriangleMesh>
 struct Indexed_disk
@@ -59,6 +69,7 @@ Error_code make_indexed_disk(const TriangleMesh& tm,
   typedef typename GT::halfedge_descriptor                   halfedge_descriptor;
   typedef typename GT::face_descriptor                       face_descriptor;
 
+  CGAL_PROGRESSIVE_EMBEDDING_COUNT_ONE_INDEXING();
   disk = Indexed_disk<TriangleMesh>();
   if(faces(tm).first == faces(tm).second)
     return ERROR_EMPTY_MESH;
@@ -333,6 +344,26 @@ Error_code make_indexed_patch(const TriangleMesh& tm, const FaceRange& patch_fac
   if(static_cast<long>(nv) - static_cast<long>(twice_edges / 2) + static_cast<long>(nf) != 1)
     return ERROR_NOT_A_DISK;
   return OK;
+}
+
+// Rotates `disk.border` (indexed from `tm` with a chosen border halfedge) to start where
+// make_indexed_disk(tm, null_halfedge()) starts it: a pipeline indexes its mesh once, with the border
+// halfedge its first stage was given, and its later stages see the border as when they index it themselves.
+template <class TriangleMesh>
+void start_border_as_default(const TriangleMesh& tm, Indexed_disk<TriangleMesh>& disk)
+{
+  for(auto h : halfedges(tm))
+  {
+    if(!is_border(h, tm)) continue;
+    const auto v = target(h, tm); // the last vertex of the default border
+    for(std::size_t k = 0; k < disk.border.size(); ++k)
+      if(disk.vertices[disk.border[k]] == v)
+      {
+        std::rotate(disk.border.begin(), disk.border.begin() + static_cast<std::ptrdiff_t>(k) + 1, disk.border.end());
+        return;
+      }
+    return;
+  }
 }
 
 } // namespace internal

@@ -27,11 +27,13 @@ namespace CGAL {
 namespace Progressive_embedding {
 namespace internal {
 
-// the body of optimize_distortion() (see its documentation there)
+// the body of optimize_distortion() (see its documentation there); `given`: the disk already indexed from
+// `tm` by the caller (a pipeline indexes once), or null
 template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename TriangleMesh, typename VertexUVMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Error_code optimize_distortion_impl(const TriangleMesh& tm, VertexUVMap uvm,
-                                    const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+                                    const CGAL_NP_CLASS& np = CGAL::parameters::default_values(),
+                                    const Indexed_disk<TriangleMesh>* given = nullptr)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -59,7 +61,7 @@ Error_code optimize_distortion_impl(const TriangleMesh& tm, VertexUVMap uvm,
     choose_parameter(get_parameter(np, internal_np::constrained_vertices), std::vector<vertex_descriptor>());
 
   Optimizer optimizer(tm, uvm, vpm, settings, traits);
-  Error_code ec = optimizer.initialize(constrained, stats);
+  Error_code ec = optimizer.initialize(constrained, stats, given);
   stats.energy_before = stats.report.mean_energy_3d;
   if(ec != OK) return ec;                                   // nothing written
   const Error_code result = optimizer.run(stats);

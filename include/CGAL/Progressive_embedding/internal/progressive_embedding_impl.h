@@ -129,11 +129,13 @@ Error_code repair_disk_map(const Indexed_disk<TriangleMesh>& disk, const std::ve
   return OK;
 }
 
-// the body of progressive_embedding() (see its documentation there)
+// the body of progressive_embedding() (see its documentation there); `given`: the disk already indexed from
+// `tm` by the caller (a pipeline indexes once), or null
 template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename TriangleMesh, typename VertexUVMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Error_code progressive_embedding_impl(const TriangleMesh& tm, VertexUVMap uvm,
-                                      const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+                                      const CGAL_NP_CLASS& np = CGAL::parameters::default_values(),
+                                      const Indexed_disk<TriangleMesh>* given = nullptr)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -153,9 +155,10 @@ Error_code progressive_embedding_impl(const TriangleMesh& tm, VertexUVMap uvm,
   Error_code ec = internal::progressive_embedder_options<Traits>(np, opt);
   if(ec != OK) return ec;
 
-  internal::Indexed_disk<TriangleMesh> disk;
-  ec = internal::make_indexed_disk(tm, GT::null_halfedge(), disk);
+  internal::Indexed_disk<TriangleMesh> own;
+  ec = given ? OK : internal::make_indexed_disk(tm, GT::null_halfedge(), own);
   if(ec != OK) return ec;
+  const internal::Indexed_disk<TriangleMesh>& disk = given ? *given : own;
   const std::size_t nv = disk.number_of_vertices(), nb = disk.border.size();
   if(nb < 3) return ERROR_BORDER_TOO_SHORT;
 
@@ -182,8 +185,6 @@ Error_code progressive_embedding_impl(const TriangleMesh& tm, VertexUVMap uvm,
   }
   ec = internal::repair_disk_map(disk, B, orientation, traits, opt, P, stats);
   if(ec != OK) { stats.seconds_total = timer.time(); return ec; }
-  std::vector<std::array<std::size_t, 3> >().swap(disk.faces); // not needed any more
-
   // write back (interior only: the border is untouched), keeping the old values in P for a
   // rollback, and certify what was written
   for(std::size_t i = 0; i < nv; ++i)
@@ -196,7 +197,7 @@ Error_code progressive_embedding_impl(const TriangleMesh& tm, VertexUVMap uvm,
   const double t_certificate = timer.time();
   stats.report = check_embedding_impl(tm, uvm, CGAL::parameters::vertex_point_map(
                    choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm)))
-                   .geom_traits(traits));
+                   .geom_traits(traits), &disk);
   stats.seconds_total = timer.time();
   stats.seconds_certification = stats.seconds_total - t_certificate;
   if(!stats.report.is_valid())

@@ -128,12 +128,14 @@ Error_code tutte_interior(const Indexed_disk<TriangleMesh>& disk, VPM vpm, const
   return OK;
 }
 
-// the body of tutte_embedding() (see its documentation there)
+// the body of tutte_embedding() (see its documentation there); `given`: the disk already indexed from `tm`
+// with the border cycle of `bhd` by the caller (a pipeline indexes once), or null
 template <typename TriangleMesh, typename VertexUVMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Error_code tutte_embedding_impl(const TriangleMesh& tm,
                                 typename boost::graph_traits<TriangleMesh>::halfedge_descriptor bhd,
                                 VertexUVMap uvm,
-                                const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+                                const CGAL_NP_CLASS& np = CGAL::parameters::default_values(),
+                                const Indexed_disk<TriangleMesh>* given = nullptr)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -153,9 +155,10 @@ Error_code tutte_embedding_impl(const TriangleMesh& tm,
                                               std::numeric_limits<double>::infinity());
   if(!(max_seconds >= 0)) return ERROR_WRONG_PARAMETER;
 
-  internal::Indexed_disk<TriangleMesh> disk;
-  Error_code status = internal::make_indexed_disk(tm, bhd, disk);
+  internal::Indexed_disk<TriangleMesh> own;
+  Error_code status = given ? OK : internal::make_indexed_disk(tm, bhd, own);
   if(status != OK) return status;
+  const internal::Indexed_disk<TriangleMesh>& disk = given ? *given : own;
   const std::size_t nv = disk.number_of_vertices(), nb = disk.border.size();
   if(nb < 3) return ERROR_BORDER_TOO_SHORT;
 

@@ -40,6 +40,7 @@
 #include <CGAL/Real_timer.h>
 #include <CGAL/Progressive_embedding/constrained_embedding.h>
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
+#include <CGAL/Progressive_embedding/check_embedding.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 #include <CGAL/Progressive_embedding/internal/tutte_failure_protocol.h>
 #include "process_memory.h"

@@ -43,6 +43,9 @@
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/parameters.h>
 #include <CGAL/Progressive_embedding/Constrained_embedding_statistics.h>
+// the certificates a caller runs on the map (its statistics hold their reports)
+#include <CGAL/Progressive_embedding/check_embedding.h>
+#include <CGAL/Progressive_embedding/check_immersion.h>
 #include <CGAL/Progressive_embedding/internal/constrained/constrained_embedder.h>
 
 #include <CGAL/Named_function_parameters.h>

@@ -15,6 +15,7 @@
 #include <CGAL/Progressive_embedding/constrained_embedding.h>
 #include <CGAL/Progressive_embedding/check_embedding.h>
 #include <CGAL/Progressive_embedding/check_immersion.h>
+#include <CGAL/Progressive_embedding/triangulate_self_overlapping_polygon_2.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 
 #include "registry.h"

@@ -3,7 +3,8 @@
 // Author(s) : Progressive_embedding contributors
 
 // Benchmark driver (not run by ctest): tutte_embedding() in exact rationals (CGAL::Gmpq, p-adic
-// lifting) and in MPFR (CGAL::Gmpfr at 256 bits, sparse elimination), uniform weights, on
+// lifting) and in MPFR (CGAL::Gmpfr at 256 bits, iterative refinement from a double factorization),
+// uniform weights, on
 //  - thingi:MESH:SEED  the Tutte-failure protocol on DATA_DIR/meshes/MESH.off (one face removed, its
 //                      three vertices pinned at (0,0), (1/2, sqrt(3)/2), (1,0), as `pe thingi` does);
 //  - grid:N            the N x N grid disk of `pe generate grid`, border on the circle by arc length.

@@ -17,6 +17,7 @@
 #include <CGAL/Progressive_embedding/internal/tutte_system.h>
 #include <CGAL/Progressive_embedding/internal/tutte_solve.h>
 #include <CGAL/Progressive_embedding/internal/tutte_p_adic.h>
+#include <CGAL/Progressive_embedding/internal/tutte_refinement.h>
 #include <CGAL/Progressive_embedding/internal/patch_chords.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -62,7 +63,8 @@ Error_code place_border(const Indexed_disk<TriangleMesh>& disk, VertexUVMap uvm,
 }
 
 // Solves the system with the solver the named parameters give, or the default one for FT:
-// Eigen (LDLT or LU) in floating point, the exact elimination otherwise.
+// Eigen (LDLT or LU) in floating point, p-adic lifting for Gmpq, iterative refinement from a double
+// factorization for MPFR, the elimination in FT otherwise (and when those cannot conclude).
 template <class FT, class NamedParameters>
 Error_code solve_tutte_system(Tutte_system<FT>& S, bool symmetric, const NamedParameters& np,
                               Progress_budget& budget, std::vector<FT>& xu, std::vector<FT>& xv)
@@ -85,6 +87,12 @@ Error_code solve_tutte_system(Tutte_system<FT>& S, bool symmetric, const NamedPa
   {
     // p-adic lifting, verified; rational elimination when it cannot conclude
     const Error_code ec = solve_by_p_adic_lifting(S, budget, xu, xv);
+    return (ec == ERROR_CANNOT_SOLVE_LINEAR_SYSTEM) ? solve_by_elimination(S, budget, xu, xv) : ec;
+  }
+  else if constexpr(std::is_same<FT, CGAL::Gmpfr>::value)
+  {
+    // refined from a double factorization; the elimination in MPFR when the refinement cannot conclude
+    const Error_code ec = solve_by_refinement(S, symmetric, budget, xu, xv);
     return (ec == ERROR_CANNOT_SOLVE_LINEAR_SYSTEM) ? solve_by_elimination(S, budget, xu, xv) : ec;
   }
   else

@@ -27,6 +27,7 @@
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/internal/tutte_system.h>
 #include <CGAL/Progressive_embedding/internal/number_utils.h>
+#include <CGAL/Progressive_embedding/internal/mpfr_numbers.h>
 
 #include <CGAL/Eigen_solver_traits.h>
 #include <CGAL/Eigen_matrix.h>
@@ -391,20 +392,7 @@ inline Error_code solve_by_elimination_mpfr(const Tutte_system<CGAL::Gmpfr>& S, 
   const std::size_t n = S.n;
   const mpfr_prec_t prec = static_cast<mpfr_prec_t>(CGAL::Gmpfr::get_default_precision());
   const mpfr_rnd_t rnd = mpfr_get_default_rounding_mode();
-  // one block of limbs for every number: no allocation in the loops
-  struct Numbers
-  {
-    std::vector<__mpfr_struct> v;
-    std::vector<mp_limb_t> limbs;
-    Numbers(std::size_t count, mpfr_prec_t p) : v(count), limbs(count * mpfr_custom_get_size(p) / sizeof(mp_limb_t))
-    {
-      const std::size_t per = mpfr_custom_get_size(p) / sizeof(mp_limb_t);
-      for(std::size_t i = 0; i < count; ++i)
-        mpfr_custom_init_set(&v[i], MPFR_ZERO_KIND, 0, p, limbs.data() + i * per);
-    }
-    mpfr_ptr operator[](std::size_t i) { return &v[i]; }
-  };
-  Numbers uval(F.u_col.size(), prec), pivot(n, prec), bu(n, prec), bv(n, prec), w(n, prec), tmp(3, prec);
+  Mpfr_numbers uval(F.u_col.size(), prec), pivot(n, prec), bu(n, prec), bv(n, prec), w(n, prec), tmp(3, prec);
   mpfr_ptr m = tmp[0], t = tmp[1];
   double done = 0;
   for(std::size_t k = 0; k < n; ++k)
@@ -447,9 +435,8 @@ inline Error_code solve_by_elimination_mpfr(const Tutte_system<CGAL::Gmpfr>& S, 
   xu.resize(n); xv.resize(n);
   for(std::size_t k = 0; k < n; ++k)
   {
-    CGAL::Gmpfr a(0, static_cast<CGAL::Gmpfr::Precision_type>(prec)), b(0, static_cast<CGAL::Gmpfr::Precision_type>(prec));
-    mpfr_set(a.fr(), bu[k], rnd); mpfr_set(b.fr(), bv[k], rnd);
-    xu[F.order[k]] = a; xv[F.order[k]] = b;
+    xu[F.order[k]] = to_gmpfr(bu[k], prec);
+    xv[F.order[k]] = to_gmpfr(bv[k], prec);
   }
   return budget.report(1) ? OK : ERROR_BUDGET_EXHAUSTED;
 }

@@ -29,10 +29,15 @@
 #include <CGAL/Progressive_embedding/certified_pipeline.h>
 #include <CGAL/Progressive_embedding/distortion.h>
 #include <CGAL/Progressive_embedding/constrained_embedding.h>
+#include <CGAL/Progressive_embedding/cross_parameterization.h>
 
+#include <boost/property_map/property_map.hpp>
+
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <exception>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -119,9 +124,9 @@ std::vector<double> real_matrix(const py::handle& obj, const char* name, py::ssi
   return std::vector<double>(d.data(), d.data() + d.size());
 }
 
-// an integer array (any integer dtype) of the given dimension, each value in [0, bound)
-std::vector<std::size_t> index_array(const py::handle& obj, const char* name, int ndim, py::ssize_t cols,
-                                     std::size_t bound, std::size_t& rows)
+// an integer array (any integer dtype) of the given dimension, as int64 (the range is the caller's)
+std::vector<long long> integer_values(const py::handle& obj, const char* name, int ndim, py::ssize_t cols,
+                                      std::size_t& rows)
 {
   const py::array a = as_array(obj, name);
   const char kind = a.dtype().kind();
@@ -133,29 +138,41 @@ std::vector<std::size_t> index_array(const py::handle& obj, const char* name, in
   // unsigned values beyond int64 become negative here, and are refused with the others
   const auto d = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(a);
   if(!d) throw py::value_error(std::string(name) + " cannot be converted to int64");
-  std::vector<std::size_t> out(static_cast<std::size_t>(d.size()));
+  rows = static_cast<std::size_t>(d.shape(0));
+  return std::vector<long long>(d.data(), d.data() + d.size());
+}
+
+bool in_range(long long i, std::size_t bound) { return i >= 0 && static_cast<unsigned long long>(i) < bound; }
+
+// an integer array (any integer dtype) of the given dimension, each value in [0, bound)
+std::vector<std::size_t> index_array(const py::handle& obj, const char* name, int ndim, py::ssize_t cols,
+                                     std::size_t bound, std::size_t& rows)
+{
+  const std::vector<long long> values = integer_values(obj, name, ndim, cols, rows);
+  std::vector<std::size_t> out(values.size());
   for(std::size_t k = 0; k < out.size(); ++k)
   {
-    const long long i = d.data()[k];
-    if(i < 0 || static_cast<unsigned long long>(i) >= bound)
+    const long long i = values[k];
+    if(!in_range(i, bound))
       throw py::value_error(std::string(name) + " holds the index " + std::to_string(i) + ", out of range for " +
                             std::to_string(bound) + " vertices");
     out[k] = static_cast<std::size_t>(i);
   }
-  rows = static_cast<std::size_t>(d.shape(0));
   return out;
 }
 
-Disk_input read_disk(const py::handle& V, const py::handle& F)
+// `vname`, `fname`: the names of the arguments in the messages (two meshes: V_a, F_a, V_b, F_b)
+Disk_input read_disk(const py::handle& V, const py::handle& F, const std::string& vname = "V",
+                     const std::string& fname = "F")
 {
   Disk_input in;
-  in.V = real_matrix(V, "V", 3, in.n);
-  in.F = index_array(F, "F", 2, 3, in.n, in.m);
+  in.V = real_matrix(V, vname.c_str(), 3, in.n);
+  in.F = index_array(F, fname.c_str(), 2, 3, in.n, in.m);
   // the 3D points enter the border lengths and the distortion: NaN would go through silently
   for(std::size_t i = 0; i < in.n; ++i)
     for(int c = 0; c < 3; ++c)
       if(!std::isfinite(in.V[3 * i + c]))
-        throw Pe_failure(PE::ERROR_NON_FINITE_COORDINATES, "V[" + std::to_string(i) + "] is not finite");
+        throw Pe_failure(PE::ERROR_NON_FINITE_COORDINATES, vname + "[" + std::to_string(i) + "] is not finite");
   return in;
 }
 
@@ -211,7 +228,7 @@ struct Work
   UV_map uv;
   std::vector<vertex_descriptor> vd;
 
-  explicit Work(const Disk_input& in)
+  explicit Work(const Disk_input& in, const std::string& fname = "F")
   {
     mesh.reserve(static_cast<Mesh::size_type>(in.n), static_cast<Mesh::size_type>(3 * in.m / 2 + 3),
                  static_cast<Mesh::size_type>(in.m));
@@ -224,16 +241,16 @@ struct Work
       // Euler::add_face, as the package's readers: it refuses non-manifold and misoriented faces
       const std::array<vertex_descriptor, 3> t = {{ vd[a], vd[b], vd[c] }};
       if(a == b || b == c || c == a)
-        throw Pe_failure(PE::ERROR_NON_MANIFOLD, face_name(j, a, b, c) + " repeats a vertex");
+        throw Pe_failure(PE::ERROR_NON_MANIFOLD, face_name(fname, j, a, b, c) + " repeats a vertex");
       if(CGAL::Euler::add_face(t, mesh) == Mesh::null_face())
-        throw Pe_failure(PE::ERROR_NON_MANIFOLD, face_name(j, a, b, c) + " cannot be added: non-manifold or inconsistently oriented");
+        throw Pe_failure(PE::ERROR_NON_MANIFOLD, face_name(fname, j, a, b, c) + " cannot be added: non-manifold or inconsistently oriented");
     }
     uv = mesh.add_property_map<vertex_descriptor, Point_2>("v:uv", Point_2(0, 0)).first;
   }
 
-  static std::string face_name(std::size_t j, std::size_t a, std::size_t b, std::size_t c)
+  static std::string face_name(const std::string& fname, std::size_t j, std::size_t a, std::size_t b, std::size_t c)
   {
-    return "F[" + std::to_string(j) + "] = (" + std::to_string(a) + ", " + std::to_string(b) + ", " + std::to_string(c) + ")";
+    return fname + "[" + std::to_string(j) + "] = (" + std::to_string(a) + ", " + std::to_string(b) + ", " + std::to_string(c) + ")";
   }
 
   void set_uv(const std::vector<double>& u, bool border_only = false)
@@ -622,6 +639,178 @@ py::tuple py_constrain(const py::object& V, const py::object& F, const py::objec
   return py::make_tuple(V2a, F2a, uv_array(U2), info);
 }
 
+// ---- cross-parameterization ----------------------------------------------------------------
+
+// a CGAL Face_location on `m` (a face and the coordinates of source(halfedge(f)), target(halfedge(f)),
+// target(next(halfedge(f)))) as the row of F and the coordinates in the order of that row's columns; `m`
+// was built from `in` (Work): vertex i and face j are the i-th vertex and the j-th row of F
+void location_to_row(const Mesh& m, const Disk_input& in, const PE::Cross_location<Mesh>& l, long long& face, double* b)
+{
+  const std::size_t j = static_cast<std::size_t>(l.first);
+  const Mesh::Halfedge_index h = m.halfedge(l.first);
+  const std::array<std::size_t, 3> corners = {{ std::size_t(m.source(h)), std::size_t(m.target(h)),
+                                                std::size_t(m.target(m.next(h))) }};
+  for(int c = 0; c < 3; ++c)
+    for(int k = 0; k < 3; ++k)
+      if(in.F[3 * j + k] == corners[c]) b[k] = l.second[c];
+  face = static_cast<long long>(j);
+}
+
+std::string landmark_name(std::size_t k, const std::vector<long long>& pairs)
+{
+  return "landmarks[" + std::to_string(k) + "] = (" + std::to_string(pairs[2 * k]) + ", " +
+         std::to_string(pairs[2 * k + 1]) + ")";
+}
+
+py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::object& V_b, const py::object& F_b,
+                   const py::object& landmarks, const py::object& border_vertex_pair, bool b_to_a,
+                   const py::object& time_limit, double optimization_time_limit)
+{
+  const Disk_input in_a = read_disk(V_a, F_a, "V_a", "F_a");
+  const Disk_input in_b = read_disk(V_b, F_b, "V_b", "F_b");
+  // landmarks: (k, 2) integers; None or empty (e.g. []): only the borders are matched
+  std::vector<long long> pairs;
+  std::size_t k = 0;
+  if(!landmarks.is_none())
+  {
+    const py::array l = as_array(landmarks, "landmarks");
+    if(!(l.size() == 0 && (l.ndim() == 1 || (l.ndim() == 2 && l.shape(1) == 2))))
+      pairs = integer_values(l, "landmarks", 2, 2, k);
+  }
+  // an index that is no vertex is the C++ function's ERROR_WRONG_PARAMETER (it cannot be a descriptor here)
+  for(std::size_t r = 0; r < k; ++r)
+    for(int c = 0; c < 2; ++c)
+      if(!in_range(pairs[2 * r + c], c == 0 ? in_a.n : in_b.n))
+        throw Pe_failure(PE::ERROR_WRONG_PARAMETER, landmark_name(r, pairs) + ": " + std::to_string(pairs[2 * r + c]) +
+                         " is not a vertex of " + (c == 0 ? "A (" + std::to_string(in_a.n) : "B (" + std::to_string(in_b.n)) +
+                         " vertices)");
+  const bool has_pair = !border_vertex_pair.is_none();
+  std::vector<long long> pair;
+  if(has_pair)
+  {
+    std::size_t rows = 0;
+    pair = integer_values(border_vertex_pair, "border_vertex_pair", 1, 0, rows);
+    if(pair.size() != 2) throw py::value_error("border_vertex_pair must be a pair (border vertex of A, border vertex of B)");
+    for(int c = 0; c < 2; ++c)
+      if(!in_range(pair[c], c == 0 ? in_a.n : in_b.n))
+        throw Pe_failure(PE::ERROR_WRONG_PARAMETER, "border_vertex_pair: " + std::to_string(pair[c]) + " is not a vertex of " +
+                         (c == 0 ? "A (" + std::to_string(in_a.n) : "B (" + std::to_string(in_b.n)) + " vertices)");
+  }
+  double seconds = std::numeric_limits<double>::infinity();
+  if(!time_limit.is_none())
+  {
+    try { seconds = time_limit.cast<double>(); }
+    catch(const py::cast_error&) { throw py::value_error("time_limit must be a number of seconds or None"); }
+    if(!(seconds >= 0)) throw py::value_error("time_limit must be non-negative");
+  }
+  if(!(optimization_time_limit >= 0)) throw py::value_error("optimization_time_limit must be non-negative");
+
+  std::vector<long long> faces(in_a.n), back_faces(b_to_a ? in_b.n : 0);
+  std::vector<double> bary(3 * in_a.n), back_bary(3 * back_faces.size());
+  PE::Cross_parameterization_statistics st;
+  last_timing = Timing();
+  {
+    py::gil_scoped_release release;
+    Stopwatch s(last_timing.native_seconds);
+    const Work wa(in_a, "F_a"), wb(in_b, "F_b");
+    std::vector<std::pair<vertex_descriptor, vertex_descriptor> > lm;
+    for(std::size_t r = 0; r < k; ++r) lm.emplace_back(wa.vd[pairs[2 * r]], wb.vd[pairs[2 * r + 1]]);
+    const std::pair<vertex_descriptor, vertex_descriptor> vp =
+      has_pair ? std::make_pair(wa.vd[pair[0]], wb.vd[pair[1]]) : std::make_pair(Mesh::null_vertex(), Mesh::null_vertex());
+    std::vector<PE::Cross_location<Mesh> > located(in_a.n), back(back_faces.size());
+    auto out = boost::make_iterator_property_map(located.begin(), get(CGAL::vertex_index, wa.mesh));
+    auto out_back = boost::make_iterator_property_map(back.begin(), get(CGAL::vertex_index, wb.mesh));
+    const auto np = PE::parameters::statistics(&st).maximum_running_time(seconds)
+                                                   .optimization_time_limit(optimization_time_limit);
+    PE::Error_code ec;
+    {
+      Stopwatch a(last_timing.algorithm_seconds);
+      // the function tests at compile time whether these two parameters are given (without a pair it
+      // chooses its own): one call per combination
+      if(has_pair && b_to_a)
+        ec = PE::cross_parameterization(wa.mesh, wb.mesh, lm, out,
+               PE::parameters::border_vertex_pair(vp, PE::parameters::b_to_a_locations(out_back, np)));
+      else if(has_pair)
+        ec = PE::cross_parameterization(wa.mesh, wb.mesh, lm, out, PE::parameters::border_vertex_pair(vp, np));
+      else if(b_to_a)
+        ec = PE::cross_parameterization(wa.mesh, wb.mesh, lm, out, PE::parameters::b_to_a_locations(out_back, np));
+      else
+        ec = PE::cross_parameterization(wa.mesh, wb.mesh, lm, out, np);
+    }
+    if(ec != PE::OK)
+    {
+      // name what the statistics point at: a landmark (its row), the border pair, or a mesh
+      const std::string mesh = st.failed_mesh == 0 ? "A" : "B";
+      std::string context = "cross_parameterization";
+      if(st.failed_landmark < k)
+        context = landmark_name(st.failed_landmark, pairs) + ": the vertex " +
+                  std::to_string(pairs[2 * st.failed_landmark + (st.failed_mesh == 0 ? 0 : 1)]) + " of " + mesh +
+                  (ec == PE::ERROR_CONSTRAINT_ON_BORDER ? " is on the border (landmarks must be interior)"
+                   : ec == PE::ERROR_DUPLICATE_CONSTRAINT ? " is used by an earlier landmark" : "");
+      else if(ec == PE::ERROR_WRONG_PARAMETER && has_pair && st.failed_mesh >= 0 &&
+              !CGAL::is_border(st.failed_mesh == 0 ? vp.first : vp.second, st.failed_mesh == 0 ? wa.mesh : wb.mesh))
+        context = "border_vertex_pair: the vertex " + std::to_string(pair[st.failed_mesh]) + " of " + mesh +
+                  " is not on its border";
+      else if(st.failed_mesh >= 0)
+        context += st.failed_mesh == 0 ? ", mesh A (V_a, F_a)" : ", mesh B (V_b, F_b)";
+      throw Pe_failure(ec, context);
+    }
+    for(std::size_t i = 0; i < in_a.n; ++i) location_to_row(wb.mesh, in_b, located[i], faces[i], &bary[3 * i]);
+    for(std::size_t i = 0; i < back.size(); ++i) location_to_row(wa.mesh, in_a, back[i], back_faces[i], &back_bary[3 * i]);
+  }
+  auto int_array = [](const std::vector<long long>& v) {
+    py::array_t<long long> a(static_cast<py::ssize_t>(v.size()));
+    if(!v.empty()) std::memcpy(a.mutable_data(), v.data(), v.size() * sizeof(long long));
+    return a;
+  };
+  auto coordinates = [](const std::vector<double>& v) {
+    py::array_t<double> a({ static_cast<py::ssize_t>(v.size() / 3), py::ssize_t(3) });
+    if(!v.empty()) std::memcpy(a.mutable_data(), v.data(), v.size() * sizeof(double));
+    return a;
+  };
+  // the keys of `pe cross --json` where it has them
+  py::dict info;
+  info["status"] = PE::get_error_name(PE::OK);
+  info["valid"] = st.report_a.is_valid() && st.report_b.is_valid();
+  info["valid_a"] = st.report_a.is_valid();
+  info["valid_b"] = st.report_b.is_valid();
+  info["landmarks_exact"] = st.landmarks_exact;
+  info["landmarks"] = st.landmarks;
+  info["vertices_a"] = st.vertices_a;
+  info["faces_a"] = st.faces_a;
+  info["vertices_b"] = st.vertices_b;
+  info["faces_b"] = st.faces_b;
+  info["vertices_added_a"] = st.vertices_added_a;
+  info["in_face"] = st.located_in_face;
+  info["on_edge"] = st.located_on_edge;
+  info["on_vertex"] = st.located_on_vertex;
+  info["seconds_validation"] = st.seconds_validation;
+  info["seconds_map_b"] = st.seconds_map_b;
+  info["seconds_map_a"] = st.seconds_map_a;
+  info["seconds_location"] = st.seconds_location;
+  info["seconds_total"] = st.seconds_total;
+  info["certificate_a"] = report_dict(st.report_a);
+  info["certificate_b"] = report_dict(st.report_b);
+  py::dict map_b;
+  PE::for_each_statistic(st.map_b, [&](const char* key, const auto& value) { map_b[key] = value; });
+  info["map_b"] = map_b;
+  py::dict map_a;
+  map_a["steiner_vertices"] = st.map_a.steiner_vertices;
+  map_a["paths"] = st.map_a.paths;
+  map_a["patches"] = st.map_a.patches;
+  map_a["repaired_patches"] = st.map_a.repaired_patches;
+  map_a["optimized"] = st.map_a.optimized;
+  map_a["optimization_status"] = PE::get_error_name(st.map_a.optimization_status);
+  info["map_a"] = map_a;
+  if(b_to_a)
+  {
+    info["located_b_on_a"] = st.located_b_on_a;
+    info["b_to_a_faces"] = int_array(back_faces);
+    info["b_to_a_barycentric"] = coordinates(back_bary);
+  }
+  return py::make_tuple(int_array(faces), coordinates(bary), info);
+}
+
 py::dict py_last_timing()
 {
   py::dict d;
@@ -720,6 +909,34 @@ PYBIND11_MODULE(progressive_embedding, m)
     "'repaired_patches', 'optimized', 'optimization_status', 'immersion', 'constraint_error',\n"
     "'constraints_exact', and where each Steiner vertex lies on the input surface: 'steiner_indices' (rows\n"
     "of V2), 'steiner_corners' (s x 3 input vertex indices, -1 unused) and 'steiner_weights' (s x 3).");
+  m.def("cross_parameterization", &py_cross, py::arg("V_a"), py::arg("F_a"), py::arg("V_b"), py::arg("F_b"),
+    py::arg("landmarks") = py::none(), py::arg("border_vertex_pair") = py::none(), py::arg("b_to_a") = false,
+    py::arg("time_limit") = py::none(), py::arg("optimization_time_limit") = 30.0,
+    "cross_parameterization(V_a, F_a, V_b, F_b, landmarks=None, border_vertex_pair=None, b_to_a=False,\n"
+    "                       time_limit=None, optimization_time_limit=30.0) -> (faces, barycentric, info)\n\n"
+    "A certified map between two disks A = (V_a, F_a) and B = (V_b, F_b) taking every landmark of A exactly\n"
+    "onto its partner in B, as `pe cross`: both disks are mapped onto the unit square, B by the certified\n"
+    "pipeline, A with its landmarks pinned at their partners' uv (constrained_embedding(), on a refined copy\n"
+    "of A); both maps are certified. landmarks: a (k, 2) integer array of (vertex of A, vertex of B) pairs,\n"
+    "interior vertices, each used once (None or empty: only the borders are matched). The borders are\n"
+    "matched by relative 3D arc length from border_vertex_pair = (border vertex of A, border vertex of B);\n"
+    "by default the first border vertex of A and the border vertex of B nearest to it in 3D (right for two\n"
+    "meshes in one frame). Returns, per vertex of A, the row of F_b holding its image (faces, int64, (n_a,))\n"
+    "and its barycentric coordinates in the order of that row's columns (barycentric, (n_a, 3) float64,\n"
+    "computed exactly and rounded once: they sum to 1 up to one rounding; a landmark gets exactly 1 at its\n"
+    "partner). info: 'valid', 'valid_a', 'valid_b', 'landmarks_exact', 'landmarks', 'vertices_a',\n"
+    "'faces_a', 'vertices_b', 'faces_b', 'vertices_added_a', 'in_face', 'on_edge', 'on_vertex' (where A's\n"
+    "vertices landed, decided exactly), 'seconds_validation', 'seconds_map_b', 'seconds_map_a',\n"
+    "'seconds_location', 'seconds_total', 'certificate_a' (of A's map, on its refined copy) and\n"
+    "'certificate_b' (the keys of check()), 'map_b' (the pipeline's statistics) and 'map_a'. With\n"
+    "b_to_a=True also the other direction, each vertex of B on A: 'b_to_a_faces' (rows of F_a, (n_b,)),\n"
+    "'b_to_a_barycentric' ((n_b, 3), columns of F_a) and 'located_b_on_a'. time_limit: seconds in all\n"
+    "(ERROR_BUDGET_EXHAUSTED past it); optimization_time_limit: seconds for the optimization of A's map.\n"
+    "Raises Error with ERROR_WRONG_PARAMETER for a landmark or border_vertex_pair index that is no vertex\n"
+    "(as the C++ function, not ValueError) or a border_vertex_pair vertex off its border,\n"
+    "ERROR_CONSTRAINT_ON_BORDER for a landmark on a border (not supported), ERROR_DUPLICATE_CONSTRAINT for a\n"
+    "vertex used twice, ERROR_NOT_A_DISK, ERROR_BORDER_TOO_SHORT (fewer than 4 border vertices), ...; the\n"
+    "message names the landmark (its row) or the mesh.");
   m.def("last_timing", &py_last_timing,
     "last_timing() -> dict\n\n"
     "Seconds spent in C++ by the last call of this thread: 'native_seconds' (everything done without the\n"

@@ -1,0 +1,199 @@
+# Copyright (c) 2026 Progressive_embedding contributors.
+# SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+"""Tests of progressive_embedding.cross_parameterization() (pytest): identical grids, two grids of one
+square, a grid and its quarter turn (border_vertex_pair), mushroom.off against itself, every error.
+
+The grids are flat squares: both certified maps are then the grids themselves up to rounding, so the image
+of a vertex of A is known (its own 3D point) and the tolerances can be tight."""
+
+import numpy as np
+import pytest
+
+import progressive_embedding as pe
+from test_progressive_embedding import (TETRAHEDRON_F, TETRAHEDRON_V, border_vertices, data_mesh,
+                                        grid_disk)
+
+
+def interior_vertices(V, F):
+    return np.setdiff1d(np.arange(len(V)), border_vertices(F))
+
+
+def images(faces, barycentric, V_b, F_b):
+    """The 3D points of the locations on B (rows of F_b, coordinates in the order of its columns)."""
+    return np.einsum('ij,ijk->ik', barycentric, V_b[F_b[faces]])
+
+
+def own_weight(faces, barycentric, F_b, partner):
+    """The coordinate of vertex partner[i] of B in the location of vertex i of A (-1 if not a corner)."""
+    w = np.full(len(faces), -1.0)
+    for i, (f, p) in enumerate(zip(faces, partner)):
+        column = np.flatnonzero(F_b[f] == p)
+        if len(column):
+            w[i] = barycentric[i, column[0]]
+    return w
+
+
+def assert_landmarks_exact(faces, barycentric, F_b, landmarks):
+    for a, b in landmarks:
+        row = barycentric[a]
+        column = np.flatnonzero(F_b[faces[a]] == b)
+        assert len(column) == 1 and row[column[0]] == 1.0
+        assert np.count_nonzero(row) == 1  # the other two coordinates are exact zeros
+
+
+def assert_result(faces, barycentric, info, n_a, F_b):
+    assert faces.shape == (n_a,) and faces.dtype == np.int64
+    assert barycentric.shape == (n_a, 3) and barycentric.dtype == np.float64
+    assert faces.min() >= 0 and faces.max() < len(F_b)
+    assert barycentric.min() >= 0 and np.abs(barycentric.sum(axis=1) - 1).max() <= 1e-15
+    assert info['status'] == 'OK' and info['valid'] is True
+    assert info['valid_a'] is True and info['valid_b'] is True and info['landmarks_exact'] is True
+    assert info['certificate_a']['valid'] is True and info['certificate_b']['valid'] is True
+    assert info['vertices_a'] == n_a and info['faces_b'] == len(F_b)
+    assert info['in_face'] + info['on_edge'] + info['on_vertex'] == n_a
+    assert 0 <= info['seconds_total'] and info['map_b']['optimization_status'] == 'OK'
+
+
+def test_documented():
+    doc = pe.cross_parameterization.__doc__
+    assert 'cross_parameterization(V_a, F_a, V_b, F_b, landmarks=None' in doc and len(doc) > 1000
+
+
+# ---- identical meshes ------------------------------------------------------------------------
+
+def test_identical_grids_few_landmarks():
+    V, F = grid_disk(9)
+    interior = interior_vertices(V, F)
+    landmarks = np.c_[interior[[3, 20, 40]], interior[[3, 20, 40]]]
+    faces, barycentric, info = pe.cross_parameterization(V, F, V, F, landmarks, b_to_a=True)
+    assert_result(faces, barycentric, info, len(V), F)
+    assert info['landmarks'] == 3 and info['vertices_added_a'] == 0
+    # every vertex in a face of B around its own vertex, its coordinate there 1 within 1e-9
+    w = own_weight(faces, barycentric, F, np.arange(len(V)))
+    assert w.min() >= 1 - 1e-9
+    assert np.abs(images(faces, barycentric, V, F) - V).max() <= 1e-9
+    assert_landmarks_exact(faces, barycentric, F, landmarks)
+    # the border vertices too: both borders are placed alike
+    assert np.all(w[border_vertices(F)] == 1.0)
+    # the other direction, the same on the grid
+    assert info['located_b_on_a'] == len(V)
+    back_faces, back = info['b_to_a_faces'], info['b_to_a_barycentric']
+    assert back_faces.shape == (len(V),) and back.shape == (len(V), 3)
+    assert own_weight(back_faces, back, F, np.arange(len(V))).min() >= 1 - 1e-9
+    assert_landmarks_exact(back_faces, back, F, landmarks[:, ::-1])
+
+
+def test_identical_grids_every_interior_vertex_a_landmark():
+    V, F = grid_disk(7)
+    interior = interior_vertices(V, F)
+    faces, barycentric, info = pe.cross_parameterization(V, F, V, F, np.c_[interior, interior])
+    assert_result(faces, barycentric, info, len(V), F)
+    # every vertex exactly on its own vertex
+    assert np.all(own_weight(faces, barycentric, F, np.arange(len(V))) == 1.0)
+    assert info['on_vertex'] == len(V)
+
+
+def test_identical_mushroom():
+    V, F = data_mesh('mushroom.off')
+    interior = interior_vertices(V, F)
+    chosen = interior[np.linspace(0, len(interior) - 1, 5).astype(int)]
+    faces, barycentric, info = pe.cross_parameterization(V, F, V, F, np.c_[chosen, chosen])
+    assert_result(faces, barycentric, info, len(V), F)
+    assert_landmarks_exact(faces, barycentric, F, np.c_[chosen, chosen])
+    assert np.all(own_weight(faces, barycentric, F, np.arange(len(V)))[border_vertices(F)] == 1.0)
+    # the other vertices near themselves (the bound of the C++ test: 2e-3 of the diagonal on average)
+    error = np.linalg.norm(images(faces, barycentric, V, F) - V, axis=1) / np.linalg.norm(np.ptp(V, axis=0))
+    assert error.mean() < 2e-3
+
+
+# ---- two different meshes --------------------------------------------------------------------
+
+def test_two_grids_of_one_square():
+    V_a, F_a = grid_disk(9)    # spacing 1/8
+    V_b, F_b = grid_disk(13)   # spacing 1/12: the points at multiples of 1/4 are vertices of both
+    landmarks = np.array([[2 * 9 + 2, 3 * 13 + 3], [4 * 9 + 4, 6 * 13 + 6], [6 * 9 + 2, 9 * 13 + 3]], dtype=np.int32)
+    faces, barycentric, info = pe.cross_parameterization(V_a, F_a, V_b, F_b, landmarks, b_to_a=True)
+    assert_result(faces, barycentric, info, len(V_a), F_b)
+    assert_landmarks_exact(faces, barycentric, F_b, landmarks)
+    # each vertex of A lands on its own 3D point of B, and each vertex of B on its own point of A
+    assert np.abs(images(faces, barycentric, V_b, F_b) - V_a).max() <= 1e-9
+    back_faces, back = info['b_to_a_faces'], info['b_to_a_barycentric']
+    assert np.abs(back.sum(axis=1) - 1).max() <= 1e-12
+    assert np.abs(images(back_faces, back, V_a, F_a) - V_b).max() <= 1e-9
+    assert_landmarks_exact(back_faces, back, F_a, landmarks[:, ::-1])
+
+
+def test_border_vertex_pair():
+    V, F = grid_disk(9)
+    # the default pair on identical meshes: vertex 0 of A (the first border vertex) and vertex 0 of B
+    given = pe.cross_parameterization(V, F, V, F, [[10, 10]], border_vertex_pair=(0, 0))
+    default = pe.cross_parameterization(V, F, V, F, [[10, 10]])
+    assert np.array_equal(given[0], default[0]) and np.array_equal(given[1], default[1])
+    # A's corner (0,0) matched to B's corner (1,0): a quarter turn about the square's center
+    faces, barycentric, info = pe.cross_parameterization(V, F, V, F, border_vertex_pair=np.array([0, 8]))
+    assert_result(faces, barycentric, info, len(V), F)
+    turned = np.c_[1 - V[:, 1], V[:, 0], V[:, 2]]
+    assert np.abs(images(faces, barycentric, V, F) - turned).max() <= 1e-9
+
+
+# ---- errors ----------------------------------------------------------------------------------
+
+def raises(code, *args, **kwargs):
+    with pytest.raises(pe.Error) as e:
+        pe.cross_parameterization(*args, **kwargs)
+    assert e.value.code == code and str(e.value).startswith(code + ': ')
+    return str(e.value)
+
+
+def test_errors():
+    V, F = grid_disk(6)  # 36 vertices, 7 and 8 interior, 0 and 5 on the border
+    # an index that is no vertex: the library's ERROR_WRONG_PARAMETER, the landmark and the mesh named
+    assert 'landmarks[0] = (36, 7): 36 is not a vertex of A' in raises('ERROR_WRONG_PARAMETER', V, F, V, F, [[36, 7]])
+    assert 'landmarks[1] = (8, -1): -1 is not a vertex of B' in raises('ERROR_WRONG_PARAMETER', V, F, V, F, [[7, 7], [8, -1]])
+    # a vertex used twice, in A or in B: the later landmark named
+    assert 'landmarks[1] = (7, 8): the vertex 7 of A' in raises('ERROR_DUPLICATE_CONSTRAINT', V, F, V, F, [[7, 7], [7, 8]])
+    assert 'landmarks[1] = (8, 7): the vertex 7 of B' in raises('ERROR_DUPLICATE_CONSTRAINT', V, F, V, F, [[7, 7], [8, 7]])
+    # landmarks on a border are refused (the borders are matched by arc length, not by landmarks)
+    assert 'the vertex 0 of A is on the border' in raises('ERROR_CONSTRAINT_ON_BORDER', V, F, V, F, [[7, 7], [0, 8]])
+    assert 'the vertex 5 of B is on the border' in raises('ERROR_CONSTRAINT_ON_BORDER', V, F, V, F, [[7, 7], [8, 5]])
+    # a border pair that is not one
+    assert 'the vertex 7 of A is not on its border' in raises('ERROR_WRONG_PARAMETER', V, F, V, F, border_vertex_pair=(7, 0))
+    assert 'the vertex 14 of B is not on its border' in raises('ERROR_WRONG_PARAMETER', V, F, V, F, border_vertex_pair=(0, 14))
+    assert '99 is not a vertex of B' in raises('ERROR_WRONG_PARAMETER', V, F, V, F, border_vertex_pair=(0, 99))
+    # not disks
+    assert 'mesh A' in raises('ERROR_NOT_A_DISK', TETRAHEDRON_V, TETRAHEDRON_F, V, F)
+    assert 'mesh B' in raises('ERROR_NOT_A_DISK', V, F, TETRAHEDRON_V, TETRAHEDRON_F)
+    raises('ERROR_BORDER_TOO_SHORT', V[:3], [[0, 1, 2]], V, F)  # a triangle: 3 border vertices for 4 corners
+    assert 'F_b[50]' in raises('ERROR_NON_MANIFOLD', V, F, V, np.r_[F, [[3, 3, 4]]])
+    V_nan = V.copy()
+    V_nan[3, 1] = np.nan
+    assert 'V_b[3]' in raises('ERROR_NON_FINITE_COORDINATES', V, F, V_nan, F)
+    raises('ERROR_BUDGET_EXHAUSTED', V, F, V, F, [[7, 7]], time_limit=0)
+
+
+def test_no_landmarks():
+    V, F = grid_disk(6)
+    for none in (None, [], np.zeros((0, 2), dtype=np.int64)):
+        faces, barycentric, info = pe.cross_parameterization(V, F, V, F, none)
+        assert_result(faces, barycentric, info, len(V), F)
+        assert info['landmarks'] == 0
+
+
+def test_value_errors():
+    V, F = grid_disk(5)
+    bad = [dict(landmarks=[[7.0, 7.0]]),           # landmarks must be integers
+           dict(landmarks=[7, 7]),                  # ... of shape (k, 2)
+           dict(landmarks=[[6, 7, 8]]),
+           dict(landmarks='6 7'),
+           dict(border_vertex_pair=(0, 1, 2)),     # a pair
+           dict(border_vertex_pair=(0.0, 1.0)),
+           dict(time_limit=-1), dict(time_limit='soon'), dict(optimization_time_limit=-1)]
+    for kwargs in bad:
+        with pytest.raises(ValueError):
+            pe.cross_parameterization(V, F, V, F, **kwargs)
+    with pytest.raises(ValueError, match='V_b'):
+        pe.cross_parameterization(V, F, V[:, :2], F)
+    with pytest.raises(ValueError, match='F_a'):
+        pe.cross_parameterization(V, F.astype(np.float64), V, F)
+    with pytest.raises(ValueError, match='F_b'):
+        pe.cross_parameterization(V, F, V, np.r_[F, [[0, 1, 25]]])  # a face index out of range

@@ -999,6 +999,42 @@ int test_helpers()
     std::vector<CGAL::Gmpq> xu, xv;
     CHECK(PE::internal::solve_by_elimination(S, budget, xu, xv) == PE::OK, "elimination");
     CHECK(xu[0] == CGAL::Gmpq(13, 28) && xu[1] == CGAL::Gmpq(6, 7) && xu[2] == CGAL::Gmpq(27, 28) && xv[1] == 0, "exact solution");
+    std::vector<CGAL::Gmpq> pu, pv;
+    CHECK(PE::internal::solve_by_p_adic_lifting(S, budget, pu, pv) == PE::OK && pu == xu && pv == xv, "p-adic lifting, the same solution");
+  }
+  {
+    // lowest terms over a common denominator d when many numerators share large factors with it (as
+    // on symmetric meshes): zero and negative numerators, factors of d together and apart, powers
+    // beyond d's, small primes; more numerators than one check window
+    auto prime_above = [](unsigned long bits) { mpz_class q(1); q <<= bits; mpz_nextprime(q.get_mpz_t(), q.get_mpz_t()); return q; };
+    const mpz_class q1 = prime_above(40), q2 = prime_above(70), q3 = prime_above(100), other = prime_above(50);
+    const mpz_class d = 24 * q1 * q1 * q2 * q3;
+    std::vector<mpz_class> num(600);
+    for(std::size_t c = 0; c < num.size(); ++c)
+    {
+      mpz_class x = (c % 7 == 0) ? 0 : 1 + c;
+      if(c % 3 == 0) x *= q1;
+      if(c % 5 == 0) x *= q2 * q3;
+      if(c % 17 == 0) x *= q3;
+      if(c % 11 == 0) x *= q1 * q1 * q1;
+      if(c % 13 == 0) x *= other;
+      if(c % 4 == 0) x *= 4;
+      if(c % 2) x = -x;
+      num[c] = x;
+    }
+    const std::vector<mpz_class> copy = num;
+    PE::internal::Progress_budget budget;
+    std::vector<CGAL::Gmpq> fu, fv;
+    CHECK(PE::internal::canonical_fractions(num, d, budget, 0., fu, fv) && fu.size() == 300 && fv.size() == 300, "lowest terms");
+    bool same = true;
+    for(std::size_t c = 0; c < copy.size(); ++c)
+    {
+      mpq_class q(copy[c], d);
+      q.canonicalize();
+      const CGAL::Gmpq& f = (c % 2 ? fv : fu)[c / 2];
+      same = same && mpz_cmp(mpq_numref(q.get_mpq_t()), mpq_numref(f.mpq())) == 0 && mpz_cmp(mpq_denref(q.get_mpq_t()), mpq_denref(f.mpq())) == 0;
+    }
+    CHECK(same, "lowest terms: those of mpq_canonicalize");
   }
   // long double is refused at compile time (see Check_number_type); its trait says so
   static_assert(!PE::internal::Is_supported_number_type<long double>::value, "long double is not supported");

@@ -38,19 +38,21 @@ namespace Progressive_embedding {
 ///
 /// The linear system is solved by sparse LDLT (`double`, uniform weights) or sparse LU (`double`,
 /// mean value weights) from Eigen. With `CGAL::Gmpq` it is solved exactly by p-adic lifting (Dixon):
-/// one sparse LU factorization modulo a word-size prime in a fill-reducing order, lifting steps in
+/// one sparse LU factorization modulo a 62-bit prime in a fill-reducing order, lifting steps in
 /// word-size integers for both coordinates at once, as many as a bound on the solution's size asks
-/// (from the determinant, estimated by the same factorization in double), rational reconstruction
-/// with a common denominator, and an exact verification of the solution (if it cannot conclude, a
-/// sparse Gaussian elimination in rationals takes over). With `CGAL::Gmpfr` it is solved by iterative
+/// (from the determinant, estimated by the same factorization in double; fewer when a probe finds the
+/// common denominator earlier), rational reconstruction with a common denominator for a few seed
+/// unknowns, the other numerators propagated through the rows by exact divisions, and an exact
+/// verification of the solution (if it cannot conclude, a sparse Gaussian elimination in rationals
+/// takes over). With `CGAL::Gmpfr` it is solved by iterative
 /// refinement: the matrix is factored once in `double` (Eigen's LDLT, or its LU for mean value weights), and
 /// the solution refined in MPFR (residual in MPFR with 64 guard bits, correction from the `double`
 /// factors) until the correction is down to the last bits of the largest coordinate: a few steps, each
-/// gaining about 53 - log2(cond A) bits, so that the work in MPFR is a few sparse products (0.55 s for
-/// the 17,495 vertices of `man.off` at 256 bits, where the elimination in MPFR took 11.6 s). When the
-/// refinement cannot conclude (a value beyond `double`'s range, no progress, entries more precise than
-/// the default precision), the sparse Gaussian elimination in MPFR takes over, in place on MPFR
-/// numbers. In any other number type (other exact types) the system is solved by that sparse Gaussian
+/// gaining about 53 - log2(cond A) bits, so that the work in MPFR is a few sparse products (0.32 s for
+/// the 17,495 vertices of `man.off` at 256 bits, where the elimination in MPFR took 2.2 s in the same
+/// run; 1.2 s against 21 s for a 50k-vertex grid). When the refinement cannot conclude (a value
+/// beyond `double`'s range, no progress, entries more precise than the default precision), the sparse
+/// Gaussian elimination in MPFR takes over, in place on MPFR numbers. In any other number type (other exact types) the system is solved by that sparse Gaussian
 /// elimination in the number type itself.
 /// These solvers report their progress to `callback` and stop at `maximum_running_time`. Another
 /// solver can be given with `sparse_linear_solver` (then progress is reported only before and after
@@ -60,9 +62,10 @@ namespace Progressive_embedding {
 /// two bits per vertex each (8,108 bits for the 3,916 vertices of `dino.off` cut by the Tutte-failure
 /// protocol, 40,441 bits for the 17,495 of `man.off`), so the exact map alone takes memory about
 /// quadratic in the number of vertices (about 350 MB at 17,500 vertices) and its time grows faster
-/// than that: the lifting takes about n/7 steps, each a sparse triangular solve modulo p, and each
-/// of the 2n coordinates needs a few products of integers of that size. The measured times and
-/// memory of the exact and MPFR maps from 4k to 100k vertices are in
+/// than that: the lifting takes a number of steps proportional to n (each gives 62 bits of the
+/// solution), each a sparse triangular solve modulo p, and each of the 2n coordinates needs a product
+/// and a division of integers of that size (its lowest terms). The measured times and memory of the
+/// exact and MPFR maps from 4k to 100k vertices are in
 /// `benchmark/results/exact_tutte.md`. Eigen's sparse LU over `CGAL::Gmpq`, for comparison, takes
 /// 0.03 s for 100 unknowns, 1.35 s for 400 and 22.6 s for 1024 (time about cubic). Use `callback`
 /// to show progress and `maximum_running_time` to bound the time.

@@ -12,6 +12,7 @@
 // 1-ring locally (internal/local_smoothing.h). In floating point, when no candidate is
 // valid, the neighbourhood is smoothed and the placement retried.
 
+#include <CGAL/Progressive_embedding/internal/number_utils.h>
 #include <CGAL/Progressive_embedding/internal/progressive_embedding/working_mesh.h>
 #include <CGAL/Progressive_embedding/internal/progressive_embedding/collapse.h>
 #include <CGAL/Progressive_embedding/internal/local_smoothing.h>
@@ -237,6 +238,8 @@ public:
       for(; s < opt.line_search_steps; ++s, t = t * factor)
       {
         m.point(mover) = Point_2(p.x() + t * dx, p.y() + t * dy);
+        // near the largest doubles a midpoint or a step overflows: no exact predicate takes infinity
+        if(!is_finite_ft(m.point(mover).x()) || !is_finite_ft(m.point(mover).y())) continue;
         double e;
         if(validity.star_ok(m, mover, [this](vertex_descriptor w) { return wm.on_border(w); }, e))
         {

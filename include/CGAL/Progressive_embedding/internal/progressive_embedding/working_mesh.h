@@ -205,6 +205,7 @@ struct Validity_criteria
   {
     max_energy = 0;
     const Point_2& x = m.point(v);
+    if(!is_finite_ft(x.x()) || !is_finite_ft(x.y())) return false; // no exact predicate takes infinity
     // orientations first: most rejected candidates fail there, and energies cost more
     for(typename Mesh::Halfedge_index h : halfedges_around_target(v, m))
       if(!m.is_border(h) && !positively_oriented(orient, x, m.point(m.target(m.next(h))), m.point(m.source(h))))

@@ -98,8 +98,8 @@ struct Cross_parameterization_statistics
   /// `ERROR_DUPLICATE_CONSTRAINT`: a vertex of A or of B used twice, the later one): its position in the `landmarks`
   /// range; `std::size_t(-1)` otherwise
   std::size_t failed_landmark = std::size_t(-1);
-  /// the mesh an error is about: 0 for A, 1 for B, -1 for none (a mesh that is not a disk, a landmark vertex, a
-  /// border vertex of `border_vertex_pair`, a map that failed)
+  /// the mesh an error is about: 0 for A, 1 for B, -1 for none (a mesh that is not a disk or has fewer than four
+  /// border vertices, a landmark vertex, a border vertex of `border_vertex_pair`, a map that failed)
   int failed_mesh = -1;
   /// vertices of A (as given)
   std::size_t vertices_a = 0;
@@ -316,7 +316,8 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///                       3D (right for two meshes of one surface in one frame; give the pair otherwise)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_running_time}
-///     \cgalParamDescription{seconds (wall clock) for each of the two maps; `ERROR_BUDGET_EXHAUSTED` when exceeded}
+///     \cgalParamDescription{seconds (wall clock) for the whole call, counted from its start: each stage gets what
+///                           is left; `ERROR_BUDGET_EXHAUSTED` when exceeded}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{no limit}
 ///   \cgalParamNEnd
@@ -348,7 +349,7 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 /// \return `OK` with every vertex of A located and both maps certified; otherwise, with nothing written to `out`:
 ///         the mesh errors of `tutte_embedding()` for either mesh (`ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH`,
 ///         `ERROR_NON_MANIFOLD`, `ERROR_NOT_A_DISK`; `Cross_parameterization_statistics::failed_mesh` says which),
-///         `ERROR_BORDER_TOO_SHORT` (fewer than four border vertices), `ERROR_WRONG_PARAMETER` (a landmark vertex
+///         `ERROR_BORDER_TOO_SHORT` (fewer than four border vertices; `failed_mesh` says which mesh), `ERROR_WRONG_PARAMETER` (a landmark vertex
 ///         not of its mesh, a `border_vertex_pair` vertex not on its border), `ERROR_CONSTRAINT_ON_BORDER` (a
 ///         landmark on a border: border landmarks are not supported yet), `ERROR_DUPLICATE_CONSTRAINT` (a vertex
 ///         used by two landmarks) -- these three with `Cross_parameterization_statistics::failed_landmark` --, the
@@ -457,6 +458,9 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
       if(d < best) { best = d; start_b = k; }
     }
   }
+  // a square needs four border vertices on each mesh: say which one has fewer
+  if(disk_a.border.size() < 4) { stats.failed_mesh = 0; return finish(ERROR_BORDER_TOO_SHORT); }
+  if(disk_b.border.size() < 4) { stats.failed_mesh = 1; return finish(ERROR_BORDER_TOO_SHORT); }
   std::vector<Point_2> border_uv_a, border_uv_b;
   ec = internal::common_square_border(disk_a, vpm_a, start_a, disk_b, vpm_b, start_b, border_uv_a, border_uv_b);
   if(ec != OK) return finish(ec);

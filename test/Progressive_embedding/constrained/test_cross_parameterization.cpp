@@ -10,6 +10,7 @@
 #include <CGAL/Progressive_embedding/cross_parameterization.h>
 #include <CGAL/Progressive_embedding/internal/cross/locate_in_map.h>
 #include <CGAL/Progressive_embedding/internal/disk_generators.h>
+#include <CGAL/boost/graph/generators.h>
 #include <CGAL/Progressive_embedding/internal/cross/remeshed_pair_protocol.h>
 #include <CGAL/Progressive_embedding/certified_pipeline.h>
 
@@ -287,6 +288,13 @@ int errors(const std::string& data_dir)
   RUN(run(a, b, { { ia[0], ib[0] }, { ia[1], ib[0] } }, PE::ERROR_DUPLICATE_CONSTRAINT, 1, 1, "vertex of B twice"));
   RUN(run(a, b, { { ia[0], ib[0] }, { ba[0], ib[1] } }, PE::ERROR_CONSTRAINT_ON_BORDER, 1, 0, "landmark on A's border"));
   RUN(run(a, b, { { ia[0], ib[0] }, { ia[1], bb[0] } }, PE::ERROR_CONSTRAINT_ON_BORDER, 1, 1, "landmark on B's border"));
+  {
+    // a single triangle: three border vertices for the square's four corners, on A or on B
+    Mesh tri;
+    CGAL::make_triangle(Epick::Point_3(0, 0, 0), Epick::Point_3(1, 0, 0), Epick::Point_3(0, 1, 0), tri);
+    RUN(run(tri, b, {}, PE::ERROR_BORDER_TOO_SHORT, none, 0, "A with three border vertices"));
+    RUN(run(a, tri, {}, PE::ERROR_BORDER_TOO_SHORT, none, 1, "B with three border vertices"));
+  }
   {
     PE::Cross_parameterization_statistics st;
     const PE::Error_code ec = PE::cross_parameterization(a, b, std::vector<std::pair<vd, vd> >(), boost::make_assoc_property_map(loc),

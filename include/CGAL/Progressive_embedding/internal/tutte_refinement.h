@@ -50,9 +50,8 @@ inline double mpfr_get_d_2exp_scaled(mpfr_srcptr x, mpfr_exp_t e)
   return std::ldexp(m, static_cast<int>(ex - e));
 }
 
-// x (in MPFR) scaled by 2^-e into double, e the largest exponent among the non-zero values: false if
-// all are zero (then `e` is 0 and d all zero)
-inline bool scaled_to_double(const Mpfr_numbers& x, std::size_t n, mpfr_exp_t& e, Eigen::VectorXd& d)
+// the largest exponent among the non-zero values of x: false if all are zero (then `e` is 0)
+inline bool largest_exponent(const Mpfr_numbers& x, std::size_t n, mpfr_exp_t& e)
 {
   bool any = false;
   e = 0;
@@ -63,6 +62,14 @@ inline bool scaled_to_double(const Mpfr_numbers& x, std::size_t n, mpfr_exp_t& e
     if(!any || ei > e) e = ei;
     any = true;
   }
+  return any;
+}
+
+// x (in MPFR) scaled by 2^-e into double, e its largest exponent: false if all are zero (then `e` is 0
+// and d all zero)
+inline bool scaled_to_double(const Mpfr_numbers& x, std::size_t n, mpfr_exp_t& e, Eigen::VectorXd& d)
+{
+  const bool any = largest_exponent(x, n, e);
   d.resize(static_cast<Eigen::Index>(n));
   for(std::size_t i = 0; i < n; ++i)
     d[static_cast<Eigen::Index>(i)] = any ? mpfr_get_d_2exp_scaled(x[i], e) : 0.;
@@ -110,8 +117,7 @@ Error_code refine_tutte_solution(const Tutte_system<CGAL::Gmpfr>& S, const Doubl
       dmax = (std::max)(dmax, std::abs(d[static_cast<Eigen::Index>(i)]));
     }
     mpfr_exp_t ex = 0;
-    Eigen::VectorXd xd;
-    if(!scaled_to_double(x, n, ex, xd)) break;  // x = 0 and a zero correction
+    if(!largest_exponent(x, n, ex)) break;  // x = 0 and a zero correction
     // |d|_max / |x|_max as a power of two (|x|_max in [2^(ex-1), 2^ex))
     const double rel_log2 = (dmax > 0 ? std::log2(dmax) : -std::numeric_limits<double>::infinity()) + double(er - ex) + 1;
     if(!budget.report(progress_from + (progress_to - progress_from) * (std::min)(1., double(step + 1) / 8)))

@@ -343,16 +343,30 @@ public:
 
   // One projected Newton step of the whole map; lowers E (mean energy) and returns true if a
   // step was accepted.
+  // With holes, the loops are free and nothing keeps them apart but the line search: where a hole
+  // has pinched itself (or touches another loop) to a gap below any step, every step fails there.
+  // The vertices of the touching edges are then held for the global steps (an active set; the
+  // per-vertex steps still move them, each checked exactly) and the step is computed again.
   bool global_step(double& E)
   {
-    Eigen::VectorXd grad;
-    if(!assemble(grad)) return false;
-    Eigen::VectorXd d;
-    if(!solve(grad, d)) return false;
-    std::vector<double> dx(nv_, 0.), dy(nv_, 0.);
-    for(std::size_t i = 0; i < nv_; ++i)
-      if(var_[i] >= 0) { dx[i] = d(2 * var_[i]); dy[i] = d(2 * var_[i] + 1); }
-    return line_search(dx, dy, E);
+    for(int attempt = 0; ; ++attempt)
+    {
+      Eigen::VectorXd grad;
+      if(!assemble(grad)) return false;
+      Eigen::VectorXd d;
+      if(!solve(grad, d)) return false;
+      std::vector<double> dx(nv_, 0.), dy(nv_, 0.);
+      for(std::size_t i = 0; i < nv_; ++i)
+        if(var_[i] >= 0 && !held_[i]) { dx[i] = d(2 * var_[i]); dy[i] = d(2 * var_[i] + 1); }
+      if(line_search(dx, dy, E)) return true;
+      if(!holes_ || contact_.empty() || attempt + 1 >= max_hold_attempts) return false;
+      std::size_t added = 0;
+      for(const std::array<std::size_t, 4>& pair : contact_)
+        for(std::size_t v : pair)
+          if(var_[v] >= 0 && !held_[v]) { held_[v] = 1; ++added; }
+      if(added == 0) return false;
+      holding_ = true;
+    }
   }
 
   // Backtracking from the flip-free bound: accepts the first t whose energy is lower and whose
@@ -370,10 +384,13 @@ public:
     }
     if(barrier_) tmax = (std::min)(tmax, 0.8 * border_contact_time(dx, dy, tmax));
     held_back_ = tmax < 1;
+    contact_.clear();
     std::vector<double> nx(X_), ny(Y_);
     std::vector<Point_2> Pn(P_);
+    bool loops_failed = false; // the last t tried failed on the loops only
     for(double t = tmax; t > 1e-12 * tmax; t *= 0.5)
     {
+      loops_failed = false;
       for(std::size_t i = 0; i < nv_; ++i)
         if(var_[i] >= 0) { nx[i] = X_[i] + t * dx[i]; ny[i] = Y_[i] + t * dy[i]; }
       const double En = objective(nx, ny);
@@ -381,12 +398,18 @@ public:
       for(std::size_t i = 0; i < nv_; ++i)
         if(var_[i] >= 0)
           Pn[i] = Point_2(P_[i].x() + make_ft<FT>(t * dx[i]), P_[i].y() + make_ft<FT>(sgn_ * t * dy[i]));
-      if(!faces_positive(Pn) || (s_.free_border && !border_simple(Pn)) || (holes_ && !(loops_disjoint(Pn) && holes_oriented(Pn))))
-        continue;
+      if(!faces_positive(Pn) || (s_.free_border && !border_simple(Pn))) continue;
+      if(holes_ && !(loops_disjoint(Pn) && holes_oriented(Pn))) { loops_failed = true; continue; }
       P_.swap(Pn);
       refresh_doubles();
       E = objective(X_, Y_);
       return true;
+    }
+    // even the shortest step makes loops touch: the edges that touch then (for global_step())
+    if(loops_failed)
+    {
+      std::size_t self = 0, crossing = 0;
+      count_loop_intersections(Pn, domain_.loops, orient_, 64, self, crossing, &contact_);
     }
     return false;
   }
@@ -523,6 +546,7 @@ private:
       for(const vertex_descriptor& v : constrained) fixed[get(vid, v)] = 1; // a vertex of tm: precondition
     }
     var_.assign(nv_, -1);
+    held_.assign(nv_, 0);
     nfree_ = 0;
     for(std::size_t i = 0; i < nv_; ++i) if(!fixed[i]) var_[i] = nfree_++;
     border_free_.clear();
@@ -719,7 +743,21 @@ private:
       std::vector<Eigen::Triplet<double> >().swap(triplets_);
     }
     if(barrier_ && !add_barrier_derivatives(grad)) return false;
+    if(holding_) hold_rows(grad);
     return grad.allFinite();
+  }
+
+  // the rows and columns of the held vertices replaced by the identity's, their gradient by 0: the
+  // same sparsity pattern (its analysis is kept), and a zero step for them
+  void hold_rows(Eigen::VectorXd& grad)
+  {
+    std::vector<char> row_held(std::size_t(H_.rows()), 0);
+    for(std::size_t i = 0; i < nv_; ++i)
+      if(var_[i] >= 0 && held_[i]) row_held[std::size_t(2 * var_[i])] = row_held[std::size_t(2 * var_[i] + 1)] = 1;
+    for(long c = 0; c < H_.outerSize(); ++c)
+      for(typename SpMat::InnerIterator it(H_, c); it; ++it)
+        if(row_held[std::size_t(it.row())] || row_held[std::size_t(c)]) it.valueRef() = (it.row() == c) ? 1. : 0.;
+    for(long r = 0; r < grad.size(); ++r) if(row_held[std::size_t(r)]) grad(r) = 0;
   }
 
   // d = -H^-1 grad; a small relative shift keeps H definite (a free border leaves translations free)
@@ -1151,6 +1189,11 @@ private:
   Eigen::SimplicialLDLT<SpMat> ldlt_;
   bool analyzed_ = false;
   bool held_back_ = false; // the last global step was limited by the flip-free (or border contact) bound
+  // vertices held still by the global steps (loops in contact, see global_step()); holding_: any
+  std::vector<char> held_;
+  bool holding_ = false;
+  std::vector<std::array<std::size_t, 4> > contact_; // the loop edges touching at the last failed line search
+  static constexpr int max_hold_attempts = 4;
   bool barrier_ = false;   // the border barrier is on (free border of a disk)
   double barrier_reach_ = 0.5;           // reach of a pair, relative to the shortest reference edge length
   double reference_scale_ = 1;           // the scale of the reference triangles (on lengths)

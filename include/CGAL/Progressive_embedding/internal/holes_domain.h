@@ -160,9 +160,11 @@ struct Loop_count_limit_reached {};
 // `self` counts pairs within one loop (non-adjacent edges that touch, adjacent edges that fold
 // back onto each other; a loop of fewer than 3 vertices counts once), `crossing` pairs from two
 // different loops (closed segments touching). Counting stops when self + crossing reaches `limit`.
+// With `pairs`, the vertices (indices into P) of the two edges of each pair counted are appended to it.
 template <class Point_2, class Orientation_2>
 void count_loop_intersections(const std::vector<Point_2>& P, const std::vector<std::vector<std::size_t> >& loops,
-                              const Orientation_2& orient, std::size_t limit, std::size_t& self, std::size_t& crossing)
+                              const Orientation_2& orient, std::size_t limit, std::size_t& self, std::size_t& crossing,
+                              std::vector<std::array<std::size_t, 4> >* pairs = nullptr)
 {
   typedef CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::pair<std::size_t, std::size_t> > Box;
   self = crossing = 0;
@@ -197,14 +199,21 @@ void count_loop_intersections(const std::vector<Point_2>& P, const std::vector<s
     const std::size_t n1 = loops[l1].size(), n2 = loops[l2].size();
     const Point_2& p0 = Q[first[l1] + i]; const Point_2& p1 = Q[first[l1] + (i + 1) % n1];
     const Point_2& q0 = Q[first[l2] + j]; const Point_2& q1 = Q[first[l2] + (j + 1) % n2];
+    const auto record = [&]() {
+      if(pairs) pairs->push_back({{ loops[l1][i], loops[l1][(i + 1) % n1], loops[l2][j], loops[l2][(j + 1) % n2] }});
+    };
     if(l1 != l2)
     {
-      if(closed_segments_intersect(p0, p1, q0, q1, orient) && ++crossing + self >= limit) throw Loop_count_limit_reached();
+      if(closed_segments_intersect(p0, p1, q0, q1, orient))
+      {
+        record();
+        if(++crossing + self >= limit) throw Loop_count_limit_reached();
+      }
       return;
     }
-    if(i > j) std::swap(i, j);
     bool bad = false;
     const std::size_t n = n1;
+    if(i > j) std::swap(i, j);
     const Point_2& a0 = Q[first[l1] + i]; const Point_2& a1 = Q[first[l1] + (i + 1) % n];
     const Point_2& c0 = Q[first[l1] + j]; const Point_2& c1 = Q[first[l1] + (j + 1) % n];
     if(j == i + 1 || (i == 0 && j == n - 1))
@@ -217,7 +226,11 @@ void count_loop_intersections(const std::vector<Point_2>& P, const std::vector<s
     }
     else
       bad = closed_segments_intersect(a0, a1, c0, c1, orient);
-    if(bad && ++self + crossing >= limit) throw Loop_count_limit_reached();
+    if(bad)
+    {
+      record();
+      if(++self + crossing >= limit) throw Loop_count_limit_reached();
+    }
   };
   try { CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), report); }
   catch(const Loop_count_limit_reached&) { }

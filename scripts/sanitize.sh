@@ -9,7 +9,7 @@ scripts/setup.sh
 dir=${SANITIZE_BUILD_DIR:-build-sanitize}
 flags="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all"
 cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBUILD_TESTING=ON \
-      -DPE_BUILD_DOC=OFF -DPE_BUILD_BENCHMARKS=OFF -DPE_TEST_TIMEOUT_FACTOR=3 \
+      -DPE_BUILD_DOC=OFF -DPE_BUILD_BENCHMARKS=OFF -DPE_EXAMPLES_TOGETHER=ON -DPE_TEST_TIMEOUT_FACTOR=3 \
       -DCMAKE_CXX_FLAGS="$flags -O1" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined"
 cmake --build "$dir" -j"$(nproc)"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1

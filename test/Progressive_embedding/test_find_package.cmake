@@ -24,8 +24,10 @@ endif()
 if(NOT CMAKE_BUILD_TYPE)
   set(CMAKE_BUILD_TYPE Release)
 endif()
+# -O1: what is tested is the package's install and config, not the consumer's speed (a third less
+# compile time than Release's -O3)
 run("configure" ${CMAKE_COMMAND} -S "${PROJECT_SOURCE}" -B "${WORK_DIR}/build"
-    -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=${CMAKE_BUILD_TYPE})
+    -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=${CMAKE_BUILD_TYPE} "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG")
 run("build" ${CMAKE_COMMAND} --build "${WORK_DIR}/build")
 run("run" "${WORK_DIR}/build/consumer")
 if(NOT last_output MATCHES "certified valid")

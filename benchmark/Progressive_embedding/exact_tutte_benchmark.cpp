@@ -4,7 +4,7 @@
 
 // Benchmark driver (not run by ctest): tutte_embedding() in exact rationals (CGAL::Gmpq, p-adic
 // lifting) and in MPFR (CGAL::Gmpfr at 256 bits, iterative refinement from a double factorization),
-// uniform weights, on
+// uniform weights (`exact:parallel`: with CGAL::Parallel_tag, both cores), on
 //  - thingi:MESH:SEED  the Tutte-failure protocol on DATA_DIR/meshes/MESH.off (one face removed, its
 //                      three vertices pinned at (0,0), (1/2, sqrt(3)/2), (1,0), as `pe thingi` does);
 //  - grid:N            the N x N grid disk of `pe generate grid`, border on the circle by arc length.
@@ -26,8 +26,8 @@
 //
 // Standalone build (CGAL 5.5 headers, GMP, MPFR, Eigen), from the repository root (the "before" columns:
 // the same command with -I pointing at an older checkout's include/ instead of -Iinclude):
-//   g++ -std=c++17 -O2 -DNDEBUG -frounding-math -DCGAL_EIGEN3_ENABLED -DCGAL_USE_GMPXX=1 -Iinclude
-//       -I/usr/include/eigen3 benchmark/Progressive_embedding/exact_tutte_benchmark.cpp -lgmpxx -lgmp -lmpfr
+//   g++ -std=c++17 -O2 -DNDEBUG -frounding-math -DCGAL_EIGEN3_ENABLED -DCGAL_USE_GMPXX=1 -DCGAL_LINKED_WITH_TBB -Iinclude
+//       -I/usr/include/eigen3 benchmark/Progressive_embedding/exact_tutte_benchmark.cpp -lgmpxx -lgmp -lmpfr -ltbb
 //       -o exact_tutte_benchmark
 // The tables of benchmark/results/exact_tutte.{csv,md}:
 //   exact_tutte_benchmark DATA_DIR before --time-limit 120 --memory-limit-mb 12000     (built on the old headers)
@@ -118,7 +118,7 @@ FT from_double(double d)
   else return FT(d);
 }
 
-template <class FT>
+template <class FT, class ConcurrencyTag = CGAL::Sequential_tag>
 void run_in(Mesh& m, const std::vector<std::pair<vertex_descriptor, std::array<double, 2> > >& pins, double limit, Result& r)
 {
   typedef typename CGAL::Simple_cartesian<FT>::Point_2 P2;
@@ -126,7 +126,7 @@ void run_in(Mesh& m, const std::vector<std::pair<vertex_descriptor, std::array<d
   for(const auto& p : pins) uv[p.first] = P2(from_double<FT>(p.second[0]), from_double<FT>(p.second[1]));
   const PE::Border_shape shape = pins.empty() ? PE::Border_shape::CIRCLE : PE::Border_shape::FIXED;
   const auto t0 = std::chrono::steady_clock::now();
-  const PE::Error_code ec = PE::tutte_embedding(m, Mesh::null_halfedge(), uv,
+  const PE::Error_code ec = PE::tutte_embedding<ConcurrencyTag>(m, Mesh::null_halfedge(), uv,
                               PE::parameters::border_shape(shape, CGAL::parameters::maximum_running_time(limit)));
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.peak_mb = pe_bench::peak_rss_mb();
@@ -154,6 +154,7 @@ void run_child(const std::string& data, const std::string& name, const std::stri
   std::vector<std::pair<vertex_descriptor, std::array<double, 2> > > pins;
   if(!make_case(data, name, m, pins)) r.status = "NO_INPUT";
   else if(type == "exact") run_in<CGAL::Gmpq>(m, pins, limit, r);
+  else if(type == "exact:parallel") run_in<CGAL::Gmpq, CGAL::Parallel_tag>(m, pins, limit, r);
   else
   {
     CGAL::Gmpfr::set_default_precision(std::atol(type.substr(5).c_str()));
@@ -293,7 +294,8 @@ int main(int argc, char** argv)
   char date[64];
   std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
   md << "# Exact and MPFR Tutte maps: time and memory\n\n"
-     << "`tutte_embedding()`, uniform weights, in `CGAL::Gmpq` (exact) and `CGAL::Gmpfr` (`mpfr:BITS`); `thingi:MESH:SEED`: the\n"
+     << "`tutte_embedding()`, uniform weights, in `CGAL::Gmpq` (exact; `exact:parallel`: `tutte_embedding<CGAL::Parallel_tag>()`,\n"
+     << "two threads) and `CGAL::Gmpfr` (`mpfr:BITS`); `thingi:MESH:SEED`: the\n"
      << "Tutte-failure protocol on libcgal-demo's MESH.off, `grid:N`: the N x N grid disk, circle border. Times: wall clock of the\n"
      << "call, median of up to " << repeat << " runs (one when a run takes over " << single_run_seconds << " s; each in its own process); peak: the\n"
      << "process's VmHWM (MB). Growth per doubling:\n"

@@ -206,6 +206,7 @@ int test_exact_maps_unchanged(const std::string& data)
     if(c == 2) CHECK(read_mesh(data + "/meshes/dino.off", m), "read dino.off");
     else PE::internal::make_grid_disk(c == 0 ? 24 : 12, m);
     auto uvq = make_uv_map(m, Kq::Point_2());
+    auto uvp = make_uv_map(m, Kq::Point_2());
     auto uvf = make_uv_map(m, Kfr::Point_2());
     const auto saved = CGAL::Gmpfr::get_default_precision();
     CGAL::Gmpfr::set_default_precision(256);
@@ -218,6 +219,7 @@ int test_exact_maps_unchanged(const std::string& data)
       for(int k = 0; k < 3; ++k)
       {
         put(uvq, pin[k], Kq::Point_2(xy[k][0], xy[k][1]));
+        put(uvp, pin[k], Kq::Point_2(xy[k][0], xy[k][1]));
         put(uvf, pin[k], Kfr::Point_2(CGAL::Gmpfr(xy[k][0], 256), CGAL::Gmpfr(xy[k][1], 256)));
       }
       shape = PE::Border_shape::FIXED;
@@ -225,13 +227,17 @@ int test_exact_maps_unchanged(const std::string& data)
     const PE::Weights w = c == 1 ? PE::Weights::MEAN_VALUE : PE::Weights::UNIFORM;
     const bool okq = PE::tutte_embedding(m, null_h<Mesh>(), uvq, PE::parameters::weights(w, PE::parameters::border_shape(shape))) == PE::OK;
     const bool okf = PE::tutte_embedding(m, null_h<Mesh>(), uvf, PE::parameters::weights(w, PE::parameters::border_shape(shape))) == PE::OK;
+    // the p-adic solve on two threads (both coordinates lifted at once, the fractions in two halves)
+    const bool okp = PE::tutte_embedding<CGAL::Parallel_tag>(m, null_h<Mesh>(), uvp,
+                                                              PE::parameters::weights(w, PE::parameters::border_shape(shape))) == PE::OK;
     CGAL::Gmpfr::set_default_precision(saved);
-    const std::uint64_t dq = okq ? exact_digest(m, uvq) : 0, df = okf ? exact_digest(m, uvf) : 0;
-    std::cout << "  " << expected[c].name << ": exact " << std::hex << dq << ", mpfr:256 " << df << std::dec << std::endl;
+    const std::uint64_t dq = okq ? exact_digest(m, uvq) : 0, df = okf ? exact_digest(m, uvf) : 0, dp = okp ? exact_digest(m, uvp) : 0;
+    std::cout << "  " << expected[c].name << ": exact " << std::hex << dq << ", exact with Parallel_tag " << dp
+              << ", mpfr:256 " << df << std::dec << std::endl;
     // every case printed before the checks
-    all_same = all_same && okq && dq == expected[c].exact && okf && df == expected[c].mpfr;
+    all_same = all_same && okq && dq == expected[c].exact && okp && dp == expected[c].exact && okf && df == expected[c].mpfr;
   }
-  CHECK(all_same, "the exact and MPFR maps are unchanged (digests above)");
+  CHECK(all_same, "the exact (sequential and with Parallel_tag) and MPFR maps are unchanged (digests above)");
   {
     // the in-place MPFR elimination and the generic one (CGAL::Gmpfr's operators) agree bit for bit,
     // and so do the p-adic solve and the rational elimination on a non-symmetric system

@@ -51,7 +51,8 @@ PE::Error_code tutte_in(Input& in, const Tutte_settings& s, const Budget& budget
   for(vertex_descriptor v : vertices(in.mesh))
     uvx[v] = P2(ft_from_double<FT>(in.uv[v].x()), ft_from_double<FT>(in.uv[v].y())); // exact copy (fixed border)
   Progress bar(number_type_label(s.number_type), budget.progress());
-  const PE::Error_code ec = PE::tutte_embedding(in.mesh, Mesh::null_halfedge(), uvx,
+  // both cores for the exact solve (the same result as the sequential one)
+  const PE::Error_code ec = PE::tutte_embedding<CGAL::Parallel_tag>(in.mesh, Mesh::null_halfedge(), uvx,
     PE::parameters::weights(s.weights, PE::parameters::border_shape(s.border,
       CGAL::parameters::callback(bar.callback()).maximum_running_time(budget.remaining()))));
   bar.finish();

@@ -10,10 +10,12 @@
 // solution as integer numerators over one denominator.
 
 #include <CGAL/Progressive_embedding/internal/tutte_solve.h>
+#include <CGAL/Progressive_embedding/internal/parallel_for.h>
 
 #include <CGAL/Gmpq.h>
 #include <gmpxx.h>
 
+#include <atomic>
 #include <cstddef>
 #include <vector>
 
@@ -21,8 +23,9 @@ namespace CGAL {
 namespace Progressive_embedding {
 namespace internal {
 
-// The fractions num[c] / d (d > 0) in lowest terms, into xu (even c) and xv (odd c); num is
-// emptied on the way. A gcd per component costs several times a product, so the common denominator is split:
+// The fractions num[c] / d (d > 0) for c in [begin, end) in lowest terms, into xu (even c) and xv
+// (odd c), both already of their size; num[c] is emptied on the way. A gcd per component costs
+// several times a product, so the common denominator is split:
 // d = s Q with s made of the primes below 2^16 (trial division) and Q free of them. Each numerator
 // is reduced against s (a small gcd). Q is kept as pairwise coprime factors f, at first Q itself:
 // for each numerator and factor f, f divides the numerator (f holds full powers of its primes in d),
@@ -31,19 +34,14 @@ namespace internal {
 // When that gcd t is not 1, f splits into its t-part A and a rest coprime to the window's
 // numerators, which get their gcds with A; a gcd that separates primes of A splits it further.
 // (Symmetric meshes have many numerators sharing large factors with d: the factors soon become
-// those that divide each numerator or not.) false if the budget stops it.
-inline bool canonical_fractions(std::vector<mpz_class>& num, const mpz_class& d, Progress_budget& budget, double progress_from,
-                                std::vector<CGAL::Gmpq>& xu, std::vector<CGAL::Gmpq>& xv)
+// those that divide each numerator or not.) The caller gives s and Q; false when `report(c)`,
+// called every 256 components, returns false.
+template <class Report>
+bool canonical_fractions_range(std::vector<mpz_class>& num, const mpz_class& d, const mpz_class& s, const mpz_class& Q,
+                               std::size_t begin, std::size_t end, Report report,
+                               std::vector<CGAL::Gmpq>& xu, std::vector<CGAL::Gmpq>& xv)
 {
-  const std::size_t m = num.size(), n = m / 2;
-  mpz_class s = 1, Q = d, g, t, r, h;
-  for(unsigned long q = 2; q < 65536 && Q > 1; q += (q == 2 ? 1 : 2))
-  {
-    bool prime = true;
-    for(unsigned long f = 3; f * f <= q && prime; f += 2) if(q % f == 0) prime = false;
-    if(!prime) continue;
-    while(mpz_divisible_ui_p(Q.get_mpz_t(), q)) { mpz_divexact_ui(Q.get_mpz_t(), Q.get_mpz_t(), q); s *= q; }
-  }
+  mpz_class g, t, r, h;
   std::vector<mpz_class> part, chain; // pairwise coprime factors of Q, products of remainders modulo them
   // Products modulo a large factor f (odd) are Montgomery's: a b / 2^k mod f with 2^k > f, two
   // products instead of a division (about 20 % less at a few thousand bits); the powers of 2 do not
@@ -88,7 +86,6 @@ inline bool canonical_fractions(std::vector<mpz_class>& num, const mpz_class& d,
   std::vector<std::size_t> pending;     // numerators whose factors are not all known yet,
   std::vector<mpz_class> pending_gcd;   // and their common factor with d found so far
   std::vector<mpz_class> found;
-  xu.resize(n); xv.resize(n);
   auto emit = [&](std::size_t c, const mpz_class& common) {
     CGAL::Gmpq q;
     if(num[c] != 0)
@@ -128,7 +125,7 @@ inline bool canonical_fractions(std::vector<mpz_class>& num, const mpz_class& d,
     for(std::size_t k = 0; k < pending.size(); ++k) emit(pending[k], pending_gcd[k]);
     pending.clear(); pending_gcd.clear();
   };
-  for(std::size_t c = 0; c < m; ++c)
+  for(std::size_t c = begin; c < end; ++c)
   {
     if(num[c] == 0) { emit(c, 1); continue; }
     mpz_gcd(g.get_mpz_t(), num[c].get_mpz_t(), s.get_mpz_t());
@@ -154,10 +151,46 @@ inline bool canonical_fractions(std::vector<mpz_class>& num, const mpz_class& d,
     }
     pending.push_back(c); pending_gcd.push_back(g);
     if(pending.size() == window) flush();
-    if((c & 255) == 0 && !budget.report(progress_from + (1 - progress_from) * double(c) / double(m))) return false;
+    if((c & 255) == 0 && !report(c)) return false;
   }
   flush();
   return true;
+}
+
+// The fractions num[c] / d (d > 0) in lowest terms, into xu (even c) and xv (odd c); num is emptied on
+// the way. With CGAL::Parallel_tag (and TBB), the two halves of the components at the same time.
+// false if the budget stops it.
+template <class ConcurrencyTag = CGAL::Sequential_tag>
+bool canonical_fractions(std::vector<mpz_class>& num, const mpz_class& d, Progress_budget& budget, double progress_from,
+                         std::vector<CGAL::Gmpq>& xu, std::vector<CGAL::Gmpq>& xv)
+{
+  const std::size_t m = num.size(), n = m / 2;
+  mpz_class s = 1, Q = d;
+  for(unsigned long q = 2; q < 65536 && Q > 1; q += (q == 2 ? 1 : 2))
+  {
+    bool prime = true;
+    for(unsigned long f = 3; f * f <= q && prime; f += 2) if(q % f == 0) prime = false;
+    if(!prime) continue;
+    while(mpz_divisible_ui_p(Q.get_mpz_t(), q)) { mpz_divexact_ui(Q.get_mpz_t(), Q.get_mpz_t(), q); s *= q; }
+  }
+  xu.resize(n); xv.resize(n);
+  auto progress = [&](std::size_t done) { return budget.report(progress_from + (1 - progress_from) * double(done) / double(m)); };
+  if(!pair_is_parallel<ConcurrencyTag>() || m < 512)
+    return canonical_fractions_range(num, d, s, Q, 0, m, progress, xu, xv);
+  // the first half reports the progress (twice its own) and the budget; the second one stops with it
+  const std::size_t half = 2 * (n / 2);
+  std::atomic<bool> stop(false);
+  bool ok0 = true, ok1 = true;
+  run_pair<ConcurrencyTag>(
+    [&] { ok0 = canonical_fractions_range(num, d, s, Q, 0, half, [&](std::size_t c) {
+            if(!progress(2 * c)) { stop = true; return false; }
+            return !stop.load(); }, xu, xv);
+          if(!ok0) stop = true; },
+    [&] { ok1 = canonical_fractions_range(num, d, s, Q, half, m, [&](std::size_t) {
+            if(stop.load() || !budget.time_left()) { stop = true; return false; }
+            return true; }, xu, xv);
+          if(!ok1) stop = true; });
+  return ok0 && ok1;
 }
 
 } // namespace internal

@@ -11,12 +11,16 @@
 // reference-counted handles, shared between neighbouring items) and more than one worker; the items
 // are taken one at a time, in the given order (put the largest first). Otherwise sequential, w = 0.
 // number_of_workers<ConcurrencyTag, FT>(n, cap): the `workers` to pass (1 when sequential).
+// run_pair<ConcurrencyTag>(f0, f1): f0() and f1(), at the same time with CGAL::Parallel_tag when TBB
+// is linked and more than one thread is available (the two must share nothing they write), one after
+// the other otherwise; pair_is_parallel<ConcurrencyTag>() says which.
 
 #include <CGAL/tags.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
 #endif
@@ -59,6 +63,26 @@ void for_each_index(std::size_t n, int workers, Body body)
 #endif
   (void)workers;
   for(std::size_t i = 0; i < n; ++i) body(i, 0);
+}
+
+template <class ConcurrencyTag>
+bool pair_is_parallel()
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  return std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value && tbb::this_task_arena::max_concurrency() > 1;
+#else
+  return false;
+#endif
+}
+
+template <class ConcurrencyTag, class F0, class F1>
+void run_pair(F0&& f0, F1&& f1)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(pair_is_parallel<ConcurrencyTag>()) { tbb::parallel_invoke(f0, f1); return; }
+#endif
+  f0();
+  f1();
 }
 
 } // namespace internal

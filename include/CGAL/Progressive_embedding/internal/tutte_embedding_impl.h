@@ -65,7 +65,7 @@ Error_code place_border(const Indexed_disk<TriangleMesh>& disk, VertexUVMap uvm,
 // Solves the system with the solver the named parameters give, or the default one for FT:
 // Eigen (LDLT or LU) in floating point, p-adic lifting for Gmpq, iterative refinement from a double
 // factorization for MPFR, the elimination in FT otherwise (and when those cannot conclude).
-template <class FT, class NamedParameters>
+template <class ConcurrencyTag = CGAL::Sequential_tag, class FT, class NamedParameters>
 Error_code solve_tutte_system(Tutte_system<FT>& S, bool symmetric, const NamedParameters& np,
                               Progress_budget& budget, std::vector<FT>& xu, std::vector<FT>& xv)
 {
@@ -86,7 +86,7 @@ Error_code solve_tutte_system(Tutte_system<FT>& S, bool symmetric, const NamedPa
   else if constexpr(std::is_same<FT, CGAL::Gmpq>::value)
   {
     // p-adic lifting, verified; rational elimination when it cannot conclude
-    const Error_code ec = solve_by_p_adic_lifting(S, budget, xu, xv);
+    const Error_code ec = solve_by_p_adic_lifting<ConcurrencyTag>(S, budget, xu, xv);
     return (ec == ERROR_CANNOT_SOLVE_LINEAR_SYSTEM) ? solve_by_elimination(S, budget, xu, xv) : ec;
   }
   else if constexpr(std::is_same<FT, CGAL::Gmpfr>::value)
@@ -102,7 +102,7 @@ Error_code solve_tutte_system(Tutte_system<FT>& S, bool symmetric, const NamedPa
 // The interior positions of the Tutte map of `disk` (weights, solver, callback and time as the
 // named parameters of tutte_embedding() say), given the border positions in `pos` (by vertex
 // index); `pos` is written on the interior vertices only, and only on success.
-template <class TriangleMesh, class VPM, class Point_2, class NamedParameters>
+template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class VPM, class Point_2, class NamedParameters>
 Error_code tutte_interior(const Indexed_disk<TriangleMesh>& disk, VPM vpm, const NamedParameters& np,
                           Progress_budget& budget, std::vector<Point_2>& pos)
 {
@@ -120,7 +120,7 @@ Error_code tutte_interior(const Indexed_disk<TriangleMesh>& disk, VPM vpm, const
   } // the weights are released before the solve
   Error_code status = OK;
   std::vector<FT> xu, xv;
-  status = solve_tutte_system(S, wts == Weights::UNIFORM, np, budget, xu, xv);
+  status = solve_tutte_system<ConcurrencyTag>(S, wts == Weights::UNIFORM, np, budget, xu, xv);
   if(status != OK) return status;
   const std::size_t nv = disk.number_of_vertices();
   std::vector<Point_2> sol(nv);
@@ -138,7 +138,8 @@ Error_code tutte_interior(const Indexed_disk<TriangleMesh>& disk, VPM vpm, const
 
 // the body of tutte_embedding() (see its documentation there); `given`: the disk already indexed from `tm`
 // with the border cycle of `bhd` by the caller (a pipeline indexes once), or null
-template <typename TriangleMesh, typename VertexUVMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh, typename VertexUVMap,
+          typename CGAL_NP_TEMPLATE_PARAMETERS>
 Error_code tutte_embedding_impl(const TriangleMesh& tm,
                                 typename boost::graph_traits<TriangleMesh>::halfedge_descriptor bhd,
                                 VertexUVMap uvm,
@@ -185,7 +186,7 @@ Error_code tutte_embedding_impl(const TriangleMesh& tm,
   }
 
   internal::Progress_budget budget(callback, max_seconds);
-  status = internal::tutte_interior(disk, vpm, np, budget, pos);
+  status = internal::tutte_interior<ConcurrencyTag>(disk, vpm, np, budget, pos);
   if(status != OK) return status;
 
   // written only now: on every error the uv map is left as it was

@@ -41,11 +41,13 @@
 #include <CGAL/Progressive_embedding/internal/tutte_system.h>
 #include <CGAL/Progressive_embedding/internal/tutte_solve.h>
 #include <CGAL/Progressive_embedding/internal/lowest_terms.h>
+#include <CGAL/Progressive_embedding/internal/parallel_for.h>
 
 #include <CGAL/Gmpq.h>
 #include <gmpxx.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -253,6 +255,42 @@ struct Modular_lu
     }
   }
 
+  // r += sum_e val[e] y[col[e]] over e < count, modulo p (row_sum for one coordinate)
+  void row_sum_one(const std::uint32_t* col, const std::uint64_t* val, std::size_t count, const std::uint64_t* y,
+                   std::uint64_t& r) const
+  {
+    for(std::size_t first = 0; first < count; first += 16)
+    {
+      const std::size_t end = (std::min)(count, first + 16);
+      std::uint64_t lo = 0, hi = 0;
+      for(std::size_t e = first; e < end; ++e)
+      {
+        const unsigned __int128 pr = static_cast<unsigned __int128>(val[e]) * y[col[e]];
+        const std::uint64_t pl = static_cast<std::uint64_t>(pr);
+        lo += pl; hi += static_cast<std::uint64_t>(pr >> 64) + (lo < pl);
+      }
+      r = mod.add(r, mod.reduce(hi, lo));
+    }
+  }
+
+  // y = A^-1 y mod p for one coordinate (step numbering): the two coordinates in arrays of their own
+  // can be solved at the same time
+  void solve_one(std::vector<std::uint64_t>& yv) const
+  {
+    const std::size_t n = F->n;
+    const int* lp = F->l_ptr.data();
+    const int* up = F->u_ptr.data();
+    std::uint64_t* y = yv.data();
+    for(std::size_t k = 0; k < n; ++k)
+      row_sum_one(l_col.data() + lp[k], l_val.data() + lp[k], std::size_t(lp[k + 1] - lp[k]), y, y[k]);
+    for(std::size_t k = n; k-- > 0; )
+    {
+      std::uint64_t r = mod.mul(y[k], inv_pivot[k]);
+      row_sum_one(u_col.data() + up[k], u_val.data() + up[k], std::size_t(up[k + 1] - up[k]), y, r);
+      y[k] = r;
+    }
+  }
+
   // y = A^-1 y mod p (step numbering, interleaved u, v)
   void solve(std::vector<std::uint64_t>& yv) const
   {
@@ -452,8 +490,10 @@ inline void plan_numerators(const Integer_system& I, Numerator_plan& plan)
 
 // From the p-adic digits of the seeds over the first T steps (digits[t * 2 * seeds + 2 * i + side]),
 // the rational solution, verified exactly (A x = b in integers); false if the digits do not
-// determine it yet.
-inline bool reconstruct_solution(const Integer_system& I, const Numerator_plan& plan, const std::vector<std::uint64_t>& digits,
+// determine it yet. With CGAL::Parallel_tag (and TBB), the seeds' numerators over the d of the first
+// seed, the verification and the lowest terms in two halves at the same time.
+template <class ConcurrencyTag = CGAL::Sequential_tag>
+bool reconstruct_solution(const Integer_system& I, const Numerator_plan& plan, const std::vector<std::uint64_t>& digits,
                                  std::size_t T, std::uint64_t p, Progress_budget& budget, double progress_from,
                                  std::vector<CGAL::Gmpq>& xu, std::vector<CGAL::Gmpq>& xv, bool& stopped)
 {
@@ -480,10 +520,55 @@ inline bool reconstruct_solution(const Integer_system& I, const Numerator_plan& 
   std::vector<mpz_class> d_growth;  // the factors of d, in the order found,
   std::vector<std::size_t> grew_at; // and the seed component where each was found
   const double share = (1 - progress_from) / 2;
+  const bool parallel = pair_is_parallel<ConcurrencyTag>();
+  // In parallel: X d mod p^T2 for the seeds ahead, beforehand, over the d known after the first two
+  // seed components (usually all of it); when d has grown since by a factor f, such a value times f.
+  std::vector<mpz_class> early(parallel ? m : 0);
+  std::vector<char> early_ok(parallel ? m : 0, 0);
+  mpz_class early_d = 0, early_f, early_f_of = 0;
+  auto precompute = [&](std::size_t from) {
+    early_d = d;
+    mpz_class low;
+    mpz_fdiv_r(low.get_mpz_t(), d.get_mpz_t(), M2.get_mpz_t());
+    std::atomic<bool> stop(false);
+    auto range = [&](std::size_t begin, std::size_t end) {
+      std::vector<mpz_class> work;
+      mpz_class Xi;
+      for(std::size_t i = begin; i < end && !stop.load(); ++i)
+      {
+        combine_digits(digits, m, i, T2, powers, work, Xi);
+        mpz_mul(early[i].get_mpz_t(), Xi.get_mpz_t(), low.get_mpz_t());
+        mpz_fdiv_r(early[i].get_mpz_t(), early[i].get_mpz_t(), M2.get_mpz_t());
+        early_ok[i] = 1;
+        if((i & 63) == 0 && !budget.time_left()) stop = true;
+      }
+    };
+    const std::size_t mid = from + (m - from) / 2;
+    run_pair<ConcurrencyTag>([&] { range(from, mid); }, [&] { range(mid, m); });
+  };
   for(std::size_t i = 0; i < m; ++i)
   {
     const std::size_t c = 2 * plan.seeds[i / 2] + i % 2;
-    // |numerator| < bound < p^T2 / 2: it is d x_c modulo p^T2, from the first T2 digits only
+    if(parallel && i == 2 && m > 64) precompute(i);
+    if(parallel && early_ok[i])
+    {
+      if(d != early_d)
+      {
+        if(early_f_of != d) { mpz_divexact(early_f.get_mpz_t(), d.get_mpz_t(), early_d.get_mpz_t()); early_f_of = d; }
+        early[i] *= early_f;
+        mpz_fdiv_r(early[i].get_mpz_t(), early[i].get_mpz_t(), M2.get_mpz_t());
+      }
+      if(early[i] > half2) early[i] -= M2;
+      const bool over_d = abs(early[i]) < bound;
+      if(over_d) num[c].swap(early[i]);
+      mpz_class().swap(early[i]);
+      if(over_d)
+      {
+        if((i & 63) == 0 && !budget.report(progress_from + share * double(i) / double(m + n))) { stopped = true; return false; }
+        continue;
+      }
+      // not over d: the way below
+    }
     if(d_low_of != d) { mpz_fdiv_r(d_low.get_mpz_t(), d.get_mpz_t(), M2.get_mpz_t()); d_low_of = d; }
     combine_digits(digits, m, i, T2, powers, scratch, X);
     mpz_mul(y.get_mpz_t(), X.get_mpz_t(), d_low.get_mpz_t());
@@ -553,16 +638,22 @@ inline bool reconstruct_solution(const Integer_system& I, const Numerator_plan& 
     if((q & 255) == 0 && !budget.report(progress_from + share * double(m + q) / double(m + n))) { stopped = true; return false; }
   }
   // verification in integers: sum_j A_rj num_j = b_r d (the rows that defined an unknown hold by construction)
-  for(std::size_t r = 0; r < n; ++r)
-    if(!plan.defining[r])
-    for(int side = 0; side < 2; ++side)
-    {
-      mpz_mul(s.get_mpz_t(), (side ? I.bv[r] : I.bu[r]).get_mpz_t(), d.get_mpz_t());
-      for(const auto& e : I.rows[r]) mpz_submul(s.get_mpz_t(), e.second.get_mpz_t(), num[2 * e.first + side].get_mpz_t());
-      if(s != 0) return false;
-    }
+  std::atomic<bool> wrong(false);
+  auto verify = [&](std::size_t begin, std::size_t end) {
+    mpz_class sum;
+    for(std::size_t r = begin; r < end && !wrong.load(); ++r)
+      if(!plan.defining[r])
+      for(int side = 0; side < 2; ++side)
+      {
+        mpz_mul(sum.get_mpz_t(), (side ? I.bv[r] : I.bu[r]).get_mpz_t(), d.get_mpz_t());
+        for(const auto& e : I.rows[r]) mpz_submul(sum.get_mpz_t(), e.second.get_mpz_t(), num[2 * e.first + side].get_mpz_t());
+        if(sum != 0) { wrong = true; return; }
+      }
+  };
+  run_pair<ConcurrencyTag>([&] { verify(0, n / 2); }, [&] { verify(n / 2, n); });
+  if(wrong.load()) return false;
   if(!budget.report(progress_from + share)) { stopped = true; return false; }
-  if(!canonical_fractions(num, d, budget, progress_from + share, xu, xv)) { stopped = true; return false; }
+  if(!canonical_fractions<ConcurrencyTag>(num, d, budget, progress_from + share, xu, xv)) { stopped = true; return false; }
   return true;
 }
 
@@ -624,7 +715,10 @@ private:
 // cannot conclude (unlucky primes, failed verification): the caller then eliminates in rationals.
 // The solution is tried at the estimated number of steps (then every quarter of it more, up to
 // the Hadamard bound); without an estimate after 16, 32, 64, ... steps and at the Hadamard bound.
-inline Error_code solve_by_p_adic_lifting(const Tutte_system<CGAL::Gmpq>& S, Progress_budget& budget,
+// With CGAL::Parallel_tag (and TBB), the two coordinates are lifted at the same time, and the
+// reconstruction runs in two halves (reconstruct_solution()); the result is the same.
+template <class ConcurrencyTag = CGAL::Sequential_tag>
+Error_code solve_by_p_adic_lifting(const Tutte_system<CGAL::Gmpq>& S, Progress_budget& budget,
                                           std::vector<CGAL::Gmpq>& xu, std::vector<CGAL::Gmpq>& xv)
 {
   const std::size_t n = S.n;
@@ -723,8 +817,57 @@ inline Error_code solve_by_p_adic_lifting(const Tutte_system<CGAL::Gmpq>& S, Pro
   std::vector<std::size_t> seed_step(plan.seeds.size());
   for(std::size_t i = 0; i < plan.seeds.size(); ++i) seed_step[i] = static_cast<std::size_t>(F.step[plan.seeds[i]]);
   Early_termination early(T_goal);
+  const bool parallel = pair_is_parallel<ConcurrencyTag>();
+  // one coordinate of a step: x_t = A^-1 r_t mod p, r_{t+1} = (r_t - A x_t) / p and its residues,
+  // in arrays of that coordinate only (two threads write no common cache line)
+  std::vector<std::uint64_t> ys[2], ys_next[2];
+  if(parallel)
+    for(std::size_t side = 0; side < 2; ++side)
+    {
+      ys[side].resize(n); ys_next[side].resize(n);
+      for(std::size_t k = 0; k < n; ++k) ys[side][k] = y[2 * k + side];
+    }
+  auto lift_side = [&](std::size_t side, mpz_class& x_side) {
+    std::vector<std::uint64_t>& xs = ys[side];
+    std::vector<std::uint64_t>& next = ys_next[side];
+    lu.solve_one(xs);
+    std::vector<std::uint64_t>& r64 = side ? rv64 : ru64;
+    std::vector<mpz_class>& rbig = side ? rv : ru;
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      if(!big[k])
+      {
+        std::uint64_t sum = r64[k];
+        for(std::size_t e = aptr[k]; e < aptr[k + 1]; ++e) sum -= static_cast<std::uint64_t>(aval[e]) * xs[acol[e]];
+        r64[k] = sum * pinv;
+        next[k] = lu.mod.reduce(static_cast<std::int64_t>(r64[k]));
+        continue;
+      }
+      const std::size_t r = static_cast<std::size_t>(F.order[k]);
+      for(const auto& e : I.rows[r])
+      {
+        const std::uint64_t xj = xs[static_cast<std::size_t>(F.step[e.first])];
+        if(xj) { set_uint64(x_side, xj); mpz_submul(rbig[k].get_mpz_t(), e.second.get_mpz_t(), x_side.get_mpz_t()); }
+      }
+      mpz_divexact(rbig[k].get_mpz_t(), rbig[k].get_mpz_t(), p_mpz.get_mpz_t());
+      next[k] = lu.mod.reduce(rbig[k]);
+    }
+  };
+  mpz_class x_v;
   for(std::size_t t = 0; t < T_max; ++t)
   {
+    if(parallel)
+    {
+      run_pair<ConcurrencyTag>([&] { lift_side(0, x_mpz); }, [&] { lift_side(1, x_v); });
+      for(std::size_t i = 0; i < seed_step.size(); ++i)
+      {
+        digits.push_back(ys[0][seed_step[i]]);
+        digits.push_back(ys[1][seed_step[i]]);
+      }
+      ys[0].swap(ys_next[0]); ys[1].swap(ys_next[1]);
+    }
+    else
+    {
     lu.solve(y); // x_t = A^-1 r_t mod p
     const std::uint64_t* x = y.data();
     for(std::size_t i = 0; i < seed_step.size(); ++i)
@@ -761,6 +904,7 @@ inline Error_code solve_by_p_adic_lifting(const Tutte_system<CGAL::Gmpq>& S, Pro
       y_next[2 * k] = lu.mod.reduce(ru[k]); y_next[2 * k + 1] = lu.mod.reduce(rv[k]);
     }
     y.swap(y_next);
+    }
     // progress: the lifting is the first half of the work when the number of steps is known
     const double lifted = double(t + 1) / double(T_goal ? T_goal : T_max);
     if(!budget.report(0.5 * (std::min)(1., lifted))) return ERROR_BUDGET_EXHAUSTED;
@@ -770,7 +914,7 @@ inline Error_code solve_by_p_adic_lifting(const Tutte_system<CGAL::Gmpq>& S, Pro
     if(attempt)
     {
       bool stopped = false;
-      if(reconstruct_solution(I, plan, digits, t + 1, p, budget, 0.5, xu, xv, stopped)) return budget.report(1) ? OK : ERROR_BUDGET_EXHAUSTED;
+      if(reconstruct_solution<ConcurrencyTag>(I, plan, digits, t + 1, p, budget, 0.5, xu, xv, stopped)) return budget.report(1) ? OK : ERROR_BUDGET_EXHAUSTED;
       if(stopped) return ERROR_BUDGET_EXHAUSTED;
       if(t + 1 < next_try) { early.failed(t + 1); continue; }
       next_try = T_goal ? (std::min)(T_max, next_try + (std::max)(std::size_t(1), next_try / 4)) : 2 * next_try;

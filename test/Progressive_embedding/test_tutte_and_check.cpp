@@ -911,6 +911,61 @@ int test_helpers()
 {
   std::cout << "[" << mesh_name<Mesh>() << "] exact predicates and passes alone" << std::endl;
   typedef Kq::Point_2 Q;
+  {
+    // the rational orientation and area without lowest terms, against CGAL::Gmpq's arithmetic: long fractions
+    // over one denominator, over its divisors (the coordinates of exact Tutte maps), over unrelated ones, and
+    // nearly or exactly collinear triples
+    gmp_randclass rng(gmp_randinit_default);
+    rng.seed(7);
+    std::size_t cases = 0, exact_zero = 0;
+    auto fraction = [](const mpz_class& n, const mpz_class& den) {
+      CGAL::Gmpq q;
+      mpq_set_num(q.mpq(), n.get_mpz_t());
+      mpq_set_den(q.mpq(), den.get_mpz_t());
+      mpq_canonicalize(q.mpq());
+      return q;
+    };
+    auto small = [&](int k) { return int(mpz_class(rng.get_z_range(k)).get_si()); };
+    for(int trial = 0; trial < 600; ++trial)
+    {
+      const mpz_class d = rng.get_z_bits(2000) * 6 + 6;
+      auto coordinate = [&](int kind) {
+        mpz_class den = d;
+        if(kind == 1) den = d / (1 + small(3)); // 6 is a factor of d
+        if(kind == 2) den = rng.get_z_bits(1500) + 1;
+        return fraction(mpz_class(rng.get_z_bits(2000)) - mpz_class(rng.get_z_bits(2000)), den);
+      };
+      const int kind = trial % 3;
+      std::array<CGAL::Gmpq, 6> c;
+      for(auto& x : c) x = coordinate(kind == 2 ? small(3) : kind);
+      if(trial % 5 == 3)
+      {
+        // r on the line pq, then moved by 1/d or not at all
+        const CGAL::Gmpq t = fraction(mpz_class(rng.get_z_bits(30)), mpz_class(rng.get_z_bits(30)) + 1);
+        c[4] = c[0] + t * (c[2] - c[0]);
+        c[5] = c[1] + t * (c[3] - c[1]) + (trial % 2 ? fraction(mpz_class(1), d) : CGAL::Gmpq(0));
+      }
+      const CGAL::Gmpq det = (c[2] - c[0]) * (c[5] - c[1]) - (c[3] - c[1]) * (c[4] - c[0]);
+      const CGAL::Orientation o = PE::internal::rational_orientation(c[0], c[1], c[2], c[3], c[4], c[5]);
+      CHECK(o == CGAL::Orientation(CGAL::sign(det)), "rational orientation, trial " << trial);
+      double m = 0;
+      long e = 0;
+      PE::internal::rational_twice_area(c[0], c[1], c[2], c[3], c[4], c[5], m, e);
+      if(det == 0) { CHECK(m == 0, "a zero area is zero, trial " << trial); ++exact_zero; }
+      else
+      {
+        // compare m 2^e with det in rationals: |m 2^e - det| <= 2^-39 |det|
+        CGAL::Gmpq approx(m);
+        const CGAL::Gmpq power = fraction(mpz_class(1) << static_cast<mp_bitcnt_t>(e >= 0 ? e : -e), mpz_class(1));
+        approx = e >= 0 ? approx * power : approx / power;
+        CGAL::Gmpq err = approx - det;
+        if(err < 0) err = -err;
+        CHECK(err * fraction(mpz_class(1) << 39, mpz_class(1)) <= (det < 0 ? -det : det), "twice the area within 2^-39, trial " << trial);
+      }
+      ++cases;
+    }
+    std::cout << "  rational orientation and area: " << cases << " triples (" << exact_zero << " collinear) as CGAL::Gmpq computes them" << std::endl;
+  }
   auto big = [](double x, double y, long e) { return Q(scaled_ft<CGAL::Gmpq>(x, e), scaled_ft<CGAL::Gmpq>(y, e)); };
   for(long e : { 0L, 1100L, -1100L })
   {

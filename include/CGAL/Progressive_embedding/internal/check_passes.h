@@ -167,7 +167,10 @@ struct Face_areas
 };
 
 // Signed areas relative to the border orientation. Evaluated in double on the scaled
-// coordinates, and exactly where the double value is unreliable (always for exact types).
+// coordinates, and exactly where the double value is unreliable; for exact and MPFR types from the
+// rationals, to a relative 2^-40 (rational_twice_area(): exact coordinate differences, products in
+// double unless they nearly cancel), without a gcd per operation on the long fractions of exact
+// Tutte maps.
 template <class TriangleMesh, class Point_2>
 void area_pass(const Indexed_disk<TriangleMesh>& disk, const Uv_samples<Point_2>& s, const Face_orientations& o, Face_areas& r)
 {
@@ -201,9 +204,20 @@ void area_pass(const Indexed_disk<TriangleMesh>& disk, const Uv_samples<Point_2>
     }
     if(exact)
     {
-      const CGAL::Gmpq a2 = twice_signed_area(s.qx(t[0]), s.qy(t[0]), s.qx(t[1]), s.qy(t[1]), s.qx(t[2]), s.qy(t[2]));
-      a = CGAL::to_double(times_power_of_two(a2, 2 * s.shift - 1));
-      a_map = CGAL::to_double(times_power_of_two(a2, -1));
+      if constexpr(Uv_samples<Point_2>::floating)
+      {
+        const CGAL::Gmpq a2 = twice_signed_area(s.qx(t[0]), s.qy(t[0]), s.qx(t[1]), s.qy(t[1]), s.qx(t[2]), s.qy(t[2]));
+        a = CGAL::to_double(times_power_of_two(a2, 2 * s.shift - 1));
+        a_map = CGAL::to_double(times_power_of_two(a2, -1));
+      }
+      else
+      {
+        double m = 0;
+        long e = 0;
+        rational_twice_area(s.QX[t[0]], s.QY[t[0]], s.QX[t[1]], s.QY[t[1]], s.QX[t[2]], s.QY[t[2]], m, e);
+        a = std::ldexp(m, int((std::max)((std::min)(e + 2 * s.shift - 1, 4000L), -4000L)));
+        a_map = std::ldexp(m, int((std::max)((std::min)(e - 1, 4000L), -4000L)));
+      }
     }
     r.scaled[f] = sgn * a;
     r.min_area = (std::min)(r.min_area, sgn * a_map);

@@ -27,6 +27,7 @@
 #include <CGAL/number_utils.h>
 
 #include <gmp.h>
+#include <gmpxx.h>
 
 #include <algorithm>
 #include <array>
@@ -67,6 +68,103 @@ CGAL::Orientation filtered_orientation(const FT& px, const FT& py, const FT& qx,
   return CGAL::COLLINEAR;
 }
 
+// a - b as num / den, not in lowest terms: (na - nb) / d when da = db = d; over the larger denominator
+// when one divides the other (the coordinates of an exact Tutte map: divisors of one common
+// denominator, their quotients small); (na db - nb da) / (da db) otherwise
+inline void rational_difference(const CGAL::Gmpq& a, const CGAL::Gmpq& b, mpz_class& num, mpz_class& den)
+{
+  const mpz_srcptr na = mpq_numref(a.mpq()), da = mpq_denref(a.mpq()), nb = mpq_numref(b.mpq()), db = mpq_denref(b.mpq());
+  if(mpz_cmp(da, db) == 0) { mpz_sub(num.get_mpz_t(), na, nb); mpz_set(den.get_mpz_t(), da); return; }
+  if(mpz_cmp(da, db) < 0 && mpz_divisible_p(db, da))
+  {
+    mpz_divexact(den.get_mpz_t(), db, da); // the quotient, for a moment
+    mpz_mul(num.get_mpz_t(), na, den.get_mpz_t());
+    mpz_sub(num.get_mpz_t(), num.get_mpz_t(), nb);
+    mpz_set(den.get_mpz_t(), db);
+    return;
+  }
+  if(mpz_cmp(db, da) < 0 && mpz_divisible_p(da, db))
+  {
+    mpz_divexact(den.get_mpz_t(), da, db);
+    mpz_mul(num.get_mpz_t(), nb, den.get_mpz_t());
+    mpz_sub(num.get_mpz_t(), na, num.get_mpz_t());
+    mpz_set(den.get_mpz_t(), da);
+    return;
+  }
+  mpz_mul(num.get_mpz_t(), na, db);
+  mpz_submul(num.get_mpz_t(), nb, da);
+  mpz_mul(den.get_mpz_t(), da, db);
+}
+
+// Twice the signed area of (p, q, r) as m 2^e with a relative error below 2^-40 (m = 0 for a zero area;
+// the sign is exact). The four coordinate differences are exact integers over their denominators
+// (rational_difference(), no product when the denominators agree, as on an exact Tutte map), rounded to
+// double with their own relative error of a few units in the last place, so that the determinant in
+// double is accurate unless its two products nearly cancel; then it is computed exactly, from two
+// products of integers (and of denominators when they differ). With `sign_only`, m is accurate
+// enough for its sign only.
+inline void rational_twice_area(const CGAL::Gmpq& px, const CGAL::Gmpq& py, const CGAL::Gmpq& qx,
+                                const CGAL::Gmpq& qy, const CGAL::Gmpq& rx, const CGAL::Gmpq& ry, double& m, long& e,
+                                bool sign_only = false)
+{
+  mpz_class n[4], d[4];
+  rational_difference(qx, px, n[0], d[0]);
+  rational_difference(ry, py, n[1], d[1]);
+  rational_difference(qy, py, n[2], d[2]);
+  rational_difference(rx, px, n[3], d[3]);
+  // an integer z as f 2^k with 1/2 <= |f| < 1 (truncated: relative error below 2^-53)
+  auto split = [](const mpz_class& z, double& f, long& k) { f = mpz_get_d_2exp(&k, z.get_mpz_t()); };
+  double v[4];
+  long x[4];
+  for(int k = 0; k < 4; ++k)
+  {
+    double fn, fd;
+    long kn, kd;
+    split(n[k], fn, kn); split(d[k], fd, kd);
+    v[k] = fn / fd; x[k] = kn - kd; // relative error below 3 2^-53
+  }
+  const bool zero1 = v[0] == 0 || v[1] == 0, zero2 = v[2] == 0 || v[3] == 0;
+  if(zero1 && zero2) { m = 0; e = 0; return; }
+  const long e1 = x[0] + x[1], e2 = x[2] + x[3];
+  e = zero1 ? e2 : (zero2 ? e1 : (std::max)(e1, e2));
+  // the products scaled by 2^-e (at most 4 in absolute value, exact scaling unless below 2^-1000)
+  const double p1 = zero1 ? 0. : std::ldexp(v[0] * v[1], int((std::max)(e1 - e, -1100L)));
+  const double p2 = zero2 ? 0. : std::ldexp(v[2] * v[3], int((std::max)(e2 - e, -1100L)));
+  m = p1 - p2;
+  const double bound = std::ldexp(std::abs(p1) + std::abs(p2), -49); // 8 2^-52 per product, and the rounding
+  if(std::abs(m) > (sign_only ? bound : std::ldexp(bound, 40))) return;
+  // nearly cancelling: exactly
+  mpz_class num = n[0] * n[1], right = n[2] * n[3], den;
+  if((d[0] == d[2] && d[1] == d[3]) || (d[0] == d[3] && d[1] == d[2])) den = d[0] * d[1];
+  else
+  {
+    num *= d[2] * d[3];
+    right *= d[0] * d[1];
+    den = d[0] * d[1] * d[2] * d[3];
+  }
+  num -= right;
+  if(num == 0) { m = 0; e = 0; return; }
+  double fn, fd;
+  long kn, kd;
+  split(num, fn, kn); split(den, fd, kd);
+  m = fn / fd; e = kn - kd;
+}
+
+// The orientation of three points with rational coordinates, from their numerators and denominators:
+// the sign of (qx - px)(ry - py) - (qy - py)(rx - px) = n0 n1 / (d0 d1) - n2 n3 / (d2 d3) (denominators
+// positive), in double where that decides, with two products of integers otherwise. CGAL::Gmpq's
+// operators put every intermediate result in lowest terms, a gcd per operation: on the fractions of an
+// exact Tutte map (tens of thousands of bits over one common denominator) the gcds cost about a hundred
+// times the products.
+inline CGAL::Orientation rational_orientation(const CGAL::Gmpq& px, const CGAL::Gmpq& py, const CGAL::Gmpq& qx,
+                                              const CGAL::Gmpq& qy, const CGAL::Gmpq& rx, const CGAL::Gmpq& ry)
+{
+  double m = 0;
+  long e = 0;
+  rational_twice_area(px, py, qx, qy, rx, ry, m, e, true);
+  return m > 0 ? CGAL::LEFT_TURN : (m < 0 ? CGAL::RIGHT_TURN : CGAL::COLLINEAR);
+}
+
 // exact orientation of coordinates in any supported number type
 template <class FT>
 CGAL::Orientation exact_orientation_ft(const FT& px, const FT& py, const FT& qx, const FT& qy, const FT& rx, const FT& ry)
@@ -84,15 +182,14 @@ CGAL::Orientation exact_orientation_ft(const FT& px, const FT& py, const FT& qx,
     bool decided = false;
     const CGAL::Orientation o = filtered_orientation(px, py, qx, qy, rx, ry, decided);
     if(decided) return o;
-    if constexpr(Is_exact_ft<FT>::value)
+    if constexpr(std::is_same<FT, CGAL::Gmpq>::value)
+      return rational_orientation(px, py, qx, qy, rx, ry);
+    else if constexpr(Is_exact_ft<FT>::value)
       return CGAL::Orientation(CGAL::sign((qx - px) * (ry - py) - (qy - py) * (rx - px)));
     else
-    {
       // MPFR and other rounded types: their values are rationals, decide there
-      const CGAL::Gmpq x0 = to_rational(px), y0 = to_rational(py);
-      const CGAL::Gmpq det = (to_rational(qx) - x0) * (to_rational(ry) - y0) - (to_rational(qy) - y0) * (to_rational(rx) - x0);
-      return CGAL::Orientation(CGAL::sign(det));
-    }
+      return rational_orientation(to_rational(px), to_rational(py), to_rational(qx), to_rational(qy), to_rational(rx),
+                                  to_rational(ry));
   }
 }
 

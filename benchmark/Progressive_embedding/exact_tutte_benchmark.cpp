@@ -9,7 +9,8 @@
 //                      three vertices pinned at (0,0), (1/2, sqrt(3)/2), (1,0), as `pe thingi` does);
 //  - grid:N            the N x N grid disk of `pe generate grid`, border on the circle by arc length.
 // Each run is a child process (fork) so that its peak resident memory (VmHWM) is its own; its time is
-// the wall clock of the tutte_embedding() call alone. The digest is a hash of the solution's exact
+// the wall clock of the tutte_embedding() call alone; then check_embedding() certifies the map in its number
+// type (timed apart). The digest is a hash of the solution's exact
 // values (MPFR values converted exactly to rationals): two builds that give the same digest computed
 // the same map, bit for bit.
 //
@@ -35,6 +36,7 @@
 //       --before before.csv
 
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
+#include <CGAL/Progressive_embedding/check_embedding.h>
 #include <CGAL/Progressive_embedding/internal/tutte_failure_protocol.h>
 #include <CGAL/Progressive_embedding/internal/disk_generators.h>
 #include "process_memory.h"
@@ -96,6 +98,8 @@ struct Result
   std::size_t vertices = 0, unknowns = 0;
   double seconds = 0, peak_mb = 0;
   std::string digest = "-";
+  double certificate_seconds = 0;  // check_embedding() in the number type, after the solve
+  std::string certified = "-";
 };
 
 // the input of one case, its border placed in double (the thingi pins) or by the circle shape
@@ -145,6 +149,10 @@ void run_in(Mesh& m, const std::vector<std::pair<vertex_descriptor, std::array<d
   std::ostringstream os;
   os << std::hex << std::setw(16) << std::setfill('0') << d.h;
   r.digest = os.str();
+  const auto t1 = std::chrono::steady_clock::now();
+  const PE::Embedding_report report = PE::check_embedding(m, uv);
+  r.certificate_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+  r.certified = report.is_valid() ? "valid" : "INVALID";
 }
 
 void run_child(const std::string& data, const std::string& name, const std::string& type, double limit, int fd)
@@ -161,7 +169,8 @@ void run_child(const std::string& data, const std::string& name, const std::stri
     run_in<CGAL::Gmpfr>(m, pins, limit, r);
   }
   std::ostringstream os;
-  os << r.status << ' ' << r.vertices << ' ' << r.unknowns << ' ' << r.seconds << ' ' << r.peak_mb << ' ' << r.digest << '\n';
+  os << r.status << ' ' << r.vertices << ' ' << r.unknowns << ' ' << r.seconds << ' ' << r.peak_mb << ' ' << r.digest << ' '
+     << r.certificate_seconds << ' ' << r.certified << '\n';
   const std::string s = os.str();
   if(::write(fd, s.data(), s.size()) < 0) { }
 }
@@ -174,25 +183,27 @@ Result run_one(const std::string& data, const std::string& name, const std::stri
   if(status == -1) return r;
   std::istringstream is(out);
   Result got;
-  if(is >> got.status >> got.vertices >> got.unknowns >> got.seconds >> got.peak_mb >> got.digest) return got;
+  if(is >> got.status >> got.vertices >> got.unknowns >> got.seconds >> got.peak_mb >> got.digest >> got.certificate_seconds
+        >> got.certified) return got;
   r.status = (WIFSIGNALED(status) || memory_mb > 0) ? "FAILED(memory?)" : "CRASHED";
   return r;
 }
 
 struct Row
 {
-  std::string name, type, status, digest;
+  std::string name, type, status, digest, certified = "-";
   std::size_t vertices = 0, unknowns = 0, runs = 0;
-  double seconds = 0, peak_mb = 0;
+  double seconds = 0, peak_mb = 0, certificate_seconds = 0;
 };
 
-const char* csv_header = "case,number_type,vertices,unknowns,status,runs,median_seconds,peak_rss_mb,digest";
+const char* csv_header = "case,number_type,vertices,unknowns,status,runs,median_seconds,peak_rss_mb,digest,"
+                         "certificate_seconds,certified";
 
 std::string csv_row(const Row& r)
 {
   std::ostringstream os;
   os << r.name << ',' << r.type << ',' << r.vertices << ',' << r.unknowns << ',' << r.status << ',' << r.runs << ','
-     << r.seconds << ',' << r.peak_mb << ',' << r.digest;
+     << r.seconds << ',' << r.peak_mb << ',' << r.digest << ',' << r.certificate_seconds << ',' << r.certified;
   return os.str();
 }
 
@@ -251,7 +262,7 @@ int main(int argc, char** argv)
       Row row;
       row.name = name; row.type = type;
       // the median of the successful runs; a row without one reports its first failure
-      std::vector<double> secs, mem;
+      std::vector<double> secs, mem, certs;
       for(int k = 0; k < repeat; ++k)
       {
         const Result r = run_one(data, name, type, limit, memory_mb);
@@ -262,7 +273,8 @@ int main(int argc, char** argv)
           if(row.status == "OK" && row.digest != r.digest) row.digest = "DIFFERS";
           else row.digest = r.digest;
           row.status = "OK";
-          secs.push_back(r.seconds); mem.push_back(r.peak_mb);
+          secs.push_back(r.seconds); mem.push_back(r.peak_mb); certs.push_back(r.certificate_seconds);
+          if(row.certified != "INVALID") row.certified = r.certified;
           if(r.seconds > single_run_seconds) break; // slow: one run
         }
         else if(secs.empty())
@@ -275,6 +287,7 @@ int main(int argc, char** argv)
       if(!secs.empty())
       {
         row.seconds = median(secs);
+        row.certificate_seconds = median(certs);
         row.peak_mb = *std::max_element(mem.begin(), mem.end());
       }
       rows.push_back(row);
@@ -298,12 +311,13 @@ int main(int argc, char** argv)
      << "two threads) and `CGAL::Gmpfr` (`mpfr:BITS`); `thingi:MESH:SEED`: the\n"
      << "Tutte-failure protocol on libcgal-demo's MESH.off, `grid:N`: the N x N grid disk, circle border. Times: wall clock of the\n"
      << "call, median of up to " << repeat << " runs (one when a run takes over " << single_run_seconds << " s; each in its own process); peak: the\n"
-     << "process's VmHWM (MB). Growth per doubling:\n"
+     << "process's VmHWM (MB); certificate: `check_embedding()` of the map in its number type after the call (what\n"
+     << "`pe tutte --number-type` runs before rounding), its time and verdict. Growth per doubling (of the call):\n"
      << "(t2/t1)^(1/log2(n2/n1)) between consecutive rows of one family. Date " << date << ", host " << host
      << ", time limit " << limit << " s per run.\n\n";
-  md << "| case | number type | vertices | unknowns | status | seconds | peak MB |";
+  md << "| case | number type | vertices | unknowns | status | seconds | peak MB | certificate s | certified |";
   if(!before.empty()) md << " before: status | before: seconds | before: peak MB | speed-up | same result |";
-  md << " growth per doubling |\n|---|---|---|---|---|---|---|";
+  md << " growth per doubling |\n|---|---|---|---|---|---|---|---|---|";
   if(!before.empty()) md << "---|---|---|---|---|";
   md << "---|\n";
   for(std::size_t i = 0; i < rows.size(); ++i)
@@ -320,7 +334,8 @@ int main(int argc, char** argv)
       }
     csv << csv_row(r);
     md << "| " << r.name << " | " << r.type << " | " << r.vertices << " | " << r.unknowns << " | " << r.status << " | "
-       << fixed(r.seconds, 3) << " | " << fixed(r.peak_mb, 0) << " |";
+       << fixed(r.seconds, 3) << " | " << fixed(r.peak_mb, 0) << " | " << (r.status == "OK" ? fixed(r.certificate_seconds, 3) : "")
+       << " | " << r.certified << " |";
     if(!before.empty())
     {
       auto it = before.find(r.name + "|" + r.type);

@@ -68,72 +68,104 @@ CGAL::Orientation filtered_orientation(const FT& px, const FT& py, const FT& qx,
   return CGAL::COLLINEAR;
 }
 
-// a - b as num / den, not in lowest terms: (na - nb) / d when da = db = d; over the larger denominator
-// when one divides the other (the coordinates of an exact Tutte map: divisors of one common
-// denominator, their quotients small); (na db - nb da) / (da db) otherwise
-inline void rational_difference(const CGAL::Gmpq& a, const CGAL::Gmpq& b, mpz_class& num, mpz_class& den)
+// a - b as num / den, not in lowest terms, when that needs no product of two long integers: (na - nb) / d
+// when da = db = d, over the larger denominator when one divides the other (the coordinates of an exact
+// Tutte map are mostly over one common denominator or its divisors, the quotients small); false otherwise
+inline bool cheap_rational_difference(const CGAL::Gmpq& a, const CGAL::Gmpq& b, mpz_class& num, mpz_class& den)
 {
   const mpz_srcptr na = mpq_numref(a.mpq()), da = mpq_denref(a.mpq()), nb = mpq_numref(b.mpq()), db = mpq_denref(b.mpq());
-  if(mpz_cmp(da, db) == 0) { mpz_sub(num.get_mpz_t(), na, nb); mpz_set(den.get_mpz_t(), da); return; }
-  if(mpz_cmp(da, db) < 0 && mpz_divisible_p(db, da))
+  const int c = mpz_cmp(da, db);
+  if(c == 0) { mpz_sub(num.get_mpz_t(), na, nb); mpz_set(den.get_mpz_t(), da); return true; }
+  if(c < 0 && mpz_divisible_p(db, da))
   {
     mpz_divexact(den.get_mpz_t(), db, da); // the quotient, for a moment
     mpz_mul(num.get_mpz_t(), na, den.get_mpz_t());
     mpz_sub(num.get_mpz_t(), num.get_mpz_t(), nb);
     mpz_set(den.get_mpz_t(), db);
-    return;
+    return true;
   }
-  if(mpz_cmp(db, da) < 0 && mpz_divisible_p(da, db))
+  if(c > 0 && mpz_divisible_p(da, db))
   {
     mpz_divexact(den.get_mpz_t(), da, db);
     mpz_mul(num.get_mpz_t(), nb, den.get_mpz_t());
     mpz_sub(num.get_mpz_t(), na, num.get_mpz_t());
     mpz_set(den.get_mpz_t(), da);
-    return;
+    return true;
   }
+  return false;
+}
+
+// a - b = (na db - nb da) / (da db) otherwise
+inline void rational_difference(const CGAL::Gmpq& a, const CGAL::Gmpq& b, mpz_class& num, mpz_class& den)
+{
+  if(cheap_rational_difference(a, b, num, den)) return;
+  const mpz_srcptr na = mpq_numref(a.mpq()), da = mpq_denref(a.mpq()), nb = mpq_numref(b.mpq()), db = mpq_denref(b.mpq());
   mpz_mul(num.get_mpz_t(), na, db);
   mpz_submul(num.get_mpz_t(), nb, da);
   mpz_mul(den.get_mpz_t(), da, db);
 }
 
 // Twice the signed area of (p, q, r) as m 2^e with a relative error below 2^-40 (m = 0 for a zero area;
-// the sign is exact). The four coordinate differences are exact integers over their denominators
-// (rational_difference(), no product when the denominators agree, as on an exact Tutte map), rounded to
-// double with their own relative error of a few units in the last place, so that the determinant in
-// double is accurate unless its two products nearly cancel; then it is computed exactly, from two
-// products of integers (and of denominators when they differ). With `sign_only`, m is accurate
-// enough for its sign only.
+// the sign is exact). Each of the four coordinate differences is in double with a bound on its relative
+// error: a few units in the last place where it is an exact integer over a denominator
+// (cheap_rational_difference()), the difference of the two rounded coordinates otherwise (as accurate as
+// they are far apart). Where the determinant in double is not that accurate (its two products nearly
+// cancel, or two coordinates nearly agree), it is computed exactly from integer products. With
+// `sign_only`, m is accurate enough for its sign only.
 inline void rational_twice_area(const CGAL::Gmpq& px, const CGAL::Gmpq& py, const CGAL::Gmpq& qx,
                                 const CGAL::Gmpq& qy, const CGAL::Gmpq& rx, const CGAL::Gmpq& ry, double& m, long& e,
                                 bool sign_only = false)
 {
+  const CGAL::Gmpq* const terms[4][2] = { { &qx, &px }, { &ry, &py }, { &qy, &py }, { &rx, &px } };
   mpz_class n[4], d[4];
-  rational_difference(qx, px, n[0], d[0]);
-  rational_difference(ry, py, n[1], d[1]);
-  rational_difference(qy, py, n[2], d[2]);
-  rational_difference(rx, px, n[3], d[3]);
+  bool integral[4];
   // an integer z as f 2^k with 1/2 <= |f| < 1 (truncated: relative error below 2^-53)
-  auto split = [](const mpz_class& z, double& f, long& k) { f = mpz_get_d_2exp(&k, z.get_mpz_t()); };
-  double v[4];
+  auto split = [](mpz_srcptr z, double& f, long& k) { f = mpz_get_d_2exp(&k, z); };
+  const double ulp = std::ldexp(1., -53), inexact = std::ldexp(1., -20);
+  double v[4], rel[4];
   long x[4];
+  bool filter = true;
   for(int k = 0; k < 4; ++k)
   {
     double fn, fd;
     long kn, kd;
-    split(n[k], fn, kn); split(d[k], fd, kd);
-    v[k] = fn / fd; x[k] = kn - kd; // relative error below 3 2^-53
+    integral[k] = cheap_rational_difference(*terms[k][0], *terms[k][1], n[k], d[k]);
+    if(integral[k])
+    {
+      split(n[k].get_mpz_t(), fn, kn); split(d[k].get_mpz_t(), fd, kd);
+      v[k] = fn / fd; x[k] = kn - kd; rel[k] = 3 * ulp;
+      continue;
+    }
+    // both coordinates rounded (relative error below 3 2^-53 each), then subtracted
+    double f[2];
+    long kk[2];
+    for(int i = 0; i < 2; ++i)
+    {
+      split(mpq_numref(terms[k][i]->mpq()), fn, kn); split(mpq_denref(terms[k][i]->mpq()), fd, kd);
+      f[i] = fn / fd; kk[i] = kn - kd;
+    }
+    x[k] = (std::max)(f[0] == 0 ? kk[1] : kk[0], f[1] == 0 ? kk[0] : kk[1]);
+    const double a = std::ldexp(f[0], int((std::max)(kk[0] - x[k], -1100L))), b = std::ldexp(f[1], int((std::max)(kk[1] - x[k], -1100L)));
+    v[k] = a - b;
+    rel[k] = v[k] == 0 ? 1. : 3 * ulp * (std::abs(a) + std::abs(b)) / std::abs(v[k]) + ulp;
+    if(rel[k] > inexact) filter = false;
   }
-  const bool zero1 = v[0] == 0 || v[1] == 0, zero2 = v[2] == 0 || v[3] == 0;
-  if(zero1 && zero2) { m = 0; e = 0; return; }
-  const long e1 = x[0] + x[1], e2 = x[2] + x[3];
-  e = zero1 ? e2 : (zero2 ? e1 : (std::max)(e1, e2));
-  // the products scaled by 2^-e (at most 4 in absolute value, exact scaling unless below 2^-1000)
-  const double p1 = zero1 ? 0. : std::ldexp(v[0] * v[1], int((std::max)(e1 - e, -1100L)));
-  const double p2 = zero2 ? 0. : std::ldexp(v[2] * v[3], int((std::max)(e2 - e, -1100L)));
-  m = p1 - p2;
-  const double bound = std::ldexp(std::abs(p1) + std::abs(p2), -49); // 8 2^-52 per product, and the rounding
-  if(std::abs(m) > (sign_only ? bound : std::ldexp(bound, 40))) return;
-  // nearly cancelling: exactly
+  if(filter)
+  {
+    const bool zero1 = v[0] == 0 || v[1] == 0, zero2 = v[2] == 0 || v[3] == 0; // exact zeros (integral)
+    if(zero1 && zero2) { m = 0; e = 0; return; }
+    const long e1 = x[0] + x[1], e2 = x[2] + x[3];
+    e = zero1 ? e2 : (zero2 ? e1 : (std::max)(e1, e2));
+    // the products scaled by 2^-e (at most 4 in absolute value, exact scaling unless below 2^-1000)
+    const double p1 = zero1 ? 0. : std::ldexp(v[0] * v[1], int((std::max)(e1 - e, -1100L)));
+    const double p2 = zero2 ? 0. : std::ldexp(v[2] * v[3], int((std::max)(e2 - e, -1100L)));
+    m = p1 - p2;
+    const double bound = std::abs(p1) * (rel[0] + rel[1] + rel[0] * rel[1] + 4 * ulp)
+                       + std::abs(p2) * (rel[2] + rel[3] + rel[2] * rel[3] + 4 * ulp) + 2 * ulp * std::abs(m);
+    if(std::abs(m) > (sign_only ? bound : std::ldexp(bound, 40))) return;
+  }
+  // exactly
+  for(int k = 0; k < 4; ++k) if(!integral[k]) rational_difference(*terms[k][0], *terms[k][1], n[k], d[k]);
   mpz_class num = n[0] * n[1], right = n[2] * n[3], den;
   if((d[0] == d[2] && d[1] == d[3]) || (d[0] == d[3] && d[1] == d[2])) den = d[0] * d[1];
   else
@@ -146,7 +178,7 @@ inline void rational_twice_area(const CGAL::Gmpq& px, const CGAL::Gmpq& py, cons
   if(num == 0) { m = 0; e = 0; return; }
   double fn, fd;
   long kn, kd;
-  split(num, fn, kn); split(den, fd, kd);
+  split(num.get_mpz_t(), fn, kn); split(den.get_mpz_t(), fd, kd);
   m = fn / fd; e = kn - kd;
 }
 

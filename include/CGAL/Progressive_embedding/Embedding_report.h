@@ -68,7 +68,9 @@ struct Embedding_report
   std::size_t overlapping_pairs = 0;
   /// the cap on the two counts above
   std::size_t overlap_limit = 1000;
-  /// smallest signed uv area, the sign taken relative to the border orientation (double, rounded from the exact value where the double evaluation is unreliable)
+  /// smallest signed uv area, the sign taken relative to the border orientation (double: in floating point, rounded from
+  /// the exact value where the double evaluation is unreliable; for exact and MPFR coordinates, within a relative
+  /// 2<sup>-40</sup> of the exact value, with its exact sign)
   double min_signed_area = 0;
   /// largest signed uv area, relative to the border orientation (double)
   double max_signed_area = 0;

@@ -246,6 +246,16 @@ def _(d):
                integer(r["peak_rss_mb"])))
 
 
+@block("large_meshes_pe", README, "large_meshes_pe.csv", inline=True)
+def _(d):
+    rows = d.rows("large_meshes_pe.csv")
+    def med(hp, key):
+        return statistics.median(float(r[key]) for r in rows if r["huge_pages"] == hp)
+    return ("**%s s** (median of %d runs, peak %s MB; %s s with `PE_NO_HUGE_PAGES=1`)"
+            % (sig(med("yes", "wall_s")), len([r for r in rows if r["huge_pages"] == "yes"]),
+               integer(med("yes", "peak_mb")), sig(med("no", "wall_s"))))
+
+
 @block("constrained_3", README, "constrained_embedding.csv")
 def _(d):
     rows = d.rows("constrained_embedding.csv")

@@ -27,6 +27,10 @@
 
 #include <cstring>
 #include <limits>
+#ifdef CGAL_PROGRESSIVE_EMBEDDING_CHOLMOD_ENABLED
+#include <cstdint>
+#include <dlfcn.h>
+#endif
 
 namespace {
 
@@ -1122,6 +1126,62 @@ struct Counting_solver : CGAL::Eigen_solver_traits<Eigen::SimplicialLLT<CGAL::Ei
   bool factor(const Matrix& A, NT& D) { ++*factors; return Base::factor(A, D); }
 };
 
+#ifdef CGAL_PROGRESSIVE_EMBEDDING_CHOLMOD_ENABLED
+// How CHOLMOD runs (internal/cholmod_runtime.h), after a CHOLMOD solve: SuiteSparse's memory functions are the
+// package's; they map large blocks 2 MB-aligned (zeroed by calloc, kept by realloc) and pass small ones and
+// foreign pointers to the C library; the dynamic OpenMP threads are on inside the guard and restored after.
+int test_cholmod_runtime()
+{
+  namespace I = PE::internal;
+#if SUITESPARSE_MAIN_VERSION >= 7
+  CHECK(SuiteSparse_config_malloc_func_get() == &I::pe_cholmod_malloc, "the package's memory functions are set");
+#else
+  CHECK(SuiteSparse_config.malloc_func == &I::pe_cholmod_malloc && SuiteSparse_config.free_func == &I::pe_cholmod_free,
+        "the package's memory functions are set");
+#endif
+  const std::size_t big = I::huge_block_minimum + 12345;
+  char* a = static_cast<char*>(I::pe_cholmod_malloc(big));
+  CHECK(a != nullptr && I::huge_block_length(a, false) >= big, "a large block is mapped");
+  CHECK(reinterpret_cast<std::uintptr_t>(a) % I::huge_page_size == 0, "2 MB-aligned");
+  for(std::size_t i = 0; i < big; i += 4096) a[i] = char(i / 4096);
+  a = static_cast<char*>(I::pe_cholmod_realloc(a, 2 * big));
+  CHECK(a != nullptr && I::huge_block_length(a, false) >= 2 * big, "grown");
+  bool kept = true;
+  for(std::size_t i = 0; i < big; i += 4096) kept = kept && a[i] == char(i / 4096);
+  CHECK(kept, "realloc keeps the content");
+  CHECK(I::pe_cholmod_realloc(a, 100) == a, "shrinking keeps the mapped block");
+  I::pe_cholmod_free(a);
+  CHECK(I::huge_block_length(a, false) == 0, "freed and forgotten");
+  double* z = static_cast<double*>(I::pe_cholmod_calloc(big / sizeof(double), sizeof(double)));
+  bool zero = z != nullptr;
+  for(std::size_t i = 0; zero && i < big / sizeof(double); i += 97) zero = z[i] == 0;
+  CHECK(zero, "calloc: zeroed");
+  I::pe_cholmod_free(z);
+  char* small = static_cast<char*>(I::pe_cholmod_malloc(1000));
+  CHECK(small != nullptr && I::huge_block_length(small, false) == 0, "a small block comes from malloc");
+  small = static_cast<char*>(I::pe_cholmod_realloc(small, big));
+  CHECK(small != nullptr && I::huge_block_length(small, false) == 0, "a malloc block grows with realloc");
+  I::pe_cholmod_free(small);
+  void* foreign = std::malloc(64);
+  I::pe_cholmod_free(foreign); // a pointer of malloc's, allocated before or without the package: free()
+  I::pe_cholmod_free(nullptr); // as free(nullptr): nothing
+  typedef int (*Get)();
+  const Get get = reinterpret_cast<Get>(::dlsym(RTLD_DEFAULT, "omp_get_dynamic"));
+  if(get != nullptr)
+  {
+    const int before = get();
+    {
+      const I::Cholmod_dynamic_threads guard;
+      CHECK(get() == 1, "dynamic OpenMP threads inside the guard");
+    }
+    CHECK(get() == before, "the former setting after");
+  }
+  std::cout << "  CHOLMOD runtime: memory functions and threads checked (OpenMP " << (get != nullptr ? "found" : "absent")
+            << ")" << std::endl;
+  return EXIT_SUCCESS;
+}
+#endif
+
 // The solvers of the double Tutte system: the default one by size (CHOLMOD's supernodal Cholesky from
 // cholmod_minimum_unknowns unknowns when built with it, Eigen's LDLT otherwise), the same map as the LDLT's up
 // to rounding; a user's solver through `sparse_linear_solver` and through the parameterizer's SolverTraits_.
@@ -1182,6 +1242,10 @@ int test_solvers()
   CHECK(std::sqrt(diff) < 1e-9 && std::sqrt(diff_user) < 1e-9, "the same map up to rounding");
   CHECK(cholmod || diff == 0, "without CHOLMOD the default is the LDLT, bit for bit");
   CHECK(PE::check_embedding(m, uv_default).is_valid(), "certified");
+
+#ifdef CGAL_PROGRESSIVE_EMBEDDING_CHOLMOD_ENABLED
+  if(std::is_same<Mesh, Surface_mesh>::value) RUN(test_cholmod_runtime());
+#endif
 
   // the drop-in parameterizer with the user's solver (CGAL's SolverTraits_ template parameter)
   Mesh small;

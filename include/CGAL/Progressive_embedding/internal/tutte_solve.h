@@ -37,6 +37,7 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/OrderingMethods>
 #ifdef CGAL_PROGRESSIVE_EMBEDDING_CHOLMOD_ENABLED
+#include <CGAL/Progressive_embedding/internal/cholmod_runtime.h>
 #include <Eigen/CholmodSupport>
 #endif
 
@@ -209,6 +210,8 @@ inline Error_code solve_symmetric_default(Tutte_system<double>& S, Progress_budg
   // CHOLMOD for large systems; Eigen's LDLT if it refuses the matrix
   if(default_tutte_solver_is_cholmod(S.n))
   {
+    use_huge_pages_for_cholmod();
+    const Cholmod_dynamic_threads threads;
     const Error_code ec = solve_symmetric_with_eigen<Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double> > >(A, S, budget, xu, xv);
     if(ec != ERROR_CANNOT_SOLVE_LINEAR_SYSTEM) return ec;
   }

@@ -745,8 +745,10 @@ py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::objec
       if(st.failed_landmark < k)
         context = landmark_name(st.failed_landmark, pairs) + ": the vertex " +
                   std::to_string(pairs[2 * st.failed_landmark + (st.failed_mesh == 0 ? 0 : 1)]) + " of " + mesh +
-                  (ec == PE::ERROR_CONSTRAINT_ON_BORDER ? " is on the border (landmarks must be interior)"
-                   : ec == PE::ERROR_DUPLICATE_CONSTRAINT ? " is used by an earlier landmark" : "");
+                  (ec == PE::ERROR_CONSTRAINT_ON_BORDER ? " is on the border, its partner is not"
+                   : ec == PE::ERROR_DUPLICATE_CONSTRAINT ? " is used by an earlier landmark"
+                   : ec == PE::ERROR_WRONG_PARAMETER && st.failed_mesh == 1 ? " is out of the order of the other border landmarks"
+                   : "");
       else if(ec == PE::ERROR_WRONG_PARAMETER && has_pair && st.failed_mesh >= 0 &&
               !CGAL::is_border(st.failed_mesh == 0 ? vp.first : vp.second, st.failed_mesh == 0 ? wa.mesh : wb.mesh))
         context = "border_vertex_pair: the vertex " + std::to_string(pair[st.failed_mesh]) + " of " + mesh +
@@ -776,6 +778,7 @@ py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::objec
   info["valid_b"] = st.report_b.is_valid();
   info["landmarks_exact"] = st.landmarks_exact;
   info["landmarks"] = st.landmarks;
+  info["border_landmarks"] = st.border_landmarks;
   info["vertices_a"] = st.vertices_a;
   info["faces_a"] = st.faces_a;
   info["vertices_b"] = st.vertices_b;
@@ -934,7 +937,8 @@ PYBIND11_MODULE(progressive_embedding, m)
     "(ERROR_BUDGET_EXHAUSTED past it); optimization_time_limit: seconds for the optimization of A's map.\n"
     "Raises Error with ERROR_WRONG_PARAMETER for a landmark or border_vertex_pair index that is no vertex\n"
     "(as the C++ function, not ValueError) or a border_vertex_pair vertex off its border,\n"
-    "ERROR_CONSTRAINT_ON_BORDER for a landmark on a border (not supported), ERROR_DUPLICATE_CONSTRAINT for a\n"
+    "or border landmarks not in the same order along both borders, ERROR_CONSTRAINT_ON_BORDER for a landmark\n"
+    "with one vertex on its border and the other inside, ERROR_DUPLICATE_CONSTRAINT for a\n"
     "vertex used twice, ERROR_NOT_A_DISK, ERROR_BORDER_TOO_SHORT (fewer than 4 border vertices), ...; the\n"
     "message names the landmark (its row) or the mesh.");
   m.def("last_timing", &py_last_timing,

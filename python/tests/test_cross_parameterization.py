@@ -145,6 +145,19 @@ def raises(code, *args, **kwargs):
     return str(e.value)
 
 
+def test_border_landmarks():
+    # the grid's corners 0, 5, 30, 35 and the border vertex 2 at their own vertices, one interior landmark
+    V, F = grid_disk(6)
+    landmarks = np.array([[0, 0], [14, 14], [5, 5], [35, 35], [2, 2], [30, 30]])
+    faces, barycentric, info = pe.cross_parameterization(V, F, V, F, landmarks, b_to_a=True)
+    assert_result(faces, barycentric, info, len(V), F)
+    assert info['landmarks'] == 6 and info['border_landmarks'] == 5
+    assert_landmarks_exact(faces, barycentric, F, landmarks)
+    assert np.abs(images(faces, barycentric, V, F) - V).max() <= 1e-9
+    # out of order along B's border: 5 and 35 swapped
+    assert 'landmarks[' in raises('ERROR_WRONG_PARAMETER', V, F, V, F, [[0, 0], [5, 35], [35, 5]])
+
+
 def test_errors():
     V, F = grid_disk(6)  # 36 vertices, 7 and 8 interior, 0 and 5 on the border
     # an index that is no vertex: the library's ERROR_WRONG_PARAMETER, the landmark and the mesh named
@@ -153,7 +166,7 @@ def test_errors():
     # a vertex used twice, in A or in B: the later landmark named
     assert 'landmarks[1] = (7, 8): the vertex 7 of A' in raises('ERROR_DUPLICATE_CONSTRAINT', V, F, V, F, [[7, 7], [7, 8]])
     assert 'landmarks[1] = (8, 7): the vertex 7 of B' in raises('ERROR_DUPLICATE_CONSTRAINT', V, F, V, F, [[7, 7], [8, 7]])
-    # landmarks on a border are refused (the borders are matched by arc length, not by landmarks)
+    # a landmark with one vertex on its border and the other inside is refused
     assert 'the vertex 0 of A is on the border' in raises('ERROR_CONSTRAINT_ON_BORDER', V, F, V, F, [[7, 7], [0, 8]])
     assert 'the vertex 5 of B is on the border' in raises('ERROR_CONSTRAINT_ON_BORDER', V, F, V, F, [[7, 7], [8, 5]])
     # a border pair that is not one

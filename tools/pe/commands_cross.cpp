@@ -94,8 +94,10 @@ int cmd_cross(const Arguments& a)
       detail = "'" + a.positional[2] + "' line " + std::to_string(lines[st.failed_landmark]) + ": landmark " +
                std::to_string(std::size_t(l.first)) + " " + std::to_string(std::size_t(l.second)) + ": " +
                (st.failed_mesh == 0 ? "the vertex of A " : "the vertex of B ");
-      detail += ec == PE::ERROR_CONSTRAINT_ON_BORDER ? "is on the border (landmarks must be interior)"
-              : ec == PE::ERROR_DUPLICATE_CONSTRAINT ? "is used by an earlier landmark" : PE::get_error_message(ec);
+      detail += ec == PE::ERROR_CONSTRAINT_ON_BORDER ? "is on the border, its partner is not (a border landmark needs both on their border)"
+              : ec == PE::ERROR_DUPLICATE_CONSTRAINT ? "is used by an earlier landmark"
+              : ec == PE::ERROR_WRONG_PARAMETER && st.failed_mesh == 1 ? "is out of the order of the other border landmarks along B's border"
+              : PE::get_error_message(ec);
       run.result.add("failed_landmark_line", lines[st.failed_landmark]);
     }
     else if(st.failed_mesh >= 0)

@@ -187,9 +187,9 @@ const std::vector<Command_spec>& command_table()
       "locally injective, border only, optimized as an immersion; JSON \"immersion\": true)", cmd_constrain },
     { "cross", "A B LANDMARKS OUT.txt", 4, 4, 3, { "--time-limit" },
       "the location on the disk B of every vertex of the disk A through a certified cross-parameterization:\n"
-      "both borders on the unit square by relative arc length, B mapped first, A mapped with its landmarks\n"
-      "pinned on their partners' uv (LANDMARKS: 'a_index b_index' lines, interior vertices, 0-based in file\n"
-      "order); OUT.txt: one line per vertex of A in file order, 'face_index b0 b1 b2' (the face of B in B's\n"
+      "both borders on the unit square by relative arc length (through the border landmarks), B mapped\n"
+      "first, A mapped with its landmarks pinned on their partners' uv (LANDMARKS: 'a_index b_index' lines,\n"
+      "0-based in file order, both interior or both on their borders); OUT.txt: one line per vertex of A in file order, 'face_index b0 b1 b2' (the face of B in B's\n"
       "file order, the barycentric coordinates of its vertices in the order the face lists them)", cmd_cross },
     { "polygon", "POLY.txt OUT.obj", 2, 2, 1, { "--svg", "--time-limit" },
       "is the polygon of POLY.txt ('x y' lines, one vertex each, the last joined to the first) simple,\n"

@@ -94,9 +94,9 @@ template <typename T> unspecified_type b_to_a_locations(const T& t);
 /// (also on error, as far as the computation went).
 struct Cross_parameterization_statistics
 {
-  /// on an error about one landmark (`ERROR_WRONG_PARAMETER`: a vertex not of its mesh; `ERROR_CONSTRAINT_ON_BORDER`;
-  /// `ERROR_DUPLICATE_CONSTRAINT`: a vertex of A or of B used twice, the later one): its position in the `landmarks`
-  /// range; `std::size_t(-1)` otherwise
+  /// on an error about one landmark (`ERROR_WRONG_PARAMETER`: a vertex not of its mesh, or a border landmark out of
+  /// the order of the others along B's border; `ERROR_CONSTRAINT_ON_BORDER`; `ERROR_DUPLICATE_CONSTRAINT`: a vertex of
+  /// A or of B used twice, the later one): its position in the `landmarks` range; `std::size_t(-1)` otherwise
   std::size_t failed_landmark = std::size_t(-1);
   /// the mesh an error is about: 0 for A, 1 for B, -1 for none (a mesh that is not a disk or has fewer than four
   /// border vertices, a landmark vertex, a border vertex of `border_vertex_pair`, a map that failed)
@@ -109,8 +109,10 @@ struct Cross_parameterization_statistics
   std::size_t vertices_b = 0;
   /// faces of B
   std::size_t faces_b = 0;
-  /// landmark pairs
+  /// landmark pairs (interior and border)
   std::size_t landmarks = 0;
+  /// landmark pairs on the borders
+  std::size_t border_landmarks = 0;
   /// vertices added to A's copy by `constrained_embedding()` (kept after its coarsening); they are not reported
   std::size_t vertices_added_a = 0;
   /// vertices of A located inside a face of B (decided exactly)
@@ -273,11 +275,16 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 /// its barycentric coordinates there.
 ///
 /// Both meshes are mapped onto the unit square [0,1]²: its corner (0,0) gets a matched pair of border vertices
-/// (`border_vertex_pair`); B's border vertices nearest to a quarter, a half and three quarters of its 3D length get
-/// the other corners, counterclockwise (the mesh interior on the left of the border), and A's border vertices
-/// nearest to the relative lengths of B's corners get the same corners; between corners each side is parametrized by
-/// 3D arc length. The borders are thus matched by relative arc length up to the corners (each corner moves by at
-/// most half a border edge), and every border point lies exactly on a side of the square.
+/// (`border_vertex_pair`, else the first border landmark); B's border vertices nearest to a quarter, a half and three
+/// quarters of its 3D length get the other corners, counterclockwise (the mesh interior on the left of the border),
+/// and A's border vertices nearest to the relative lengths of B's corners get the same corners; between corners each
+/// side is parametrized by 3D arc length. The borders are thus matched by relative arc length up to the corners (each
+/// corner moves by at most half a border edge), and every border point lies exactly on a side of the square.
+///
+/// Landmarks on the borders (both vertices on their border, in the same counterclockwise order along both borders)
+/// fix the border correspondence: each border landmark of A is placed at the uv of its partner, bit for bit; the
+/// relative arc lengths are then matched between consecutive border landmarks (A's corners are the vertices nearest
+/// to the relative positions of B's corners within the arcs between border landmarks).
 ///
 /// B is mapped first, unchanged: Tutte's map of the square border, repaired by progressive embedding if it is not
 /// valid in floating point, then optimized (`parameterize_certified()` with `Optimization_policy::ALWAYS`). The uv of
@@ -302,7 +309,8 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///
 /// \param tm_a the mesh whose vertices are located (not modified)
 /// \param tm_b the mesh in which they are located (not modified)
-/// \param landmarks the matched interior vertices (none is allowed: only the border is then matched)
+/// \param landmarks the matched vertices, interior or both on their borders (none is allowed: only the border is
+///        then matched)
 /// \param out receives, on success only, the location on B of every vertex of A
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
@@ -350,9 +358,12 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///         the mesh errors of `tutte_embedding()` for either mesh (`ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH`,
 ///         `ERROR_NON_MANIFOLD`, `ERROR_NOT_A_DISK`; `Cross_parameterization_statistics::failed_mesh` says which),
 ///         `ERROR_BORDER_TOO_SHORT` (fewer than four border vertices; `failed_mesh` says which mesh), `ERROR_WRONG_PARAMETER` (a landmark vertex
-///         not of its mesh, a `border_vertex_pair` vertex not on its border), `ERROR_CONSTRAINT_ON_BORDER` (a
-///         landmark on a border: border landmarks are not supported yet), `ERROR_DUPLICATE_CONSTRAINT` (a vertex
-///         used by two landmarks) -- these three with `Cross_parameterization_statistics::failed_landmark` --, the
+///         not of its mesh, a `border_vertex_pair` vertex not on its border, border landmarks not in the same order
+///         along both borders), `ERROR_CONSTRAINT_ON_BORDER` (a landmark with one vertex on its border and the other
+///         inside), `ERROR_DUPLICATE_CONSTRAINT` (a vertex used by two landmarks, or by a landmark and
+///         `border_vertex_pair` with another partner) -- these three with
+///         `Cross_parameterization_statistics::failed_landmark` --, `ERROR_BORDER_TOO_SHORT` also when an arc of A's
+///         border between two border landmarks has no vertex for a corner of the square that B's arc holds, the
 ///         errors of `parameterize_certified()` on B (e.g. B has an interior edge joining two border vertices of one
 ///         side of the square, which no valid map of the square keeps) and of `constrained_embedding()` on A, or
 ///         `ERROR_INVALID_EMBEDDING` when a certificate fails.
@@ -406,24 +417,31 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   for(std::size_t i = 0; i < disk_a.vertices.size(); ++i) index_a.emplace(disk_a.vertices[i], i);
   for(std::size_t i = 0; i < disk_b.vertices.size(); ++i) index_b.emplace(disk_b.vertices[i], i);
 
-  std::vector<std::pair<std::size_t, std::size_t> > pairs; // landmarks as indices into disk_a, disk_b
+  std::vector<std::pair<std::size_t, std::size_t> > pairs; // interior landmarks as indices into disk_a, disk_b
+  std::vector<std::pair<std::size_t, std::size_t> > border_pairs; // border landmarks, likewise
+  std::vector<std::size_t> border_pair_input; // the position in `landmarks` of each border landmark
   {
     std::unordered_set<std::size_t> seen_a, seen_b;
+    std::size_t position = 0;
     for(const auto& l : landmarks)
     {
-      stats.failed_landmark = pairs.size();
+      stats.failed_landmark = position;
       const auto ia = index_a.find(l.first);
       if(ia == index_a.end()) { stats.failed_mesh = 0; return finish(ERROR_WRONG_PARAMETER); }
       const auto ib = index_b.find(l.second);
       if(ib == index_b.end()) { stats.failed_mesh = 1; return finish(ERROR_WRONG_PARAMETER); }
-      if(disk_a.on_border[ia->second]) { stats.failed_mesh = 0; return finish(ERROR_CONSTRAINT_ON_BORDER); }
-      if(disk_b.on_border[ib->second]) { stats.failed_mesh = 1; return finish(ERROR_CONSTRAINT_ON_BORDER); }
+      // a border landmark needs a partner on the other border
+      const bool border_a = disk_a.on_border[ia->second], border_b = disk_b.on_border[ib->second];
+      if(border_a != border_b) { stats.failed_mesh = border_a ? 0 : 1; return finish(ERROR_CONSTRAINT_ON_BORDER); }
       if(!seen_a.insert(ia->second).second) { stats.failed_mesh = 0; return finish(ERROR_DUPLICATE_CONSTRAINT); }
       if(!seen_b.insert(ib->second).second) { stats.failed_mesh = 1; return finish(ERROR_DUPLICATE_CONSTRAINT); }
-      pairs.emplace_back(ia->second, ib->second);
+      if(border_a) { border_pairs.emplace_back(ia->second, ib->second); border_pair_input.push_back(position); }
+      else pairs.emplace_back(ia->second, ib->second);
+      ++position;
     }
     stats.failed_landmark = std::size_t(-1);
-    stats.landmarks = pairs.size();
+    stats.landmarks = pairs.size() + border_pairs.size();
+    stats.border_landmarks = border_pairs.size();
   }
 
   // ---- 2. the common border ------------------------------------------------------------------
@@ -443,6 +461,25 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
     if(ib == index_b.end() || border_pos_b[ib->second] == std::size_t(-1)) { stats.failed_mesh = 1; return finish(ERROR_WRONG_PARAMETER); }
     start_a = border_pos_a[ia->second];
     start_b = border_pos_b[ib->second];
+    // the pair is matched like a border landmark; a vertex of it in another landmark must have the same partner
+    bool listed = false;
+    for(const auto& bp : border_pairs)
+    {
+      if(bp.first == ia->second && bp.second == ib->second) listed = true;
+      else if(bp.first == ia->second) { stats.failed_mesh = 0; return finish(ERROR_DUPLICATE_CONSTRAINT); }
+      else if(bp.second == ib->second) { stats.failed_mesh = 1; return finish(ERROR_DUPLICATE_CONSTRAINT); }
+    }
+    if(!listed && !border_pairs.empty())
+    {
+      border_pairs.emplace_back(ia->second, ib->second);
+      border_pair_input.push_back(std::size_t(-1));
+    }
+  }
+  else if(!border_pairs.empty())
+  {
+    // the first border landmark at the corner (0,0)
+    start_a = border_pos_a[border_pairs.front().first];
+    start_b = border_pos_b[border_pairs.front().second];
   }
   else
   {
@@ -462,7 +499,38 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   if(disk_a.border.size() < 4) { stats.failed_mesh = 0; return finish(ERROR_BORDER_TOO_SHORT); }
   if(disk_b.border.size() < 4) { stats.failed_mesh = 1; return finish(ERROR_BORDER_TOO_SHORT); }
   std::vector<Point_2> border_uv_a, border_uv_b;
-  ec = internal::common_square_border(disk_a, vpm_a, start_a, disk_b, vpm_b, start_b, border_uv_a, border_uv_b);
+  if(border_pairs.size() < 2)
+    ec = internal::common_square_border(disk_a, vpm_a, start_a, disk_b, vpm_b, start_b, border_uv_a, border_uv_b);
+  else
+  {
+    // border landmarks: in the same order along both borders (each counterclockwise, from the start pair)
+    const std::size_t na = disk_a.border.size(), nb = disk_b.border.size();
+    std::vector<std::pair<std::size_t, std::size_t> > matched; // positions from the start
+    std::vector<std::size_t> input; // their positions in `landmarks`
+    for(std::size_t k = 0; k < border_pairs.size(); ++k)
+    {
+      matched.emplace_back((border_pos_a[border_pairs[k].first] + na - start_a) % na,
+                           (border_pos_b[border_pairs[k].second] + nb - start_b) % nb);
+      input.push_back(border_pair_input[k]);
+    }
+    std::vector<std::size_t> order(matched.size());
+    for(std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return matched[x].first < matched[y].first; });
+    std::vector<std::pair<std::size_t, std::size_t> > sorted;
+    for(std::size_t k : order)
+    {
+      if(!sorted.empty() && matched[k].second <= sorted.back().second)
+      {
+        stats.failed_landmark = input[k] != std::size_t(-1) ? input[k] : std::size_t(-1);
+        stats.failed_mesh = 1;
+        return finish(ERROR_WRONG_PARAMETER); // not in A's order along B's border
+      }
+      sorted.push_back(matched[k]);
+    }
+    ec = internal::common_square_border_through(disk_a, vpm_a, start_a, disk_b, vpm_b, start_b, sorted,
+                                                border_uv_a, border_uv_b);
+    if(ec == ERROR_BORDER_TOO_SHORT) stats.failed_mesh = 0;
+  }
   if(ec != OK) return finish(ec);
   stats.seconds_validation = timer.time();
   auto remaining = [&]() { const double r = max_seconds - timer.time(); return r > 0 ? r : 0.; };
@@ -522,7 +590,9 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
     else ++stats.located_in_face;
   }
   stats.landmarks_exact = true;
-  for(const auto& p : pairs)
+  std::vector<std::pair<std::size_t, std::size_t> > all_pairs(pairs);
+  all_pairs.insert(all_pairs.end(), border_pairs.begin(), border_pairs.end());
+  for(const auto& p : all_pairs)
   {
     const internal::Map_location& l = located[p.first];
     bool at_partner = false;

@@ -109,6 +109,77 @@ int identical_grid()
   return EXIT_SUCCESS;
 }
 
+// the border vertices of a disk in the order of its border cycle
+template <class Mesh>
+std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> border_cycle(const Mesh& m)
+{
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> r;
+  for(auto h : halfedges(m))
+  {
+    if(!CGAL::is_border(h, m)) continue;
+    for(auto g : CGAL::halfedges_around_face(h, m)) r.push_back(target(g, m));
+    break;
+  }
+  return r;
+}
+
+// Border landmarks: on two copies of a grid disk, 4 border vertices of A matched to the border vertices of B
+// a quarter of the border further (a quarter turn: the grid's corners stay on the square's corners, where no
+// interior edge joins two vertices of one side) and one interior landmark:
+// certified, every landmark exactly on its partner both ways, every border vertex of A on B's border (on an
+// edge or a vertex of B). The same landmarks at their own vertices; a border landmark out of order.
+template <class Mesh>
+int border_landmarks()
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vd;
+  Mesh a, b;
+  PE::internal::make_grid_disk(7, a);
+  PE::internal::make_grid_disk(7, b);
+  const std::vector<vd> ca = border_cycle(a), cb = border_cycle(b);
+  const std::vector<vd> ia = interior_vertices(a), ib = interior_vertices(b);
+  const std::size_t n = ca.size();
+  CHECK(n == cb.size() && n >= 12, "border cycles");
+  // the first landmark (the square's corner (0,0)) at a corner of the grid: the first border vertex of A
+  std::size_t p0 = 0;
+  for(vd v : vertices(a)) if(CGAL::is_border(v, a)) { p0 = std::size_t(std::find(ca.begin(), ca.end(), v) - ca.begin()); break; }
+  for(std::size_t shift : { std::size_t(0), n / 4 })
+  {
+    std::vector<std::pair<vd, vd> > landmarks;
+    for(std::size_t k : { std::size_t(0), n / 4 + 2, n / 2 + 1, 3 * n / 4 - 1 })
+      landmarks.emplace_back(ca[(p0 + k) % n], cb[(p0 + k + shift) % n]);
+    landmarks.emplace_back(ia[ia.size() / 2], ib[ib.size() / 2]);
+    Location_map<Mesh> loc, back;
+    PE::Cross_parameterization_statistics st;
+    RUN(certified_cross(a, b, landmarks, loc, st, back));
+    CHECK(st.border_landmarks == 4 && st.landmarks == 5, "counted: " << st.border_landmarks << " of " << st.landmarks);
+    std::size_t on_border = 0;
+    for(vd v : ca)
+    {
+      const auto& l = loc.at(v);
+      const int zeros = int(l.second[0] == 0) + int(l.second[1] == 0) + int(l.second[2] == 0);
+      if(zeros >= 1) ++on_border;
+    }
+    CHECK(on_border == n, "border vertices of A on edges or vertices of B: " << on_border << " of " << n);
+    std::cout << "border landmarks (" << mesh_name<Mesh>() << ", shift " << shift << "): 4 border and 1 interior landmark "
+              << "exactly on their partners both ways, " << on_border << " border vertices of A on B's edges or vertices, "
+              << "vertices added to A " << st.vertices_added_a << std::endl;
+  }
+  // out of order along B's border: landmarks 1 and 2 come in one order along A's border, in the other along B's
+  {
+    const std::vector<std::pair<vd, vd> > landmarks = { { ca[1], cb[1] }, { ca[n / 3], cb[2 * n / 3] }, { ca[2 * n / 3], cb[n / 3] } };
+    Location_map<Mesh> loc;
+    PE::Cross_parameterization_statistics st;
+    const PE::Error_code ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(loc), PE::parameters::statistics(&st));
+    // which of the two is named depends on the direction of the border cycle above (the function walks each border
+    // counterclockwise, the interior on the left)
+    CHECK(ec == PE::ERROR_WRONG_PARAMETER && (st.failed_landmark == 1 || st.failed_landmark == 2) && st.failed_mesh == 1 && loc.empty(),
+          "out of order: " << PE::get_error_name(ec) << ", landmark " << st.failed_landmark << ", mesh " << st.failed_mesh);
+    std::cout << "border landmarks out of order (" << mesh_name<Mesh>() << "): " << PE::get_error_name(ec) << ", landmark "
+              << st.failed_landmark << std::endl;
+  }
+  return EXIT_SUCCESS;
+}
+
 template <class Mesh>
 int identical_mesh(const std::string& file)
 {
@@ -360,6 +431,13 @@ PE_TEST_GROUP(cross_identical)
   RUN(identical_grid<Surface_mesh>());
   RUN(identical_grid<Polyhedron>());
   RUN(identical_mesh<Surface_mesh>(data_dir + "/meshes/mushroom.off"));
+  return EXIT_SUCCESS;
+}
+
+PE_TEST_GROUP(cross_border_landmarks)
+{
+  RUN(border_landmarks<Surface_mesh>());
+  RUN(border_landmarks<Polyhedron>());
   return EXIT_SUCCESS;
 }
 

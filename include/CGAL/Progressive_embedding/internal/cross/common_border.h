@@ -11,15 +11,19 @@
 // length, and those of the first (A) nearest to the relative lengths of B's corners; between corners
 // each side is parametrized by arc length. Every border point then lies exactly on a side (one of its
 // coordinates is 0 or 1) and both border polygons are the whole square: the images of A's vertices
-// all lie in the closed domain of B's map.
+// all lie in the closed domain of B's map. With border landmarks, A's border goes through their
+// partners' points (common_square_border_through()).
 
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 #include <CGAL/Progressive_embedding/internal/tutte_border.h>
 
+#include <CGAL/assertions.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -81,6 +85,79 @@ Error_code common_square_border(const Indexed_disk<MeshA>& disk_a, VPMA vpm_a, s
   place_on_polygon<FT>(sa, ca, square, pa);
   place_on_polygon<FT>(sb, cb, square, pb);
   const std::size_t na = disk_a.border.size(), nb = disk_b.border.size();
+  uv_a.resize(na);
+  uv_b.resize(nb);
+  for(std::size_t k = 0; k < na; ++k) uv_a[(start_a + k) % na] = pa[k];
+  for(std::size_t k = 0; k < nb; ++k) uv_b[(start_b + k) % nb] = pb[k];
+  return OK;
+}
+
+// As common_square_border(), through matched pairs of border vertices (border landmarks): B is placed as
+// there; on A, each matched vertex goes to the uv of its partner (bit for bit), each corner of the square
+// to the vertex of A, strictly between the matched vertices around B's corner, whose relative arc length
+// between them is nearest to that of B's corner (or to the matched vertex when B's corner is one), and the
+// other vertices by arc length between these anchors. Consecutive anchors lie on one side of the square,
+// so every border point of A lies exactly on a side too. `matched`: (position on A's border from
+// start_a, position on B's border from start_b), the first (0, 0), both positions strictly increasing.
+// ERROR_BORDER_TOO_SHORT when an arc of A has no vertex for a corner that B's arc has.
+template <class Point_2, class MeshA, class VPMA, class MeshB, class VPMB>
+Error_code common_square_border_through(const Indexed_disk<MeshA>& disk_a, VPMA vpm_a, std::size_t start_a,
+                                        const Indexed_disk<MeshB>& disk_b, VPMB vpm_b, std::size_t start_b,
+                                        const std::vector<std::pair<std::size_t, std::size_t> >& matched,
+                                        std::vector<Point_2>& uv_a, std::vector<Point_2>& uv_b)
+{
+  typedef typename CGAL::Kernel_traits<Point_2>::Kernel::FT FT;
+  CGAL_precondition(!matched.empty() && matched.front().first == 0 && matched.front().second == 0);
+  const std::size_t na = disk_a.border.size(), nb = disk_b.border.size(), nm = matched.size();
+  const std::vector<double> sa = border_parameters_from(disk_a, vpm_a, start_a);
+  const std::vector<double> sb = border_parameters_from(disk_b, vpm_b, start_b);
+  std::vector<std::size_t> cb;
+  Error_code ec = square_corners(sb, { 0., 0.25, 0.5, 0.75 }, cb);
+  if(ec != OK) return ec;
+  if(na < 4) return ERROR_BORDER_TOO_SHORT;
+  const FT zero = make_ft<FT>(0), one = make_ft<FT>(1);
+  const std::vector<Point_2> square = { Point_2(zero, zero), Point_2(one, zero), Point_2(one, one), Point_2(zero, one) };
+  std::vector<Point_2> pb;
+  place_on_polygon<FT>(sb, cb, square, pb);
+
+  // A's corners
+  std::vector<std::size_t> ca(1, 0);
+  for(std::size_t c = 1; c < 4; ++c)
+  {
+    const std::size_t kb = cb[c];
+    std::size_t i = 0; // the last matched pair at or before B's corner
+    while(i + 1 < nm && matched[i + 1].second <= kb) ++i;
+    std::size_t ka = matched[i].first;
+    if(matched[i].second != kb)
+    {
+      const std::size_t a0 = matched[i].first, a1 = (i + 1 < nm) ? matched[i + 1].first : na;
+      const std::size_t b0 = matched[i].second, b1 = (i + 1 < nm) ? matched[i + 1].second : nb;
+      const double r = (sb[b1] > sb[b0]) ? (sb[kb] - sb[b0]) / (sb[b1] - sb[b0]) : 0.5;
+      const double target = sa[a0] + r * (sa[a1] - sa[a0]);
+      std::size_t best = a0 + 1;
+      for(std::size_t k = a0 + 1; k < a1; ++k) if(std::abs(sa[k] - target) < std::abs(sa[best] - target)) best = k;
+      ka = (std::max)(best, ca.back() + 1);
+      if(ka >= a1) return ERROR_BORDER_TOO_SHORT;
+    }
+    if(ka <= ca.back()) return ERROR_BORDER_TOO_SHORT;
+    ca.push_back(ka);
+  }
+  // the anchors of A, in border order: the matched vertices and the corners (a corner that is a matched
+  // vertex once: its partner is B's corner, at the corner point exactly)
+  std::vector<std::pair<std::size_t, Point_2> > anchors;
+  for(const auto& m : matched) anchors.emplace_back(m.first, pb[m.second]);
+  for(std::size_t c = 0; c < 4; ++c) anchors.emplace_back(ca[c], square[c]);
+  std::stable_sort(anchors.begin(), anchors.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<std::size_t> idx;
+  std::vector<Point_2> pts;
+  for(const auto& a : anchors)
+  {
+    if(!idx.empty() && idx.back() == a.first) continue;
+    idx.push_back(a.first);
+    pts.push_back(a.second);
+  }
+  std::vector<Point_2> pa;
+  place_on_polygon<FT>(sa, idx, pts, pa);
   uv_a.resize(na);
   uv_b.resize(nb);
   for(std::size_t k = 0; k < na; ++k) uv_a[(start_a + k) % na] = pa[k];

@@ -84,6 +84,7 @@ int cmd_cross(const Arguments& a)
     PE::parameters::statistics(&st, CGAL::parameters::maximum_running_time(budget.remaining())));
   run.result.add("vertices_a", st.vertices_a);
   run.result.add("vertices_b", st.vertices_b);
+  run.result.add("border_landmarks", st.border_landmarks);
   run.result.add("vertices_added_a", st.vertices_added_a);
   if(ec != PE::OK)
   {

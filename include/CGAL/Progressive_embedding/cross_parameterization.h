@@ -506,13 +506,8 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
     // border landmarks: in the same order along both borders (each counterclockwise, from the start pair)
     const std::size_t na = disk_a.border.size(), nb = disk_b.border.size();
     std::vector<std::pair<std::size_t, std::size_t> > matched; // positions from the start
-    std::vector<std::size_t> input; // their positions in `landmarks`
-    for(std::size_t k = 0; k < border_pairs.size(); ++k)
-    {
-      matched.emplace_back((border_pos_a[border_pairs[k].first] + na - start_a) % na,
-                           (border_pos_b[border_pairs[k].second] + nb - start_b) % nb);
-      input.push_back(border_pair_input[k]);
-    }
+    for(const auto& bp : border_pairs)
+      matched.emplace_back((border_pos_a[bp.first] + na - start_a) % na, (border_pos_b[bp.second] + nb - start_b) % nb);
     std::vector<std::size_t> order(matched.size());
     for(std::size_t k = 0; k < order.size(); ++k) order[k] = k;
     std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return matched[x].first < matched[y].first; });
@@ -521,7 +516,7 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
     {
       if(!sorted.empty() && matched[k].second <= sorted.back().second)
       {
-        stats.failed_landmark = input[k] != std::size_t(-1) ? input[k] : std::size_t(-1);
+        stats.failed_landmark = border_pair_input[k]; // -1 for border_vertex_pair
         stats.failed_mesh = 1;
         return finish(ERROR_WRONG_PARAMETER); // not in A's order along B's border
       }

@@ -6,6 +6,7 @@ import sys
 
 
 def read_off(path):
+    """(points, faces) of an OFF file"""
     tokens = []
     with open(path) as f:
         for line in f:
@@ -13,18 +14,20 @@ def read_off(path):
             tokens.extend(line.split())
     i = 1 if tokens[0] == 'OFF' else 0
     nv, nf = int(tokens[i]), int(tokens[i + 1])
-    i += 3 + 3 * nv
+    i += 3
+    points = [tuple(float(x) for x in tokens[i + 3 * k:i + 3 * k + 3]) for k in range(nv)]
+    i += 3 * nv
     faces = []
     for _ in range(nf):
         k = int(tokens[i])
         faces.append([int(x) for x in tokens[i + 1:i + 1 + k]])
         i += 1 + k
-    return nv, faces
+    return points, faces
 
 
 def main():
     a, b, landmarks, out = sys.argv[1:5]
-    nva, _ = read_off(a)
+    nva = len(read_off(a)[0])
     _, faces_b = read_off(b)
     rows = [line.split() for line in open(out) if line.strip()]
     assert len(rows) == nva, "%d lines for %d vertices" % (len(rows), nva)
@@ -47,4 +50,5 @@ def main():
     print("%d lines, %d landmarks exactly on their partners" % (len(rows), count))
 
 
-main()
+if __name__ == '__main__':
+    main()

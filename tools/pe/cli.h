@@ -61,6 +61,7 @@ struct Arguments
   std::map<std::string, std::string> options;          // as given; flags map to ""
   std::map<std::string, unsigned long long> counts;    // the checked values of integer options
   std::map<std::string, double> reals;                 // the checked values of real options
+  std::map<std::string, std::string> second_values;    // the second value of options that take two
   bool json = false;
 
   bool has(const std::string& o) const { return options.count(o) != 0; }

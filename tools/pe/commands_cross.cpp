@@ -10,6 +10,7 @@
 
 #include <CGAL/Progressive_embedding/cross_parameterization.h>
 #include <CGAL/Progressive_embedding/IO/internal/atomic_output.h>
+#include <CGAL/IO/OBJ.h>
 
 #include <fstream>
 #include <iomanip>
@@ -80,8 +81,13 @@ int cmd_cross(const Arguments& a)
   std::vector<PE::Cross_location<Mesh> > located(in_a.mesh.number_of_vertices());
   auto out = boost::make_iterator_property_map(located.begin(), get(CGAL::vertex_index, in_a.mesh));
   PE::Cross_parameterization_statistics st;
-  const PE::Error_code ec = PE::cross_parameterization(in_a.mesh, in_b.mesh, landmarks, out,
-    PE::parameters::statistics(&st, CGAL::parameters::maximum_running_time(budget.remaining())));
+  const bool compatible = a.has("--compatible");
+  Mesh compatible_a, compatible_b;
+  const auto np = PE::parameters::statistics(&st, CGAL::parameters::maximum_running_time(budget.remaining()));
+  const PE::Error_code ec = compatible
+    ? PE::cross_parameterization(in_a.mesh, in_b.mesh, landmarks, out,
+                                 PE::parameters::compatible_meshes(std::make_pair(&compatible_a, &compatible_b), np))
+    : PE::cross_parameterization(in_a.mesh, in_b.mesh, landmarks, out, np);
   run.result.add("vertices_a", st.vertices_a);
   run.result.add("vertices_b", st.vertices_b);
   run.result.add("border_landmarks", st.border_landmarks);
@@ -128,13 +134,38 @@ int cmd_cross(const Arguments& a)
     return os ? PE::OK : PE::ERROR_CANNOT_WRITE_FILE;
   });
   if(wec != PE::OK) return run.fail(wec, "cannot write '" + a.positional[3] + "'");
+  if(compatible)
+  {
+    run.result.add("valid_compatible", st.report_compatible.is_valid());
+    run.result.add("overlay_cells", st.overlay_cells);
+    run.result.add("overlay_crossings", st.overlay_crossings);
+    run.result.add("compatible_vertices", st.compatible_vertices);
+    run.result.add("compatible_faces", st.compatible_faces);
+    run.result.add("seconds_compatible", st.seconds_compatible);
+    const std::string files[2] = { a.get("--compatible"), a.second_values.at("--compatible") };
+    const Mesh* meshes[2] = { &compatible_a, &compatible_b };
+    for(int k = 0; k < 2; ++k)
+    {
+      const PE::Error_code cec = PE::IO::internal::write_file_atomically(files[k], [&](std::ostream& os) {
+        return CGAL::IO::write_OBJ(os, *meshes[k], CGAL::parameters::stream_precision(17)) && os ? PE::OK
+                                                                                                 : PE::ERROR_CANNOT_WRITE_FILE;
+      });
+      if(cec != PE::OK) return run.fail(cec, "cannot write '" + files[k] + "'");
+    }
+    run.result.add("compatible_a", files[0]);
+    run.result.add("compatible_b", files[1]);
+  }
   run.result.add("written", true);
   run.result.add("valid", true);
   run.result.add("status", "OK");
   run.result.add("seconds", run.timer.seconds());
   run.summary << st.vertices_a << " vertices of A located on B (" << st.located_on_vertex << " on vertices, "
               << st.located_on_edge << " on edges), " << landmarks.size() << " landmarks exact, both maps valid, "
-              << st.vertices_added_a << " vertices added to A's copy, " << seconds_string(run.timer.seconds());
+              << st.vertices_added_a << " vertices added to A's copy, ";
+  if(compatible)
+    run.summary << "compatible meshes of " << st.compatible_vertices << " vertices and " << st.compatible_faces
+                << " faces (overlay certified), ";
+  run.summary << seconds_string(run.timer.seconds());
   return run.finish(EXIT_VALID);
 }
 

@@ -73,7 +73,7 @@ namespace {
 
 // ---- the table of options and commands ----------------------------------------------------
 
-enum class Kind { FLAG, COUNT, REAL, CHOICE, NUMBER_TYPE, TEXT, INPUT_FILE, OUTPUT_FILE, DIRECTORY };
+enum class Kind { FLAG, COUNT, REAL, CHOICE, NUMBER_TYPE, TEXT, INPUT_FILE, OUTPUT_FILE, OUTPUT_FILE_PAIR, DIRECTORY };
 
 struct Option_spec
 {
@@ -96,6 +96,9 @@ const Option_spec option_table[] = {
     "number type of the Tutte solve (BITS from 53 to 1048576); the map is written in double" },
   { "--seed", Kind::COUNT, "S", "seed of the random choices (0 to 4294967295)", 0, max_unsigned },
   { "--svg", Kind::OUTPUT_FILE, "OUT.svg", "also write a picture of the map" },
+  { "--compatible", Kind::OUTPUT_FILE_PAIR, "A_OUT.obj B_OUT.obj",
+    "cross: also write the compatible meshes, one connectivity (the overlay of the two maps, certified)\n"
+    "with A_OUT on A's surface and B_OUT on B's, vertices and faces in the same order" },
   { "--mesh", Kind::TEXT, "NAME", "mesh of DATA_DIR/meshes (default dino.off)" },
   { "--out-dir", Kind::DIRECTORY, "DIR", "existing folder for the maps and pictures (default: the build folder)" },
   { "--fix", Kind::INPUT_FILE, "FILE", "vertices kept bit-exactly: lines 'vertex_index u v' (0-based uv-vertex indices)" },
@@ -185,7 +188,7 @@ const std::vector<Command_spec>& command_table()
       "the constrained vertices. Without --fix (or with an empty file) only the border is prescribed; a vt\n"
       "border may be non-convex: simple (an embedding) or weakly self-overlapping (an immersion, certified\n"
       "locally injective, border only, optimized as an immersion; JSON \"immersion\": true)", cmd_constrain },
-    { "cross", "A B LANDMARKS OUT.txt", 4, 4, 3, { "--time-limit" },
+    { "cross", "A B LANDMARKS OUT.txt", 4, 4, 3, { "--compatible", "--time-limit" },
       "the location on the disk B of every vertex of the disk A through a certified cross-parameterization:\n"
       "both borders on the unit square by relative arc length (through the border landmarks), B mapped\n"
       "first, A mapped with its landmarks pinned on their partners' uv (LANDMARKS: 'a_index b_index' lines,\n"
@@ -370,6 +373,7 @@ std::string check_value(const Option_spec& o, const std::string& v, Arguments& a
     case Kind::TEXT:
     case Kind::INPUT_FILE:
     case Kind::OUTPUT_FILE:
+    case Kind::OUTPUT_FILE_PAIR:
     case Kind::DIRECTORY:
       if(v.empty()) return "option " + name + " needs a non-empty " + o.value;
       break;
@@ -395,9 +399,19 @@ std::string parse_arguments(int argc, char** argv, const Command_spec& c, Argume
     if(i + 1 >= argc || (std::string(argv[i + 1]).compare(0, 2, "--") == 0 && o->kind != Kind::REAL))
       return "option " + s + " needs a value (" + o->value + ")";
     const std::string value = argv[++i];
-    const std::string err = check_value(*o, value, a);
+    std::string err = check_value(*o, value, a);
     if(!err.empty()) return err;
     a.options[s] = value;
+    if(o->kind == Kind::OUTPUT_FILE_PAIR)
+    {
+      if(i + 1 >= argc || std::string(argv[i + 1]).compare(0, 2, "--") == 0)
+        return "option " + s + " needs two values (" + o->value + ")";
+      const std::string second = argv[++i];
+      err = check_value(*o, second, a);
+      if(!err.empty()) return err;
+      if(second == value) return "option " + s + ": the two files are the same";
+      a.second_values[s] = second;
+    }
   }
   if(a.has("--optimize") && a.has("--no-optimize")) return "options --optimize and --no-optimize exclude each other";
   if(a.positional.size() < c.min_positional || a.positional.size() > c.max_positional)
@@ -638,6 +652,11 @@ int main(int argc, char** argv)
       }
       else if(o->kind == Kind::OUTPUT_FILE || o->kind == Kind::DIRECTORY)
         status = check_output_path(run, kv.second, kv.first, o->kind == Kind::DIRECTORY);
+      else if(o->kind == Kind::OUTPUT_FILE_PAIR)
+      {
+        status = check_output_path(run, kv.second, kv.first);
+        if(status == EXIT_VALID) status = check_output_path(run, a.second_values.at(kv.first), kv.first);
+      }
       if(status != EXIT_VALID) return status;
     }
     if(c->output >= 0)

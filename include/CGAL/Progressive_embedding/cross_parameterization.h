@@ -27,9 +27,11 @@
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 #include <CGAL/Progressive_embedding/internal/cross/common_border.h>
 #include <CGAL/Progressive_embedding/internal/cross/locate_in_map.h>
+#include <CGAL/Progressive_embedding/internal/cross/overlay_maps.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/IO/Color.h>
@@ -60,6 +62,7 @@ namespace Progressive_embedding {
 namespace internal_np {
 enum border_vertex_pair_t { border_vertex_pair };
 enum b_to_a_locations_t { b_to_a_locations };
+enum compatible_meshes_t { compatible_meshes };
 } // namespace internal_np
 
 namespace parameters {
@@ -74,6 +77,12 @@ template <typename T> Named_function_parameters<T, internal_np::b_to_a_locations
 template <typename T, typename P, typename G, typename B>
 Named_function_parameters<T, internal_np::b_to_a_locations_t, CGAL::Named_function_parameters<P, G, B> >
 b_to_a_locations(const T& t, const CGAL::Named_function_parameters<P, G, B>& np) { return { t, np }; }
+
+template <typename T> Named_function_parameters<T, internal_np::compatible_meshes_t> compatible_meshes(const T& t)
+{ return Named_function_parameters<T, internal_np::compatible_meshes_t>(t); }
+template <typename T, typename P, typename G, typename B>
+Named_function_parameters<T, internal_np::compatible_meshes_t, CGAL::Named_function_parameters<P, G, B> >
+compatible_meshes(const T& t, const CGAL::Named_function_parameters<P, G, B>& np) { return { t, np }; }
 } // namespace parameters
 #else
 namespace parameters {
@@ -86,6 +95,10 @@ template <typename T> unspecified_type border_vertex_pair(const T& t);
 /// `cross_parameterization()`, the location on A of every vertex of B (the other direction);
 /// `b_to_a_locations(t, np)` appends it to the pack `np`
 template <typename T> unspecified_type b_to_a_locations(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// the named parameter `compatible_meshes` of `cross_parameterization()`: a `std::pair` of pointers to the two
+/// output meshes; `compatible_meshes(t, np)` appends it to the pack `np`
+template <typename T> unspecified_type compatible_meshes(const T& t);
 } // namespace parameters
 #endif
 
@@ -135,6 +148,22 @@ struct Cross_parameterization_statistics
   double seconds_map_a = 0;
   /// seconds spent locating the vertices
   double seconds_location = 0;
+  /// with `compatible_meshes`: faces of the overlay of the two maps (each the intersection of a face of A's refined
+  /// copy and a face of B, a convex polygon)
+  std::size_t overlay_cells = 0;
+  /// with `compatible_meshes`: vertices of the overlay where an edge of one map crosses an edge of the other
+  std::size_t overlay_crossings = 0;
+  /// with `compatible_meshes`: vertices added inside cells that no fan from a corner triangulates without a flat triangle
+  std::size_t overlay_centers = 0;
+  /// with `compatible_meshes`: vertices of each compatible mesh
+  std::size_t compatible_vertices = 0;
+  /// with `compatible_meshes`: faces of each compatible mesh
+  std::size_t compatible_faces = 0;
+  /// with `compatible_meshes`: seconds spent on the overlay, its certificate and the two meshes
+  double seconds_compatible = 0;
+  /// with `compatible_meshes`: the certificate of the triangulated overlay in exact coordinates (`check_embedding()`
+  /// with `CGAL::Epeck` points)
+  Embedding_report report_compatible;
   /// seconds in all
   double seconds_total = 0;
   /// the certificate of B's map (`check_embedding()`)
@@ -197,6 +226,104 @@ std::array<T, N> weighted_sum(const std::array<std::array<T, N>, 3>& v, const st
 // located in the refined map, then written in the face of A holding the refined face (every vertex of
 // `work` is a vertex of A or a Steiner point, a combination of the vertices of one face of A).
 // ERROR_INVALID_EMBEDDING if a point is outside the map (cannot happen with two certified maps of one domain).
+// The common refinement of A's refined map (`work`, `uv`) and B's map (`map_b` on `disk_b`'s faces),
+// triangulated: the points of each vertex on A's surface and on B's, and the triangles. The overlay
+// is certified in exact coordinates (`stats.report_compatible`).
+template <class Work, class UVMap, class TriangleMeshB, class Point_2>
+Error_code compatible_soups(const Work& work, UVMap uv, const TriangleMeshB& tm_b, const Indexed_disk<TriangleMeshB>& disk_b,
+                            const std::vector<Point_2>& map_b, Cross_parameterization_statistics& stats,
+                            std::vector<std::array<double, 3> >& on_a, std::vector<std::array<double, 3> >& on_b,
+                            std::vector<std::array<std::size_t, 3> >& triangles)
+{
+  typedef typename boost::graph_traits<Work>::vertex_descriptor wvertex;
+  typedef CGAL::Epeck EK;
+  std::vector<Point_2> map_a;
+  std::vector<std::array<double, 3> > points_a;
+  std::unordered_map<wvertex, std::size_t> index;
+  const auto vpm_work = get(CGAL::vertex_point, work);
+  for(wvertex v : vertices(work))
+  {
+    index.emplace(v, map_a.size());
+    map_a.push_back(get(uv, v));
+    const auto& p = get(vpm_work, v);
+    points_a.push_back({{ CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) }});
+  }
+  std::vector<std::array<std::size_t, 3> > faces_a;
+  for(auto f : faces(work))
+  {
+    const auto h = halfedge(f, work);
+    faces_a.push_back({{ index.at(source(h, work)), index.at(target(h, work)), index.at(target(next(h, work), work)) }});
+  }
+  const auto vpm_b = get(CGAL::vertex_point, tm_b);
+  std::vector<std::array<double, 3> > points_b;
+  for(auto v : disk_b.vertices)
+  {
+    const auto& p = get(vpm_b, v);
+    points_b.push_back({{ CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) }});
+  }
+  Map_overlay overlay;
+  Error_code ec = overlay_maps(map_a, faces_a, map_b, disk_b.faces, overlay);
+  if(ec != OK) return ec;
+  stats.overlay_cells = overlay.cells;
+  stats.overlay_crossings = overlay.crossings;
+  stats.overlay_centers = overlay.centers;
+
+  // the certificate of the triangulated overlay, in its exact coordinates
+  CGAL::Surface_mesh<CGAL::Epick::Point_3> soup;
+  typedef CGAL::Surface_mesh<CGAL::Epick::Point_3>::Vertex_index svertex;
+  for(std::size_t i = 0; i < overlay.points.size(); ++i) soup.add_vertex();
+  for(const auto& t : overlay.triangles)
+    if(soup.add_face(svertex(t[0]), svertex(t[1]), svertex(t[2])) == soup.null_face()) return ERROR_INVALID_EMBEDDING;
+  auto exact_uv = soup.add_property_map<svertex, EK::Point_2>("v:pe_overlay_uv").first;
+  for(std::size_t i = 0; i < overlay.points.size(); ++i) exact_uv[svertex(i)] = overlay.points[i];
+  stats.report_compatible = check_embedding(soup, exact_uv);
+  if(!stats.report_compatible.is_valid()) return ERROR_INVALID_EMBEDDING;
+
+  // each vertex on both surfaces, at its exact barycentric coordinates (rounded once) in a face of each map
+  auto place = [](const EK::Point_2& q, const std::array<std::size_t, 3>& face, const std::vector<Point_2>& map,
+                  const std::vector<std::array<double, 3> >& points) {
+    const EK::Point_2 c[3] = { EK::Point_2(map[face[0]].x(), map[face[0]].y()), EK::Point_2(map[face[1]].x(), map[face[1]].y()),
+                               EK::Point_2(map[face[2]].x(), map[face[2]].y()) };
+    const EK::FT whole = CGAL::area(c[0], c[1], c[2]);
+    // from the exact value: a lazy number's to_double() may round its interval instead
+    auto to_double = [](const EK::FT& x) { return CGAL::to_double(CGAL::exact(x)); };
+    const double w[3] = { to_double(CGAL::area(q, c[1], c[2]) / whole), to_double(CGAL::area(c[0], q, c[2]) / whole),
+                          to_double(CGAL::area(c[0], c[1], q) / whole) };
+    std::array<double, 3> r{{ 0, 0, 0 }};
+    for(int k = 0; k < 3; ++k)
+      for(int d = 0; d < 3; ++d) r[d] += w[k] * points[face[k]][d];
+    return r;
+  };
+  on_a.assign(overlay.points.size(), std::array<double, 3>());
+  on_b.assign(overlay.points.size(), std::array<double, 3>());
+  std::vector<bool> placed(overlay.points.size(), false);
+  for(std::size_t t = 0; t < overlay.triangles.size(); ++t)
+    for(std::size_t i : overlay.triangles[t])
+      if(!placed[i])
+      {
+        placed[i] = true;
+        on_a[i] = place(overlay.points[i], faces_a[overlay.cell_faces[t][0]], map_a, points_a);
+        on_b[i] = place(overlay.points[i], disk_b.faces[overlay.cell_faces[t][1]], map_b, points_b);
+      }
+  triangles.swap(overlay.triangles);
+  stats.compatible_vertices = overlay.points.size();
+  stats.compatible_faces = triangles.size();
+  return OK;
+}
+
+// `out` cleared and made of `points` and `triangles`, its vertices and faces in their order
+template <class Mesh>
+void write_soup(const std::vector<std::array<double, 3> >& points, const std::vector<std::array<std::size_t, 3> >& triangles,
+                Mesh& out)
+{
+  typedef typename boost::property_traits<typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type Point_3;
+  std::vector<Point_3> p;
+  p.reserve(points.size());
+  for(const auto& q : points) p.emplace_back(q[0], q[1], q[2]);
+  clear(out);
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(p, triangles, out);
+}
+
 template <class TriangleMeshA, class Work, class UVMap, class ToWork, class SteinerPoints, class Point_2>
 Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<TriangleMeshA>& disk_a, const Work& work,
                                   UVMap uv, const ToWork& to_work, const SteinerPoints& steiner,
@@ -345,6 +472,22 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///                    key type and `Cross_location<TriangleMeshA>` as value type}
 ///     \cgalParamDefault{none: only the locations of A's vertices are computed}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{compatible_meshes}
+///     \cgalParamDescription{receives, on success, two meshes with one connectivity, the first on A's surface and the
+///                           second on B's, in correspondence through the map: the common refinement of the two maps.
+///                           The edges of A's refined map and of B's map are overlaid in exact arithmetic (CGAL's
+///                           arrangement overlay with `CGAL::Epeck`); each cell of the overlay, the intersection of
+///                           a face of each map, is a convex polygon, triangulated by a fan from a corner (or from
+///                           the mean of its corners when every fan from a corner would have a flat triangle). Each
+///                           vertex is placed on A at its barycentric coordinates in its face of A's refined map, and
+///                           on B likewise; both meshes list their vertices and faces in the same order, so that
+///                           `(1-t) A' + t B'` is a morph. The triangulated overlay is certified by
+///                           `check_embedding()` in exact coordinates; since both maps are certified, the composed map
+///                           is affine and orientation-preserving on every triangle. Either pointer may be null}
+///     \cgalParamType{`std::pair<OutputMeshA*, OutputMeshB*>`, each a model of `MutableFaceGraph` whose point type
+///                    is constructible from three `double`; the meshes are cleared first}
+///     \cgalParamDefault{none: no overlay is computed}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{statistics}
 ///     \cgalParamDescription{receives counts, times and both certificates}
 ///     \cgalParamType{`Cross_parameterization_statistics*`}
@@ -366,7 +509,8 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///         border between two border landmarks has no vertex for a corner of the square that B's arc holds, the
 ///         errors of `parameterize_certified()` on B (e.g. B has an interior edge joining two border vertices of one
 ///         side of the square, which no valid map of the square keeps) and of `constrained_embedding()` on A, or
-///         `ERROR_INVALID_EMBEDDING` when a certificate fails.
+///         `ERROR_INVALID_EMBEDDING` when a certificate fails (of either map, of the location, or with `compatible_meshes` of
+///         the triangulated overlay).
 template <class TriangleMeshA, class TriangleMeshB, class LandmarkRange, class LocationMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB& tm_b, const LandmarkRange& landmarks,
@@ -605,6 +749,21 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
     if(ec != OK) return finish(ec);
     stats.located_b_on_a = back.size();
   }
+  stats.seconds_location = timer.time() - before_location;
+
+  // ---- 6. the compatible meshes: the overlay of the two maps, triangulated and certified ----------
+  constexpr bool compatible = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::compatible_meshes_t>::value;
+  std::vector<std::array<double, 3> > on_a, on_b;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  if constexpr(compatible)
+  {
+    const double before_overlay = timer.time();
+    ec = internal::compatible_soups(work, uv_a, tm_b, disk_b, map_b, stats, on_a, on_b, triangles);
+    stats.seconds_compatible = timer.time() - before_overlay;
+    if(ec != OK) return finish(ec);
+  }
+
+  // ---- 7. the output, written only now that everything is certified --------------------------------
   std::vector<face_b> faces_b;
   faces_b.reserve(disk_b.number_of_faces());
   for(face_b f : faces(tm_b)) faces_b.push_back(f);
@@ -615,7 +774,14 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
     auto out_b = get_parameter(np, internal_np::b_to_a_locations);
     for(std::size_t i = 0; i < back.size(); ++i) put(out_b, disk_b.vertices[i], back[i]);
   }
-  stats.seconds_location = timer.time() - before_location;
+  if constexpr(compatible)
+  {
+    const double before_write = timer.time();
+    const auto meshes = get_parameter(np, internal_np::compatible_meshes);
+    if(meshes.first != nullptr) internal::write_soup(on_a, triangles, *meshes.first);
+    if(meshes.second != nullptr) internal::write_soup(on_b, triangles, *meshes.second);
+    stats.seconds_compatible += timer.time() - before_write;
+  }
   return finish(OK);
 }
 

@@ -21,12 +21,14 @@
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <set>
 #include <string>
 #include <tuple>
@@ -309,6 +311,95 @@ int remeshed(const std::string& data_dir, const std::string& name, double bound)
   return EXIT_SUCCESS;
 }
 
+// the vertices of a mesh in iteration order, and each face as their indices
+template <class Mesh>
+std::pair<std::vector<Epick::Point_3>, std::vector<std::vector<std::size_t> > > indexed_soup(const Mesh& m)
+{
+  std::unordered_map<typename boost::graph_traits<Mesh>::vertex_descriptor, std::size_t,
+                     boost::hash<typename boost::graph_traits<Mesh>::vertex_descriptor> > index;
+  std::pair<std::vector<Epick::Point_3>, std::vector<std::vector<std::size_t> > > r;
+  for(auto v : vertices(m)) { index[v] = r.first.size(); r.first.push_back(get(CGAL::vertex_point, m, v)); }
+  for(auto f : faces(m))
+  {
+    r.second.emplace_back();
+    for(auto v : vertices_around_face(halfedge(f, m), m)) r.second.back().push_back(index.at(v));
+  }
+  return r;
+}
+
+// The compatible meshes of A and B: one connectivity (B' a Polyhedron_3, A' of A's type), the overlay certified;
+// A' on A's surface (every vertex of A in A' bit for bit, the same area), B' on B's likewise; each landmark one
+// vertex of both, at its point on A and at its partner's on B. `identical`: A == B with every interior vertex a
+// landmark, so the overlay is the mesh itself (no crossing, A' == B').
+template <class MeshA>
+int compatible(const MeshA& a, const Surface_mesh& b,
+               const std::vector<std::pair<typename boost::graph_traits<MeshA>::vertex_descriptor, Surface_mesh::Vertex_index> >& landmarks,
+               bool identical, const std::string& what)
+{
+  MeshA a_out;
+  Polyhedron b_out;
+  std::unordered_map<typename boost::graph_traits<MeshA>::vertex_descriptor, PE::Cross_location<Surface_mesh>,
+                     boost::hash<typename boost::graph_traits<MeshA>::vertex_descriptor> > loc;
+  PE::Cross_parameterization_statistics st;
+  const PE::Error_code ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(loc),
+    PE::parameters::compatible_meshes(std::make_pair(&a_out, &b_out), PE::parameters::statistics(&st)));
+  CHECK(ec == PE::OK, PE::get_error_message(ec));
+  CHECK(st.report_compatible.is_valid(), "the triangulated overlay certified");
+  CHECK(st.report_compatible.flipped == 0 && st.report_compatible.degenerate == 0, "no flipped or flat triangle");
+  const auto sa = indexed_soup(a_out);
+  const auto sb = indexed_soup(b_out);
+  CHECK(sa.first.size() == st.compatible_vertices && sb.first.size() == st.compatible_vertices, "vertex counts");
+  CHECK(sa.second == sb.second && sa.second.size() == st.compatible_faces, "one connectivity");
+  std::map<Epick::Point_3, std::size_t> at_a, at_b;
+  for(std::size_t i = 0; i < sa.first.size(); ++i) { at_a.emplace(sa.first[i], i); at_b.emplace(sb.first[i], i); }
+  for(auto v : vertices(a)) CHECK(at_a.count(get(CGAL::vertex_point, a, v)) == 1, "a vertex of A in A'");
+  for(auto w : vertices(b)) CHECK(at_b.count(b.point(w)) == 1, "a vertex of B in B'");
+  for(const auto& l : landmarks)
+    CHECK(at_a.at(get(CGAL::vertex_point, a, l.first)) == at_b.at(b.point(l.second)), "a landmark, one vertex of both");
+  const double area_a = PMP::area(a), area_b = PMP::area(b);
+  CHECK(std::abs(PMP::area(a_out) - area_a) <= 1e-9 * area_a, "A' covers A");
+  CHECK(std::abs(PMP::area(b_out) - area_b) <= 1e-9 * area_b, "B' covers B");
+  if(identical)
+  {
+    CHECK(st.overlay_crossings == 0 && st.compatible_vertices == st.vertices_a && st.compatible_faces == st.faces_a,
+          "identical maps: the overlay is the mesh");
+    CHECK(sa.first == sb.first, "identical maps: A' == B'");
+  }
+  else CHECK(st.overlay_crossings > 0, "the maps cross");
+  std::cout << "compatible meshes, " << what << " (A " << mesh_name<MeshA>() << ", B' Polyhedron_3): A " << st.vertices_a
+            << " vertices, B " << st.vertices_b << ", " << landmarks.size() << " landmarks; overlay " << st.overlay_cells
+            << " cells, " << st.overlay_crossings << " crossings, " << st.overlay_centers << " centers; A' and B' "
+            << st.compatible_vertices << " vertices, " << st.compatible_faces << " faces, certified; areas A' "
+            << PMP::area(a_out) / area_a << " of A, B' " << PMP::area(b_out) / area_b << " of B; "
+            << st.seconds_compatible << " s of " << st.seconds_total << " s" << std::endl;
+  return EXIT_SUCCESS;
+}
+
+template <class MeshA>
+int compatible_cases(const std::string& data_dir)
+{
+  {
+    MeshA a;
+    Surface_mesh b;
+    PE::internal::make_grid_disk(7, a);
+    PE::internal::make_grid_disk(7, b);
+    std::vector<std::pair<typename boost::graph_traits<MeshA>::vertex_descriptor, Surface_mesh::Vertex_index> > landmarks;
+    auto vb = vertices(b).begin();
+    for(auto va = vertices(a).begin(); va != vertices(a).end(); ++va, ++vb)
+      if(!CGAL::is_border(*va, a)) landmarks.emplace_back(*va, *vb);
+    RUN(compatible(a, b, landmarks, true, "identical grids"));
+  }
+  const std::string file = data_dir + "/meshes/mushroom.off";
+  MeshA a;
+  Surface_mesh b;
+  CHECK(CGAL::IO::read_polygon_mesh(file, a) && CGAL::IO::read_polygon_mesh(file, b), "read " << file);
+  PE::internal::remesh_isotropically(b);
+  b.collect_garbage();
+  RUN(compatible(a, b, PE::internal::nearest_vertex_landmarks(a, b, PE::internal::spread_interior_vertices(a, 20)),
+                 false, "mushroom and its remeshed copy"));
+  return EXIT_SUCCESS;
+}
+
 // every error: the code, the landmark and the mesh named, nothing written
 template <class Mesh>
 int errors(const std::string& data_dir)
@@ -464,6 +555,13 @@ PE_TEST_GROUP(cross_errors)
 {
   RUN(errors<Surface_mesh>(data_dir));
   RUN(errors<Polyhedron>(data_dir));
+  return EXIT_SUCCESS;
+}
+
+PE_TEST_GROUP(cross_compatible)
+{
+  RUN(compatible_cases<Surface_mesh>(data_dir));
+  RUN(compatible_cases<Polyhedron>(data_dir));
   return EXIT_SUCCESS;
 }
 

@@ -14,6 +14,9 @@
 #include <CGAL/Gmpfr.h>
 #include <CGAL/Mpzf.h>
 #include <CGAL/Lazy_exact_nt.h>
+#ifdef CGAL_USE_GMPXX
+#include <CGAL/mpq_class.h>
+#endif
 #include <CGAL/Interval_nt.h>
 #include <boost/multiprecision/number.hpp>
 
@@ -102,6 +105,11 @@ inline CGAL::Gmpq to_rational(const boost::multiprecision::number<Backend, Et>& 
   // mpq_rational and cpp_rational: numerator and denominator through strings (exact).
   return CGAL::Gmpq(x.str()); // "n/d" or "n": exact
 }
+
+#ifdef CGAL_USE_GMPXX
+// Epeck's exact type when CGAL is configured with gmpxx
+inline CGAL::Gmpq to_rational(const mpq_class& q) { return CGAL::Gmpq(q.get_mpq_t()); }
+#endif
 
 // after the overloads of the exact types it forwards to (two-phase lookup sees only those declared
 // before; Epeck's exact type is a boost::multiprecision rational)

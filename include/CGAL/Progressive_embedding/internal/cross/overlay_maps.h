@@ -1,0 +1,209 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+#ifndef CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CROSS_OVERLAY_MAPS_H
+#define CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CROSS_OVERLAY_MAPS_H
+
+// The common refinement of two valid planar maps of one domain, triangulated. Each map's edges make
+// a CGAL arrangement whose faces carry the index of the map's triangle; CGAL's overlay (a sweep in
+// exact arithmetic: Epeck) gives the cells, each the intersection of one triangle of each map and
+// so a convex polygon, with every overlay vertex on its border listed (no T-junction). A cell is
+// fanned from a corner whose two neighbours are corners too (then no fan triangle is flat); a cell
+// without one gets a vertex at the mean of its corners and is fanned from it.
+
+#include <CGAL/Progressive_embedding/Error_code.h>
+
+#include <CGAL/Arr_default_overlay_traits.h>
+#include <CGAL/Arr_extended_dcel.h>
+#include <CGAL/Arr_overlay_2.h>
+#include <CGAL/Arr_segment_traits_2.h>
+#include <CGAL/Arrangement_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <map>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Progressive_embedding {
+namespace internal {
+
+// The triangulated overlay: exact points, counterclockwise triangles, and for each triangle the
+// triangle of each map that holds it.
+struct Map_overlay
+{
+  typedef CGAL::Epeck::Point_2 Point_2;
+  std::vector<Point_2> points;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  std::vector<std::array<std::size_t, 2> > cell_faces; // per triangle: face of map A, face of map B
+  std::size_t cells = 0;     // faces of the overlay
+  std::size_t crossings = 0; // overlay vertices that are a vertex of neither map
+  std::size_t centers = 0;   // vertices added at the mean of a cell's corners
+};
+
+namespace overlay_detail {
+
+constexpr std::size_t no_face = std::size_t(-1);
+typedef CGAL::Epeck K;
+typedef CGAL::Arr_segment_traits_2<K> Traits;
+typedef CGAL::Arrangement_2<Traits, CGAL::Arr_face_extended_dcel<Traits, std::size_t> > Map_arrangement;
+typedef CGAL::Arrangement_2<Traits, CGAL::Arr_face_extended_dcel<Traits, std::array<std::size_t, 2> > >
+  Overlay_arrangement;
+
+struct Pair_faces
+{
+  std::array<std::size_t, 2> operator()(std::size_t a, std::size_t b) const { return {{ a, b }}; }
+};
+
+// The arrangement of a map's edges, each bounded face tagged with its triangle. Fails if a triangle
+// is not a face of the arrangement on its left (a map that is not valid).
+template <class Point_2>
+Error_code map_arrangement(const std::vector<Point_2>& uv, const std::vector<std::array<std::size_t, 3> >& faces,
+                           Map_arrangement& arr)
+{
+  std::vector<std::pair<std::size_t, std::size_t> > edges;
+  edges.reserve(3 * faces.size());
+  for(const auto& f : faces)
+    for(int i = 0; i < 3; ++i) edges.emplace_back((std::min)(f[i], f[(i + 1) % 3]), (std::max)(f[i], f[(i + 1) % 3]));
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::vector<K::Point_2> p;
+  p.reserve(uv.size());
+  for(const Point_2& q : uv) p.emplace_back(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
+  std::vector<Traits::X_monotone_curve_2> segments;
+  segments.reserve(edges.size());
+  for(const auto& e : edges)
+  {
+    if(p[e.first] == p[e.second]) return ERROR_INVALID_EMBEDDING; // a collapsed edge
+    segments.emplace_back(p[e.first], p[e.second]);
+  }
+  // the edges of a valid map meet only at common end points
+  CGAL::insert_non_intersecting_curves(arr, segments.begin(), segments.end());
+  for(auto f = arr.faces_begin(); f != arr.faces_end(); ++f) f->set_data(no_face);
+  // the arrangement's vertex at each map vertex (the points are doubles: their conversion is exact)
+  std::map<std::pair<double, double>, Map_arrangement::Vertex_handle> at;
+  for(auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v)
+    at.emplace(std::make_pair(CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y())), v);
+  std::vector<Map_arrangement::Vertex_handle> vh(uv.size());
+  for(std::size_t i = 0; i < uv.size(); ++i)
+  {
+    const auto it = at.find(std::make_pair(CGAL::to_double(p[i].x()), CGAL::to_double(p[i].y())));
+    if(it == at.end()) return ERROR_INVALID_EMBEDDING; // a vertex in no edge
+    vh[i] = it->second;
+  }
+  for(std::size_t t = 0; t < faces.size(); ++t)
+  {
+    // the halfedge from f[0] to f[1]: its face, on its left, is the triangle if the map is valid
+    const auto from = vh[faces[t][0]], to = vh[faces[t][1]];
+    auto c = to->incident_halfedges(), done = c;
+    Map_arrangement::Face_handle face;
+    bool found = false;
+    do
+    {
+      if(c->source() == from) { face = c->face(); found = true; break; }
+    } while(++c != done);
+    if(!found || face->is_unbounded() || face->data() != no_face) return ERROR_INVALID_EMBEDDING;
+    face->set_data(t);
+  }
+  return OK;
+}
+
+} // namespace overlay_detail
+
+// `uv_a`/`faces_a` and `uv_b`/`faces_b`: two valid maps (counterclockwise triangles, coordinates in
+// double) of one domain. Returns ERROR_INVALID_EMBEDDING if either is not a valid map or if they do
+// not cover the same domain.
+template <class Point_2>
+Error_code overlay_maps(const std::vector<Point_2>& uv_a, const std::vector<std::array<std::size_t, 3> >& faces_a,
+                        const std::vector<Point_2>& uv_b, const std::vector<std::array<std::size_t, 3> >& faces_b,
+                        Map_overlay& out)
+{
+  using namespace overlay_detail;
+  out = Map_overlay();
+  Map_arrangement arr_a, arr_b;
+  Error_code ec = map_arrangement(uv_a, faces_a, arr_a);
+  if(ec != OK) return ec;
+  ec = map_arrangement(uv_b, faces_b, arr_b);
+  if(ec != OK) return ec;
+  Overlay_arrangement arr;
+  CGAL::Arr_face_overlay_traits<Map_arrangement, Map_arrangement, Overlay_arrangement, Pair_faces> traits;
+  CGAL::overlay(arr_a, arr_b, arr, traits);
+
+  // the map vertices, to count the crossings
+  std::map<std::pair<double, double>, bool> map_vertex;
+  for(const Point_2& q : uv_a) map_vertex.emplace(std::make_pair(CGAL::to_double(q.x()), CGAL::to_double(q.y())), true);
+  for(const Point_2& q : uv_b) map_vertex.emplace(std::make_pair(CGAL::to_double(q.x()), CGAL::to_double(q.y())), true);
+  std::unordered_map<const void*, std::size_t> index;
+  out.points.reserve(arr.number_of_vertices());
+  for(auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v)
+  {
+    index.emplace(&*v, out.points.size());
+    out.points.push_back(v->point());
+    const double x = CGAL::to_double(v->point().x()), y = CGAL::to_double(v->point().y());
+    if(!(v->point().x() == x && v->point().y() == y && map_vertex.count(std::make_pair(x, y)) > 0)) ++out.crossings;
+  }
+  std::vector<std::size_t> cell;
+  for(auto f = arr.faces_begin(); f != arr.faces_end(); ++f)
+  {
+    const std::array<std::size_t, 2> d = f->data();
+    if(f->is_unbounded())
+    {
+      if(f->number_of_inner_ccbs() != 1) return ERROR_INVALID_EMBEDDING; // two domains side by side
+      continue;
+    }
+    // a bounded cell outside either domain, or a cell with a hole: the maps do not cover one domain
+    if(d[0] == no_face || d[1] == no_face || f->number_of_inner_ccbs() != 0) return ERROR_INVALID_EMBEDDING;
+    ++out.cells;
+    cell.clear();
+    auto c = f->outer_ccb(), done = c;
+    do cell.push_back(index.at(&*c->target())); while(++c != done);
+    const std::size_t m = cell.size();
+    // corners: left turns; a right turn means the cell is not convex (not an intersection of triangles)
+    std::vector<bool> corner(m);
+    for(std::size_t i = 0; i < m; ++i)
+    {
+      const CGAL::Orientation o = CGAL::orientation(out.points[cell[(i + m - 1) % m]], out.points[cell[i]],
+                                                    out.points[cell[(i + 1) % m]]);
+      if(o == CGAL::RIGHT_TURN) return ERROR_INVALID_EMBEDDING;
+      corner[i] = (o == CGAL::LEFT_TURN);
+    }
+    std::size_t apex = no_face;
+    for(std::size_t i = 0; i < m && apex == no_face; ++i)
+      if(corner[i] && corner[(i + m - 1) % m] && corner[(i + 1) % m]) apex = i;
+    if(apex != no_face)
+    {
+      for(std::size_t k = 1; k + 1 < m; ++k)
+      {
+        out.triangles.push_back({{ cell[apex], cell[(apex + k) % m], cell[(apex + k + 1) % m] }});
+        out.cell_faces.push_back(d);
+      }
+    }
+    else
+    {
+      K::FT x(0), y(0);
+      int corners = 0;
+      for(std::size_t i = 0; i < m; ++i)
+        if(corner[i]) { x += out.points[cell[i]].x(); y += out.points[cell[i]].y(); ++corners; }
+      const std::size_t center = out.points.size();
+      out.points.emplace_back(x / corners, y / corners);
+      ++out.centers;
+      for(std::size_t i = 0; i < m; ++i)
+      {
+        out.triangles.push_back({{ center, cell[i], cell[(i + 1) % m] }});
+        out.cell_faces.push_back(d);
+      }
+    }
+  }
+  return OK;
+}
+
+} // namespace internal
+} // namespace Progressive_embedding
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CROSS_OVERLAY_MAPS_H

@@ -279,19 +279,42 @@ Error_code compatible_soups(const Work& work, UVMap uv, const TriangleMeshB& tm_
   stats.report_compatible = check_embedding(soup, exact_uv);
   if(!stats.report_compatible.is_valid()) return ERROR_INVALID_EMBEDDING;
 
-  // each vertex on both surfaces, at its exact barycentric coordinates (rounded once) in a face of each map
-  auto place = [](const EK::Point_2& q, const std::array<std::size_t, 3>& face, const std::vector<Point_2>& map,
-                  const std::vector<std::array<double, 3> >& points) {
-    const EK::Point_2 c[3] = { EK::Point_2(map[face[0]].x(), map[face[0]].y()), EK::Point_2(map[face[1]].x(), map[face[1]].y()),
-                               EK::Point_2(map[face[2]].x(), map[face[2]].y()) };
-    const EK::FT whole = CGAL::area(c[0], c[1], c[2]);
-    // from the exact value: a lazy number's to_double() may round its interval instead
-    auto to_double = [](const EK::FT& x) { return CGAL::to_double(CGAL::exact(x)); };
-    const double w[3] = { to_double(CGAL::area(q, c[1], c[2]) / whole), to_double(CGAL::area(c[0], q, c[2]) / whole),
-                          to_double(CGAL::area(c[0], c[1], q) / whole) };
+  // Each vertex on both surfaces, from where it lies in each map: a map vertex gets its own point bit for bit;
+  // a point inside an edge, the point at its parameter along the edge; a point inside a face, its barycentric
+  // coordinates there. Parameters and coordinates come from the interval approximation of the point (exact
+  // points would cost an exact evaluation of every crossing).
+  auto place = [](const EK::Point_2& q, const Map_feature& feature, const std::array<std::size_t, 3>& face,
+                  const std::vector<Point_2>& map, const std::vector<std::array<double, 3> >& points) {
+    constexpr std::size_t none = std::size_t(-1);
+    if(feature[0] != none && feature[1] == none) return points[feature[0]];
+    const double qx = CGAL::to_double(q.x()), qy = CGAL::to_double(q.y());
+    std::array<std::size_t, 3> corner = face;
+    double w[3] = { 0, 0, 0 };
+    if(feature[0] != none)
+    {
+      const Point_2& u = map[feature[0]];
+      const Point_2& v = map[feature[1]];
+      const double dx = v.x() - u.x(), dy = v.y() - u.y();
+      const double t = (std::min)(1., (std::max)(0., ((qx - u.x()) * dx + (qy - u.y()) * dy) / (dx * dx + dy * dy)));
+      corner = {{ feature[0], feature[1], feature[1] }};
+      w[0] = 1 - t;
+      w[1] = t;
+    }
+    else
+    {
+      const Point_2 &c0 = map[face[0]], &c1 = map[face[1]], &c2 = map[face[2]];
+      auto twice_area = [](double ax, double ay, double bx, double by, double cx, double cy) {
+        return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+      };
+      w[0] = (std::max)(0., twice_area(qx, qy, c1.x(), c1.y(), c2.x(), c2.y()));
+      w[1] = (std::max)(0., twice_area(c0.x(), c0.y(), qx, qy, c2.x(), c2.y()));
+      w[2] = (std::max)(0., twice_area(c0.x(), c0.y(), c1.x(), c1.y(), qx, qy));
+      const double sum = w[0] + w[1] + w[2];
+      for(double& x : w) x /= sum;
+    }
     std::array<double, 3> r{{ 0, 0, 0 }};
     for(int k = 0; k < 3; ++k)
-      for(int d = 0; d < 3; ++d) r[d] += w[k] * points[face[k]][d];
+      for(int d = 0; d < 3; ++d) r[d] += w[k] * points[corner[k]][d];
     return r;
   };
   on_a.assign(overlay.points.size(), std::array<double, 3>());
@@ -302,8 +325,8 @@ Error_code compatible_soups(const Work& work, UVMap uv, const TriangleMeshB& tm_
       if(!placed[i])
       {
         placed[i] = true;
-        on_a[i] = place(overlay.points[i], faces_a[overlay.cell_faces[t][0]], map_a, points_a);
-        on_b[i] = place(overlay.points[i], disk_b.faces[overlay.cell_faces[t][1]], map_b, points_b);
+        on_a[i] = place(overlay.points[i], overlay.features[i][0], faces_a[overlay.cell_faces[t][0]], map_a, points_a);
+        on_b[i] = place(overlay.points[i], overlay.features[i][1], disk_b.faces[overlay.cell_faces[t][1]], map_b, points_b);
       }
   triangles.swap(overlay.triangles);
   stats.compatible_vertices = overlay.points.size();
@@ -479,7 +502,9 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///                           arrangement overlay with `CGAL::Epeck`); each cell of the overlay, the intersection of
 ///                           a face of each map, is a convex polygon, triangulated by a fan from a corner (or from
 ///                           the mean of its corners when every fan from a corner would have a flat triangle). Each
-///                           vertex is placed on A at its barycentric coordinates in its face of A's refined map, and
+///                           vertex is placed on A from where it lies in A's refined map: a vertex of the map at its
+///                           own point, a point inside an edge at its parameter along it, a point inside a face at its
+///                           barycentric coordinates (in double, from the interval approximation of the exact point);
 ///                           on B likewise; both meshes list their vertices and faces in the same order, so that
 ///                           `(1-t) A' + t B'` is a morph. The triangulated overlay is certified by
 ///                           `check_embedding()` in exact coordinates; since both maps are certified, the composed map

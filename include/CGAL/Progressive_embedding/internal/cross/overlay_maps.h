@@ -10,7 +10,9 @@
 // exact arithmetic: Epeck) gives the cells, each the intersection of one triangle of each map and
 // so a convex polygon, with every overlay vertex on its border listed (no T-junction). A cell is
 // fanned from a corner whose two neighbours are corners too (then no fan triangle is flat); a cell
-// without one gets a vertex at the mean of its corners and is fanned from it.
+// without one gets a vertex at the mean of its corners and is fanned from it. The overlay traits
+// record where each overlay vertex lies in each map (a vertex, an edge, a face): a caller places the
+// vertices on the surfaces from that, without evaluating the constructed points exactly.
 
 #include <CGAL/Progressive_embedding/Error_code.h>
 
@@ -33,12 +35,17 @@ namespace CGAL {
 namespace Progressive_embedding {
 namespace internal {
 
+// Where an overlay vertex lies in one map: at the map vertex `{v, none}`, inside the edge `{u, v}`, or
+// inside a face `{none, none}` (the face of any triangle of the overlay that has the vertex).
+typedef std::array<std::size_t, 2> Map_feature;
+
 // The triangulated overlay: exact points, counterclockwise triangles, and for each triangle the
 // triangle of each map that holds it.
 struct Map_overlay
 {
   typedef CGAL::Epeck::Point_2 Point_2;
   std::vector<Point_2> points;
+  std::vector<std::array<Map_feature, 2> > features; // per point: where it lies in map A and in map B
   std::vector<std::array<std::size_t, 3> > triangles;
   std::vector<std::array<std::size_t, 2> > cell_faces; // per triangle: face of map A, face of map B
   std::size_t cells = 0;     // faces of the overlay
@@ -51,13 +58,33 @@ namespace overlay_detail {
 constexpr std::size_t no_face = std::size_t(-1);
 typedef CGAL::Epeck K;
 typedef CGAL::Arr_segment_traits_2<K> Traits;
-typedef CGAL::Arrangement_2<Traits, CGAL::Arr_face_extended_dcel<Traits, std::size_t> > Map_arrangement;
-typedef CGAL::Arrangement_2<Traits, CGAL::Arr_face_extended_dcel<Traits, std::array<std::size_t, 2> > >
-  Overlay_arrangement;
+// vertices carry their map vertex, faces their map triangle
+typedef CGAL::Arrangement_2<Traits, CGAL::Arr_extended_dcel<Traits, std::size_t, char, std::size_t> > Map_arrangement;
+typedef CGAL::Arrangement_2<Traits, CGAL::Arr_extended_dcel<Traits, std::array<Map_feature, 2>, char,
+                                                            std::array<std::size_t, 2> > > Overlay_arrangement;
 
-struct Pair_faces
+// records, for every cell, the triangle of each map, and for every vertex, the feature of each map it is on
+class Origin_overlay_traits
+  : public CGAL::_Arr_default_overlay_traits_base<Map_arrangement, Map_arrangement, Overlay_arrangement>
 {
-  std::array<std::size_t, 2> operator()(std::size_t a, std::size_t b) const { return {{ a, b }}; }
+  typedef CGAL::_Arr_default_overlay_traits_base<Map_arrangement, Map_arrangement, Overlay_arrangement> Base;
+  static Map_feature at(Map_arrangement::Vertex_const_handle v) { return {{ v->data(), no_face }}; }
+  static Map_feature at(Map_arrangement::Halfedge_const_handle e) { return {{ e->source()->data(), e->target()->data() }}; }
+  static Map_feature at(Map_arrangement::Face_const_handle) { return {{ no_face, no_face }}; }
+  template <class X, class Y>
+  static void set(X x, Y y, Base::Vertex_handle_R v) { v->set_data({{ at(x), at(y) }}); }
+
+public:
+  void create_vertex(Base::Vertex_handle_A x, Base::Vertex_handle_B y, Base::Vertex_handle_R v) const override { set(x, y, v); }
+  void create_vertex(Base::Vertex_handle_A x, Base::Halfedge_handle_B y, Base::Vertex_handle_R v) const override { set(x, y, v); }
+  void create_vertex(Base::Vertex_handle_A x, Base::Face_handle_B y, Base::Vertex_handle_R v) const override { set(x, y, v); }
+  void create_vertex(Base::Halfedge_handle_A x, Base::Vertex_handle_B y, Base::Vertex_handle_R v) const override { set(x, y, v); }
+  void create_vertex(Base::Face_handle_A x, Base::Vertex_handle_B y, Base::Vertex_handle_R v) const override { set(x, y, v); }
+  void create_vertex(Base::Halfedge_handle_A x, Base::Halfedge_handle_B y, Base::Vertex_handle_R v) const override { set(x, y, v); }
+  void create_face(Base::Face_handle_A x, Base::Face_handle_B y, Base::Face_handle_R f) const override
+  {
+    f->set_data({{ x->data(), y->data() }});
+  }
 };
 
 // The arrangement of a map's edges, each bounded face tagged with its triangle. Fails if a triangle
@@ -88,13 +115,17 @@ Error_code map_arrangement(const std::vector<Point_2>& uv, const std::vector<std
   // the arrangement's vertex at each map vertex (the points are doubles: their conversion is exact)
   std::map<std::pair<double, double>, Map_arrangement::Vertex_handle> at;
   for(auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v)
+  {
+    v->set_data(no_face);
     at.emplace(std::make_pair(CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y())), v);
+  }
   std::vector<Map_arrangement::Vertex_handle> vh(uv.size());
   for(std::size_t i = 0; i < uv.size(); ++i)
   {
     const auto it = at.find(std::make_pair(CGAL::to_double(p[i].x()), CGAL::to_double(p[i].y())));
     if(it == at.end()) return ERROR_INVALID_EMBEDDING; // a vertex in no edge
     vh[i] = it->second;
+    vh[i]->set_data(i);
   }
   for(std::size_t t = 0; t < faces.size(); ++t)
   {
@@ -131,21 +162,19 @@ Error_code overlay_maps(const std::vector<Point_2>& uv_a, const std::vector<std:
   ec = map_arrangement(uv_b, faces_b, arr_b);
   if(ec != OK) return ec;
   Overlay_arrangement arr;
-  CGAL::Arr_face_overlay_traits<Map_arrangement, Map_arrangement, Overlay_arrangement, Pair_faces> traits;
+  Origin_overlay_traits traits;
   CGAL::overlay(arr_a, arr_b, arr, traits);
 
-  // the map vertices, to count the crossings
-  std::map<std::pair<double, double>, bool> map_vertex;
-  for(const Point_2& q : uv_a) map_vertex.emplace(std::make_pair(CGAL::to_double(q.x()), CGAL::to_double(q.y())), true);
-  for(const Point_2& q : uv_b) map_vertex.emplace(std::make_pair(CGAL::to_double(q.x()), CGAL::to_double(q.y())), true);
   std::unordered_map<const void*, std::size_t> index;
   out.points.reserve(arr.number_of_vertices());
+  out.features.reserve(arr.number_of_vertices());
   for(auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v)
   {
     index.emplace(&*v, out.points.size());
     out.points.push_back(v->point());
-    const double x = CGAL::to_double(v->point().x()), y = CGAL::to_double(v->point().y());
-    if(!(v->point().x() == x && v->point().y() == y && map_vertex.count(std::make_pair(x, y)) > 0)) ++out.crossings;
+    out.features.push_back(v->data());
+    // inside an edge of each map
+    if(v->data()[0][1] != no_face && v->data()[1][1] != no_face) ++out.crossings;
   }
   std::vector<std::size_t> cell;
   for(auto f = arr.faces_begin(); f != arr.faces_end(); ++f)
@@ -191,6 +220,7 @@ Error_code overlay_maps(const std::vector<Point_2>& uv_a, const std::vector<std:
         if(corner[i]) { x += out.points[cell[i]].x(); y += out.points[cell[i]].y(); ++corners; }
       const std::size_t center = out.points.size();
       out.points.emplace_back(x / corners, y / corners);
+      out.features.push_back({{ Map_feature{{ no_face, no_face }}, Map_feature{{ no_face, no_face }} }});
       ++out.centers;
       for(std::size_t i = 0; i < m; ++i)
       {

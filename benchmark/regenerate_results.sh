@@ -2,7 +2,7 @@
 # Regenerates the tables and pictures of benchmark/results (see benchmark/results/README.md).
 #
 #   benchmark/regenerate_results.sh [--build DIR] [--out DIR] [--study] [--benchmark] [--constrained]
-#                                   [--polygons [--polygon-obj FILE.obj]] [--cross]
+#                                   [--polygons [--polygon-obj FILE.obj]] [--cross [--cross-pairs DIR]]
 #
 # (default)    from the committed comparison-study run (study_runs.csv.gz, study_gallery.csv): the
 #              study's tables, plot and gallery; the driver only draws the gallery runs again (under
@@ -17,7 +17,11 @@
 #              polygon_map_benchmark (polygon_maps.{csv,md}: maps onto Hilbert, star and spiral borders,
 #              about 15 minutes); --polygon-obj adds an OBJ disk with texture coordinates (repeatable).
 # --cross      also runs cross_benchmark (cross_parameterization.{csv,md}: mushroom and lion-head against
-#              their remeshed copies, 5, 20 and 50 landmarks, about a minute).
+#              their remeshed copies, 5, 20 and 50 landmarks, about a minute); with --cross-pairs DIR also
+#              cross_parameterization_pairs.{csv,md}: two resolutions of one surface, 0, 5, 20 and 50 landmarks,
+#              from the OBJ files of OptCuts' inputs (its input/benchmark and input/scalability/lucy_o folders)
+#              that DIR holds: cat, cat_f1500, bishop_part, bishop_part_f1000, lucy_o_f12067, _f24136, _f48275
+#              (about 5 minutes).
 # --build DIR  the CMake build directory (default: build); the drivers are built there.
 # --out DIR    the results folder (default: benchmark/results), e.g. a copy to compare with.
 #
@@ -33,11 +37,13 @@ benchmark=0
 constrained=0
 polygons=0
 cross=0
+cross_pairs=""
 polygon_objs=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --build) [ $# -ge 2 ] || { echo "--build needs a directory" >&2; exit 2; }; build=$2; shift 2 ;;
     --out) [ $# -ge 2 ] || { echo "--out needs a directory" >&2; exit 2; }; results=$2; shift 2 ;;
+    --cross-pairs) [ $# -ge 2 ] || { echo "--cross-pairs needs a directory" >&2; exit 2; }; cross_pairs=$2; shift 2 ;;
     --study) study=1; shift ;;
     --benchmark) benchmark=1; shift ;;
     --constrained) constrained=1; shift ;;
@@ -107,5 +113,10 @@ fi
 if [ "$cross" = 1 ]; then
   cmake --build "$build" --target cross_benchmark
   "$build/bin/cross_benchmark" "$build/cgal_data/data" "$results/cross_parameterization"
+  if [ -n "$cross_pairs" ]; then
+    d=$cross_pairs
+    "$build/bin/cross_benchmark" "$build/cgal_data/data" "$results/cross_parameterization_pairs" --counts 0,5,20,50 \
+      --pairs "$d/cat_f1500.obj:$d/cat.obj,$d/bishop_part_f1000.obj:$d/bishop_part.obj,$d/lucy_o_f24136.obj:$d/lucy_o_f12067.obj,$d/lucy_o_f48275.obj:$d/lucy_o_f24136.obj"
+  fi
 fi
 echo "$results regenerated"

@@ -10,7 +10,11 @@
 // 3D distance between a vertex of A and its image on B relative to A's bounding-box diagonal; the compatible
 // meshes (the certified overlay of the two maps): their vertices, certificate and seconds (in the total).
 //
-//   cross_benchmark DATA_DIR OUT_PREFIX [--meshes a.off,b.off] [--counts 5,20,50]
+//   cross_benchmark DATA_DIR OUT_PREFIX [--meshes a.off,b.off] [--counts 5,20,50] [--pairs A1:B1,A2:B2]
+//
+// With --pairs, A and B are two given files (e.g. two resolutions of one surface: the true image of a vertex of
+// A is then its own position, up to the distance between the two discretizations) instead of a mesh and its
+// remeshed copy; K = 0 gives the map without landmarks (the borders matched by relative arc length only).
 //
 // Writes OUT_PREFIX.csv (one row per run) and OUT_PREFIX.md (the same as a table).
 
@@ -29,6 +33,8 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <array>
+#include <utility>
 #include <vector>
 
 namespace PE = CGAL::Progressive_embedding;
@@ -46,28 +52,42 @@ struct Row
   double mean_error = 0, max_error = 0, t_b = 0, t_a = 0, t_location = 0, t_compatible = 0, t_total = 0;
 };
 
-std::vector<std::string> split(const std::string& s)
+std::vector<std::string> split(const std::string& s, char separator = ',')
 {
   std::vector<std::string> r;
   std::stringstream ss(s);
-  for(std::string t; std::getline(ss, t, ','); ) if(!t.empty()) r.push_back(t);
+  for(std::string t; std::getline(ss, t, separator); ) if(!t.empty()) r.push_back(t);
   return r;
 }
 
-Row run(const std::string& dir, const std::string& name, std::size_t count)
+std::string base_name(const std::string& path) { return path.substr(path.find_last_of('/') + 1); }
+
+// `file_b` empty: B is A remeshed
+Row run(const std::string& file_a, const std::string& file_b, const std::string& name, std::size_t count)
 {
   Row r;
   r.mesh = name;
   r.count = count;
   SM a, b;
-  if(!CGAL::IO::read_polygon_mesh(dir + "/meshes/" + name, a) || !CGAL::IO::read_polygon_mesh(dir + "/meshes/" + name, b))
+  if(!CGAL::IO::read_polygon_mesh(file_a, a) || !CGAL::IO::read_polygon_mesh(file_b.empty() ? file_a : file_b, b))
   {
     r.status = "unreadable";
     return r;
   }
-  PE::internal::remesh_isotropically(b);
-  b.collect_garbage();
-  const auto landmarks = PE::internal::nearest_vertex_landmarks(a, b, PE::internal::spread_interior_vertices(a, count));
+  if(file_b.empty())
+  {
+    PE::internal::remesh_isotropically(b);
+    b.collect_garbage();
+  }
+  // the landmarks spread over the coarser mesh, each matched to the nearest vertex of the finer one (the other
+  // way round, a landmark would be moved by up to half an edge of the coarser mesh)
+  std::vector<std::pair<SM::Vertex_index, SM::Vertex_index> > landmarks;
+  if(b.number_of_vertices() < a.number_of_vertices())
+  {
+    for(const auto& p : PE::internal::nearest_vertex_landmarks(b, a, PE::internal::spread_interior_vertices(b, count)))
+      landmarks.emplace_back(p.second, p.first);
+  }
+  else landmarks = PE::internal::nearest_vertex_landmarks(a, b, PE::internal::spread_interior_vertices(a, count));
   r.landmarks = landmarks.size();
   SM::Property_map<SM::Vertex_index, PE::Cross_location<SM> > loc =
     a.add_property_map<SM::Vertex_index, PE::Cross_location<SM> >("v:cross").first;
@@ -105,18 +125,33 @@ int main(int argc, char** argv)
   const std::string dir = argv[1], out = argv[2];
   std::vector<std::string> meshes = { "mushroom.off", "lion-head.off" };
   std::vector<std::size_t> counts = { 5, 20, 50 };
+  std::vector<std::pair<std::string, std::string> > pairs;
   for(int i = 3; i + 1 < argc; i += 2)
   {
     const std::string o = argv[i], v = argv[i + 1];
     if(o == "--meshes") meshes = split(v);
     else if(o == "--counts") { counts.clear(); for(const std::string& c : split(v)) counts.push_back(std::stoul(c)); }
+    else if(o == "--pairs")
+    {
+      for(const std::string& p : split(v))
+      {
+        const std::vector<std::string> ab = split(p, ':');
+        if(ab.size() != 2) { std::cerr << "--pairs: expected A:B, got " << p << "\n"; return 2; }
+        pairs.emplace_back(ab[0], ab[1]);
+      }
+      meshes.clear();
+    }
     else { std::cerr << "unknown option " << o << "\n"; return 2; }
   }
+  std::vector<std::array<std::string, 3> > jobs; // A file, B file (empty: A remeshed), name
+  for(const std::string& m : meshes) jobs.push_back({{ dir + "/meshes/" + m, std::string(), m }});
+  for(const auto& p : pairs) jobs.push_back({{ p.first, p.second, base_name(p.first) + " -> " + base_name(p.second) }});
   std::vector<Row> rows;
-  for(const std::string& m : meshes)
+  for(const auto& job : jobs)
     for(std::size_t k : counts)
     {
-      rows.push_back(run(dir, m, k));
+      const std::string& m = job[2];
+      rows.push_back(run(job[0], job[1], m, k));
       const Row& r = rows.back();
       std::cout << m << " K=" << k << ": " << r.status << ", mean error " << r.mean_error << ", max " << r.max_error
                 << ", added " << r.added << ", compatible " << r.vc
@@ -141,15 +176,19 @@ int main(int argc, char** argv)
   std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
   std::ofstream md(out + ".md");
   md << std::setprecision(3)
-     << "# cross_parameterization(): libcgal-demo disks against their remeshed copies\n\n"
-     << "Generated " << date << " by `cross_benchmark` (" << sysconf(_SC_NPROCESSORS_ONLN) << " cores). A: the "
-        "mesh as it is; B: its copy remeshed by CGAL's isotropic remeshing (target edge length 1.3 times the mean edge "
-        "length, 3 iterations). K landmarks: interior vertices of A spread out by farthest-point sampling, each "
-        "matched to the nearest interior vertex of B. Error: the 3D distance between a vertex of A and the point of B "
-        "at its location, relative to the diagonal of A's bounding box. Vertices added: Steiner vertices of A's "
+     << (pairs.empty() ? "# cross_parameterization(): libcgal-demo disks against their remeshed copies\n\n"
+                       : "# cross_parameterization(): pairs of meshes of one surface\n\n")
+     << "Generated " << date << " by `cross_benchmark` (" << sysconf(_SC_NPROCESSORS_ONLN) << " cores). "
+     << (pairs.empty() ? "A: the mesh as it is; B: its copy remeshed by CGAL's isotropic remeshing (target edge length "
+                         "1.3 times the mean edge length, 3 iterations). "
+                       : "A and B: two given meshes of one surface (command line below). ")
+     << "K landmarks: interior vertices of the coarser mesh spread out by farthest-point "
+        "sampling, each matched to the nearest interior vertex of the other. Error: the 3D distance between the point "
+        "of B at the location of a vertex of A and the point of B nearest to that vertex, relative to the diagonal of "
+        "A's bounding box. Vertices added: Steiner vertices of A's "
         "refined copy (A itself is not changed). Compatible meshes: the overlay of the two maps triangulated "
         "(`compatible_meshes`), certified by `check_embedding()` in exact coordinates; its seconds are part of the "
-        "total.\n\n"
+        "total. K = 0: no landmark, the borders matched by relative arc length only.\n\n"
      << "| mesh | K | vertices A | vertices B | status | both maps certified | landmarks exact | vertices added to A "
         "| mean error | max error | B's map s | A's map s | location s | compatible vertices | compatible certified "
         "| compatible s | total s |\n"
@@ -159,5 +198,8 @@ int main(int argc, char** argv)
        << (r.valid_a && r.valid_b ? "yes" : "no") << " | " << (r.exact ? "yes" : "no") << " | " << r.added << " | "
        << r.mean_error << " | " << r.max_error << " | " << r.t_b << " | " << r.t_a << " | " << r.t_location << " | "
        << r.vc << " | " << (r.valid_c ? "yes" : "no") << " | " << r.t_compatible << " | " << r.t_total << " |\n";
+  std::string command = "cross_benchmark";
+  for(int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
+  md << "\nMachine: " << host << ". Command: `" << command << "`.\n";
   return 0;
 }

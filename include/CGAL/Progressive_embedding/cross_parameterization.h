@@ -426,8 +426,9 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///
 /// Both meshes are mapped onto the unit square [0,1]²: its corner (0,0) gets a matched pair of border vertices
 /// (`border_vertex_pair`, else the first border landmark); B's border vertices nearest to a quarter, a half and three
-/// quarters of its 3D length get the other corners, counterclockwise (the mesh interior on the left of the border),
-/// and A's border vertices nearest to the relative lengths of B's corners get the same corners; between corners each
+/// quarters of its 3D length get the other corners, counterclockwise (the mesh interior on the left of the border;
+/// a corner moves to the vertex just inside an interior edge of B that joins two border vertices, when both would
+/// otherwise lie on one side: B is mapped unchanged, and such an edge would be flat), and A's border vertices nearest to the relative lengths of B's corners get the same corners; between corners each
 /// side is parametrized by 3D arc length. The borders are thus matched by relative arc length up to the corners (each
 /// corner moves by at most half a border edge), and every border point lies exactly on a side of the square.
 ///
@@ -532,8 +533,7 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///         `border_vertex_pair` with another partner) -- these three with
 ///         `Cross_parameterization_statistics::failed_landmark` --, `ERROR_BORDER_TOO_SHORT` also when an arc of A's
 ///         border between two border landmarks has no vertex for a corner of the square that B's arc holds, the
-///         errors of `parameterize_certified()` on B (e.g. B has an interior edge joining two border vertices of one
-///         side of the square, which no valid map of the square keeps) and of `constrained_embedding()` on A, or
+///         errors of `parameterize_certified()` on B and of `constrained_embedding()` on A, or
 ///         `ERROR_INVALID_EMBEDDING` when a certificate fails (of either map, of the location, or with `compatible_meshes` of
 ///         the triangulated overlay).
 template <class TriangleMeshA, class TriangleMeshB, class LandmarkRange, class LocationMap,

@@ -400,6 +400,40 @@ int compatible_cases(const std::string& data_dir)
   return EXIT_SUCCESS;
 }
 
+// A convex polygon triangulated by a fan from its first vertex: every inside edge joins two border vertices, so
+// B's map must put the corners of the square where no such edge has both ends on one side (at the quarters of
+// the border, edges would be flat: ERROR_DEGENERATE_CHORD before the corners were chosen around them).
+template <class Mesh>
+int fan_disks()
+{
+  Mesh a, b;
+  for(Mesh* m : { &a, &b })
+  {
+    typedef typename boost::graph_traits<Mesh>::vertex_descriptor vd;
+    std::vector<vd> v;
+    for(int k = 0; k < 12; ++k)
+    {
+      v.push_back(add_vertex(*m));
+      put(CGAL::vertex_point, *m, v.back(), Epick::Point_3(std::cos(0.5 * k) * (1 + 0.1 * (k % 3)), std::sin(0.5 * k), 0.01 * k));
+    }
+    for(int k = 1; k + 1 < 12; ++k) CGAL::Euler::add_face(std::vector<vd>{ v[0], v[k], v[k + 1] }, *m);
+  }
+  const std::vector<std::pair<typename boost::graph_traits<Mesh>::vertex_descriptor,
+                              typename boost::graph_traits<Mesh>::vertex_descriptor> > no_landmarks;
+  Location_map<Mesh> loc;
+  PE::Cross_parameterization_statistics st;
+  const PE::Error_code ec = PE::cross_parameterization(a, b, no_landmarks, boost::make_assoc_property_map(loc),
+                                                       PE::parameters::statistics(&st));
+  CHECK(ec == PE::OK, PE::get_error_message(ec) << " (failed mesh " << st.failed_mesh << ")");
+  CHECK(st.report_a.is_valid() && st.report_b.is_valid(), "both maps certified");
+  auto vb = vertices(b).begin();
+  for(auto va = vertices(a).begin(); va != vertices(a).end(); ++va, ++vb)
+    CHECK(weight_of(b, loc.at(*va), *vb) == 1., "a vertex of the fan on its own vertex");
+  std::cout << "fan disks (" << mesh_name<Mesh>() << "): 12 border vertices, 9 inside edges joining border vertices, "
+            << "both maps certified, every vertex on its own vertex" << std::endl;
+  return EXIT_SUCCESS;
+}
+
 // every error: the code, the landmark and the mesh named, nothing written
 template <class Mesh>
 int errors(const std::string& data_dir)
@@ -560,6 +594,8 @@ PE_TEST_GROUP(cross_errors)
 
 PE_TEST_GROUP(cross_compatible)
 {
+  RUN(fan_disks<Surface_mesh>());
+  RUN(fan_disks<Polyhedron>());
   RUN(compatible_cases<Surface_mesh>(data_dir));
   RUN(compatible_cases<Polyhedron>(data_dir));
   return EXIT_SUCCESS;

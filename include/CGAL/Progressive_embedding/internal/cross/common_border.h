@@ -12,7 +12,9 @@
 // each side is parametrized by arc length. Every border point then lies exactly on a side (one of its
 // coordinates is 0 or 1) and both border polygons are the whole square: the images of A's vertices
 // all lie in the closed domain of B's map. With border landmarks, A's border goes through their
-// partners' points (common_square_border_through()).
+// partners' points (common_square_border_through()). B is mapped unchanged, so an interior edge of B
+// joining two border vertices of one side would be flat in any map: B's corners are moved off the
+// quarters where that is needed (separate_chords()).
 
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
@@ -64,6 +66,55 @@ inline Error_code square_corners(const std::vector<double>& s, const std::vector
   return OK;
 }
 
+// the positions (from `start`, the smaller first) of the end points of the interior edges of `disk` that
+// join two border vertices
+template <class TriangleMesh>
+std::vector<std::pair<std::size_t, std::size_t> > border_chords(const Indexed_disk<TriangleMesh>& disk, std::size_t start)
+{
+  const std::size_t nb = disk.border.size();
+  std::vector<std::size_t> position(disk.number_of_vertices(), std::size_t(-1));
+  for(std::size_t k = 0; k < nb; ++k) position[disk.border[(start + k) % nb]] = k;
+  std::vector<std::pair<std::size_t, std::size_t> > chords;
+  for(const auto& f : disk.faces)
+    for(int i = 0; i < 3; ++i)
+    {
+      std::size_t u = position[f[i]], v = position[f[(i + 1) % 3]];
+      if(u == std::size_t(-1) || v == std::size_t(-1)) continue;
+      if(u > v) std::swap(u, v);
+      if(v - u == 1 || (u == 0 && v + 1 == nb)) continue; // a border edge
+      chords.emplace_back(u, v);
+    }
+  std::sort(chords.begin(), chords.end());
+  chords.erase(std::unique(chords.begin(), chords.end()), chords.end());
+  return chords;
+}
+
+// Moves corners 1 to 3 (positions on a border of `nb` vertices, corner 0 at position 0) so that no chord has
+// both end points on one side of the square: the corner at the end of the side that holds a chord goes to
+// the vertex just inside the chord (a chord is not a border edge, so there is one). Bounded: a few passes
+// over the chords; a chord that no move separates is left (the map then reports ERROR_DEGENERATE_CHORD).
+inline void separate_chords(const std::vector<std::pair<std::size_t, std::size_t> >& chords, std::size_t nb,
+                            std::vector<std::size_t>& corners)
+{
+  for(int pass = 0; pass < 8; ++pass)
+  {
+    bool moved = false;
+    for(const auto& c : chords)
+      for(std::size_t j = 0; j < 4; ++j)
+      {
+        const std::size_t lo = corners[j], hi = j < 3 ? corners[j + 1] : nb;
+        // the start vertex is position 0 and position nb, the end of the last side
+        const std::size_t u = (c.first == 0 && j == 3) ? c.second : c.first;
+        const std::size_t v = (c.first == 0 && j == 3) ? nb : c.second;
+        if(!(lo <= u && v <= hi)) continue;
+        if(j < 3 && v - 1 > u) { corners[j + 1] = v - 1; moved = true; }
+        else if(j == 3 && u + 1 < v) { corners[3] = u + 1; moved = true; }
+        break;
+      }
+    if(!moved) return;
+  }
+}
+
 // The uv of the border vertices of B (`disk_b` from `start_b`) and A on the unit square: `uv_b[k]`,
 // `uv_a[k]` for the border vertex at position k of each disk's border cycle.
 template <class Point_2, class MeshA, class VPMA, class MeshB, class VPMB>
@@ -77,6 +128,7 @@ Error_code common_square_border(const Indexed_disk<MeshA>& disk_a, VPMA vpm_a, s
   std::vector<std::size_t> ca, cb;
   Error_code ec = square_corners(sb, { 0., 0.25, 0.5, 0.75 }, cb);
   if(ec != OK) return ec;
+  separate_chords(border_chords(disk_b, start_b), disk_b.border.size(), cb);
   ec = square_corners(sa, { 0., sb[cb[1]], sb[cb[2]], sb[cb[3]] }, ca);
   if(ec != OK) return ec;
   const FT zero = make_ft<FT>(0), one = make_ft<FT>(1);
@@ -114,6 +166,7 @@ Error_code common_square_border_through(const Indexed_disk<MeshA>& disk_a, VPMA 
   std::vector<std::size_t> cb;
   Error_code ec = square_corners(sb, { 0., 0.25, 0.5, 0.75 }, cb);
   if(ec != OK) return ec;
+  separate_chords(border_chords(disk_b, start_b), nb, cb);
   if(na < 4) return ERROR_BORDER_TOO_SHORT;
   const FT zero = make_ft<FT>(0), one = make_ft<FT>(1);
   const std::vector<Point_2> square = { Point_2(zero, zero), Point_2(one, zero), Point_2(one, one), Point_2(zero, one) };

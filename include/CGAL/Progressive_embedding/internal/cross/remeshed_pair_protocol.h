@@ -13,6 +13,9 @@
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -99,18 +102,28 @@ double bbox_diagonal(const Mesh& m)
   return std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) + CGAL::square(b.zmax() - b.zmin()));
 }
 
-// mean and largest distance between each vertex of `a` and the point of `b` at its location, relative to
-// the diagonal of `a`'s bounding box
+// mean and largest distance between the point of `b` at the location of each vertex of `a` and the true
+// image of that vertex, the point of `b` nearest to it (an AABB tree of `b`'s faces), relative to the
+// diagonal of `a`'s bounding box: for two meshes of one surface, the error of the correspondence alone,
+// not the distance between the two discretizations
 template <class MeshA, class MeshB, class LocationMap>
 std::pair<double, double> correspondence_error(const MeshA& a, const MeshB& b, LocationMap locations)
 {
+  typedef typename boost::property_traits<typename boost::property_map<MeshB, CGAL::vertex_point_t>::const_type>::value_type Point_3;
+  typedef typename CGAL::Kernel_traits<Point_3>::Kernel K;
+  typedef CGAL::AABB_face_graph_triangle_primitive<MeshB> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
+  Tree tree(faces(b).first, faces(b).second, b);
+  tree.accelerate_distance_queries();
   const double diag = bbox_diagonal(a);
   double sum = 0, worst = 0;
   std::size_t n = 0;
   for(auto v : vertices(a))
   {
     const auto p = CGAL::Polygon_mesh_processing::construct_point(get(locations, v), b);
-    const double e = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, get(CGAL::vertex_point, a, v)))) / diag;
+    const auto q = get(CGAL::vertex_point, a, v);
+    const Point_3 truth = tree.closest_point(Point_3(q.x(), q.y(), q.z()));
+    const double e = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, truth))) / diag;
     sum += e;
     worst = (std::max)(worst, e);
     ++n;

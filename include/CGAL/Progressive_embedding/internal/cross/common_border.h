@@ -115,6 +115,38 @@ inline void separate_chords(const std::vector<std::pair<std::size_t, std::size_t
   }
 }
 
+template <class Point_2>
+std::vector<Point_2> unit_square()
+{
+  typedef typename CGAL::Kernel_traits<Point_2>::Kernel::FT FT;
+  const FT zero = make_ft<FT>(0), one = make_ft<FT>(1);
+  return { Point_2(zero, zero), Point_2(one, zero), Point_2(one, one), Point_2(zero, one) };
+}
+
+// B's border on the unit square, as both functions below place it: `sb` its relative arc-length parameters and
+// `cb` its corners (positions from `start_b`; at the quarters, moved around chords), `pb` the points
+template <class Point_2, class MeshB, class VPMB>
+Error_code place_b_on_square(const Indexed_disk<MeshB>& disk_b, VPMB vpm_b, std::size_t start_b,
+                             std::vector<double>& sb, std::vector<std::size_t>& cb, std::vector<Point_2>& pb)
+{
+  typedef typename CGAL::Kernel_traits<Point_2>::Kernel::FT FT;
+  sb = border_parameters_from(disk_b, vpm_b, start_b);
+  const Error_code ec = square_corners(sb, { 0., 0.25, 0.5, 0.75 }, cb);
+  if(ec != OK) return ec;
+  separate_chords(border_chords(disk_b, start_b), disk_b.border.size(), cb);
+  place_on_polygon<FT>(sb, cb, unit_square<Point_2>(), pb);
+  return OK;
+}
+
+// `uv[k]` for the border vertex at position k of the border cycle, from `p` given from position `start`
+template <class Point_2>
+void rotate_from_start(const std::vector<Point_2>& p, std::size_t start, std::vector<Point_2>& uv)
+{
+  const std::size_t n = p.size();
+  uv.resize(n);
+  for(std::size_t k = 0; k < n; ++k) uv[(start + k) % n] = p[k];
+}
+
 // The uv of the border vertices of B (`disk_b` from `start_b`) and A on the unit square: `uv_b[k]`,
 // `uv_a[k]` for the border vertex at position k of each disk's border cycle.
 template <class Point_2, class MeshA, class VPMA, class MeshB, class VPMB>
@@ -123,24 +155,17 @@ Error_code common_square_border(const Indexed_disk<MeshA>& disk_a, VPMA vpm_a, s
                                 std::vector<Point_2>& uv_a, std::vector<Point_2>& uv_b)
 {
   typedef typename CGAL::Kernel_traits<Point_2>::Kernel::FT FT;
-  const std::vector<double> sa = border_parameters_from(disk_a, vpm_a, start_a);
-  const std::vector<double> sb = border_parameters_from(disk_b, vpm_b, start_b);
+  std::vector<double> sb;
   std::vector<std::size_t> ca, cb;
-  Error_code ec = square_corners(sb, { 0., 0.25, 0.5, 0.75 }, cb);
+  std::vector<Point_2> pa, pb;
+  Error_code ec = place_b_on_square(disk_b, vpm_b, start_b, sb, cb, pb);
   if(ec != OK) return ec;
-  separate_chords(border_chords(disk_b, start_b), disk_b.border.size(), cb);
+  const std::vector<double> sa = border_parameters_from(disk_a, vpm_a, start_a);
   ec = square_corners(sa, { 0., sb[cb[1]], sb[cb[2]], sb[cb[3]] }, ca);
   if(ec != OK) return ec;
-  const FT zero = make_ft<FT>(0), one = make_ft<FT>(1);
-  const std::vector<Point_2> square = { Point_2(zero, zero), Point_2(one, zero), Point_2(one, one), Point_2(zero, one) };
-  std::vector<Point_2> pa, pb;
-  place_on_polygon<FT>(sa, ca, square, pa);
-  place_on_polygon<FT>(sb, cb, square, pb);
-  const std::size_t na = disk_a.border.size(), nb = disk_b.border.size();
-  uv_a.resize(na);
-  uv_b.resize(nb);
-  for(std::size_t k = 0; k < na; ++k) uv_a[(start_a + k) % na] = pa[k];
-  for(std::size_t k = 0; k < nb; ++k) uv_b[(start_b + k) % nb] = pb[k];
+  place_on_polygon<FT>(sa, ca, unit_square<Point_2>(), pa);
+  rotate_from_start(pa, start_a, uv_a);
+  rotate_from_start(pb, start_b, uv_b);
   return OK;
 }
 
@@ -161,17 +186,14 @@ Error_code common_square_border_through(const Indexed_disk<MeshA>& disk_a, VPMA 
   typedef typename CGAL::Kernel_traits<Point_2>::Kernel::FT FT;
   CGAL_precondition(!matched.empty() && matched.front().first == 0 && matched.front().second == 0);
   const std::size_t na = disk_a.border.size(), nb = disk_b.border.size(), nm = matched.size();
-  const std::vector<double> sa = border_parameters_from(disk_a, vpm_a, start_a);
-  const std::vector<double> sb = border_parameters_from(disk_b, vpm_b, start_b);
+  std::vector<double> sb;
   std::vector<std::size_t> cb;
-  Error_code ec = square_corners(sb, { 0., 0.25, 0.5, 0.75 }, cb);
-  if(ec != OK) return ec;
-  separate_chords(border_chords(disk_b, start_b), nb, cb);
-  if(na < 4) return ERROR_BORDER_TOO_SHORT;
-  const FT zero = make_ft<FT>(0), one = make_ft<FT>(1);
-  const std::vector<Point_2> square = { Point_2(zero, zero), Point_2(one, zero), Point_2(one, one), Point_2(zero, one) };
   std::vector<Point_2> pb;
-  place_on_polygon<FT>(sb, cb, square, pb);
+  Error_code ec = place_b_on_square(disk_b, vpm_b, start_b, sb, cb, pb);
+  if(ec != OK) return ec;
+  if(na < 4) return ERROR_BORDER_TOO_SHORT;
+  const std::vector<double> sa = border_parameters_from(disk_a, vpm_a, start_a);
+  const std::vector<Point_2> square = unit_square<Point_2>();
 
   // A's corners
   std::vector<std::size_t> ca(1, 0);
@@ -211,10 +233,8 @@ Error_code common_square_border_through(const Indexed_disk<MeshA>& disk_a, VPMA 
   }
   std::vector<Point_2> pa;
   place_on_polygon<FT>(sa, idx, pts, pa);
-  uv_a.resize(na);
-  uv_b.resize(nb);
-  for(std::size_t k = 0; k < na; ++k) uv_a[(start_a + k) % na] = pa[k];
-  for(std::size_t k = 0; k < nb; ++k) uv_b[(start_b + k) % nb] = pb[k];
+  rotate_from_start(pa, start_a, uv_a);
+  rotate_from_start(pb, start_b, uv_b);
   return OK;
 }
 

@@ -64,9 +64,10 @@ int cmd_cross(const Arguments& a)
   Run run(a);
   run.summary << "cross " << a.positional[0] << " -> " << a.positional[1] << ": ";
   Input in_a, in_b;
-  int status = read_input(run, a.positional[0], in_a, Uv_mode::IGNORED, Shape::DISK, "A");
+  // two disks, or two closed genus-0 meshes (cut along the chain of landmarks)
+  int status = read_input(run, a.positional[0], in_a, Uv_mode::IGNORED, Shape::DISK_OR_SPHERE, "A");
   if(status != EXIT_VALID) return status;
-  status = read_input(run, a.positional[1], in_b, Uv_mode::IGNORED, Shape::DISK, "B");
+  status = read_input(run, a.positional[1], in_b, Uv_mode::IGNORED, Shape::DISK_OR_SPHERE, "B");
   if(status != EXIT_VALID) return status;
   std::vector<Landmark> landmarks;
   std::vector<std::size_t> lines;
@@ -88,10 +89,17 @@ int cmd_cross(const Arguments& a)
     ? PE::cross_parameterization(in_a.mesh, in_b.mesh, landmarks, out,
                                  PE::parameters::compatible_meshes(std::make_pair(&compatible_a, &compatible_b), np))
     : PE::cross_parameterization(in_a.mesh, in_b.mesh, landmarks, out, np);
-  run.result.add("vertices_a", st.vertices_a);
-  run.result.add("vertices_b", st.vertices_b);
+  // the meshes as read (for closed meshes, the statistics count the cut disks)
+  run.result.add("vertices_a", std::size_t(in_a.mesh.number_of_vertices()));
+  run.result.add("vertices_b", std::size_t(in_b.mesh.number_of_vertices()));
   run.result.add("border_landmarks", st.border_landmarks);
   run.result.add("vertices_added_a", st.vertices_added_a);
+  run.result.add("closed", st.closed);
+  if(st.closed)
+  {
+    run.result.add("cut_edges_a", st.cut_edges_a);
+    run.result.add("cut_edges_b", st.cut_edges_b);
+  }
   if(ec != PE::OK)
   {
     std::string detail;
@@ -108,7 +116,11 @@ int cmd_cross(const Arguments& a)
       run.result.add("failed_landmark_line", lines[st.failed_landmark]);
     }
     else if(st.failed_mesh >= 0)
-      detail = std::string(st.failed_mesh == 0 ? "A" : "B") + ": " + PE::get_error_message(ec);
+      detail = std::string(st.failed_mesh == 0 ? "A" : "B") + ": " +
+               (ec == PE::ERROR_NOT_A_DISK ? std::string("closed, and the other mesh is not (two disks or two closed genus-0 meshes)")
+                                           : std::string(PE::get_error_message(ec)));
+    else if(st.closed && ec == PE::ERROR_WRONG_PARAMETER)
+      detail = "closed meshes need at least two landmarks (the cut runs through them in file order), and no --compatible yet";
     return run.fail(ec, "cross-parameterization of '" + in_a.filename + "' and '" + in_b.filename + "' failed", detail);
   }
   run.result.add("valid_a", st.report_a.is_valid());
@@ -159,7 +171,7 @@ int cmd_cross(const Arguments& a)
   run.result.add("valid", true);
   run.result.add("status", "OK");
   run.result.add("seconds", run.timer.seconds());
-  run.summary << st.vertices_a << " vertices of A located on B (" << st.located_on_vertex << " on vertices, "
+  run.summary << in_a.mesh.number_of_vertices() << " vertices of A located on B (" << st.located_on_vertex << " on vertices, "
               << st.located_on_edge << " on edges), " << landmarks.size() << " landmarks exact, both maps valid, "
               << st.vertices_added_a << " vertices added to A's copy, ";
   if(compatible)

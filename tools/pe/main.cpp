@@ -189,7 +189,8 @@ const std::vector<Command_spec>& command_table()
       "border may be non-convex: simple (an embedding) or weakly self-overlapping (an immersion, certified\n"
       "locally injective, border only, optimized as an immersion; JSON \"immersion\": true)", cmd_constrain },
     { "cross", "A B LANDMARKS OUT.txt", 4, 4, 3, { "--compatible", "--time-limit" },
-      "the location on the disk B of every vertex of the disk A through a certified cross-parameterization:\n"
+      "the location on the disk B of every vertex of the disk A through a certified cross-parameterization\n"
+      "(two closed genus-0 meshes are first cut into disks along a chain through the landmarks, in file order):\n"
       "both borders on the unit square by relative arc length (through the border landmarks), B mapped\n"
       "first, A mapped with its landmarks pinned on their partners' uv (LANDMARKS: 'a_index b_index' lines,\n"
       "0-based in file order, both interior or both on their borders); OUT.txt: one line per vertex of A in file order, 'face_index b0 b1 b2' (the face of B in B's\n"

@@ -49,7 +49,7 @@ struct Input
 };
 
 enum class Uv_mode { REQUIRED, OPTIONAL, IGNORED };
-enum class Shape { DISK, CLOSED_SPHERE };
+enum class Shape { DISK, CLOSED_SPHERE, DISK_OR_SPHERE };
 
 // Reads `filename` (OFF, OBJ, PLY, STL; the uv map from an OBJ with vt entries) and checks that
 // it is a triangle mesh of the shape needed. Returns EXIT_VALID, or reports the failure through

@@ -26,6 +26,7 @@
 #include <CGAL/Progressive_embedding/constrained_embedding.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 #include <CGAL/Progressive_embedding/internal/cross/common_border.h>
+#include <CGAL/Progressive_embedding/internal/cross/cut_closed.h>
 #include <CGAL/Progressive_embedding/internal/cross/locate_in_map.h>
 #include <CGAL/Progressive_embedding/internal/cross/overlay_maps.h>
 
@@ -161,6 +162,13 @@ struct Cross_parameterization_statistics
   std::size_t compatible_faces = 0;
   /// with `compatible_meshes`: seconds spent on the overlay, its certificate and the two meshes
   double seconds_compatible = 0;
+  /// whether both meshes were closed (genus 0) and cut into disks along the chain of landmarks; the counts and
+  /// certificates above are then those of the cut disks
+  bool closed = false;
+  /// closed meshes: edges of A on the cut (each becomes two border edges of the cut disk)
+  std::size_t cut_edges_a = 0;
+  /// closed meshes: edges of B on the cut
+  std::size_t cut_edges_b = 0;
   /// with `compatible_meshes`: the certificate of the triangulated overlay in exact coordinates (`check_embedding()`
   /// with `CGAL::Epeck` points)
   Embedding_report report_compatible;
@@ -448,6 +456,12 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 /// exact rationals and rounded once to double (they sum to 1 up to that rounding). A landmark of A gets the
 /// coordinate 1 exactly at its partner.
 ///
+/// Two closed genus-0 meshes (no border) are first cut into disks along a chain through the landmarks, in their
+/// order: the shortest edge path from each landmark to the next, avoiding the earlier paths and the other landmarks;
+/// every landmark copy on the cut is a border landmark (see the user manual, section Closed Surfaces). They need at
+/// least two landmarks, and `compatible_meshes`, `b_to_a_locations` and `border_vertex_pair` do not apply to them
+/// (`ERROR_WRONG_PARAMETER`).
+///
 /// Since both maps are one-to-one onto the same square, the composition (A's map, then the inverse of B's) is a
 /// bijection between the two surfaces, piecewise linear on A's refined copy; the output samples it at A's vertices.
 ///
@@ -525,7 +539,10 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///
 /// \return `OK` with every vertex of A located and both maps certified; otherwise, with nothing written to `out`:
 ///         the mesh errors of `tutte_embedding()` for either mesh (`ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH`,
-///         `ERROR_NON_MANIFOLD`, `ERROR_NOT_A_DISK`; `Cross_parameterization_statistics::failed_mesh` says which),
+///         `ERROR_NON_MANIFOLD`, `ERROR_NOT_A_DISK`, also for a closed mesh against a disk;
+///         `Cross_parameterization_statistics::failed_mesh` says which), for closed meshes `ERROR_NOT_GENUS_ZERO`
+///         and `ERROR_PATH_TRACING_FAILED` (the chain of landmarks cannot go on without crossing itself; with
+///         `failed_landmark`),
 ///         `ERROR_BORDER_TOO_SHORT` (fewer than four border vertices; `failed_mesh` says which mesh), `ERROR_WRONG_PARAMETER` (a landmark vertex
 ///         not of its mesh, a `border_vertex_pair` vertex not on its border, border landmarks not in the same order
 ///         along both borders), `ERROR_CONSTRAINT_ON_BORDER` (a landmark with one vertex on its border and the other
@@ -536,6 +553,14 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///         errors of `parameterize_certified()` on B and of `constrained_embedding()` on A, or
 ///         `ERROR_INVALID_EMBEDDING` when a certificate fails (of either map, of the location, or with `compatible_meshes` of
 ///         the triangulated overlay).
+#ifndef DOXYGEN_RUNNING
+namespace internal {
+template <class TriangleMeshA, class TriangleMeshB, class LandmarkRange, class LocationMap, class NamedParameters>
+Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const TriangleMeshB& tm_b, const LandmarkRange& landmarks,
+                                         LocationMap out, const NamedParameters& np);
+} // namespace internal
+#endif
+
 template <class TriangleMeshA, class TriangleMeshB, class LandmarkRange, class LocationMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB& tm_b, const LandmarkRange& landmarks,
@@ -569,6 +594,10 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   if(!(max_seconds >= 0) || !(optimization_seconds >= 0)) return finish(ERROR_WRONG_PARAMETER);
 
   // ---- 1. validation -----------------------------------------------------------------------
+  // two closed surfaces: cut into disks along the chain of landmarks
+  const bool closed_a = internal::is_closed_mesh(tm_a), closed_b = internal::is_closed_mesh(tm_b);
+  if(closed_a && closed_b) return internal::cross_parameterization_closed(tm_a, tm_b, landmarks, out, np);
+  if(closed_a || closed_b) { stats.failed_mesh = closed_a ? 0 : 1; return finish(ERROR_NOT_A_DISK); }
   const auto vpm_a = get(CGAL::vertex_point, tm_a);
   const auto vpm_b = get(CGAL::vertex_point, tm_b);
   internal::Indexed_disk<TriangleMeshA> disk_a;
@@ -809,6 +838,134 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   }
   return finish(OK);
 }
+
+#ifndef DOXYGEN_RUNNING
+namespace internal {
+
+// two closed genus-0 meshes: both cut along the chain of landmarks (cut_closed.h), the cut disks mapped with
+// every landmark copy a border landmark, the locations brought back to the vertices and faces of the meshes
+template <class TriangleMeshA, class TriangleMeshB, class LandmarkRange, class LocationMap, class NamedParameters>
+Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const TriangleMeshB& tm_b, const LandmarkRange& landmarks,
+                                         LocationMap out, const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename boost::graph_traits<TriangleMeshA>::vertex_descriptor vertex_a;
+  typedef typename boost::graph_traits<TriangleMeshB>::vertex_descriptor vertex_b;
+  typedef typename boost::graph_traits<TriangleMeshB>::face_descriptor face_b;
+  typedef typename boost::property_traits<typename boost::property_map<TriangleMeshA, CGAL::vertex_point_t>::const_type>::value_type Point_a;
+  typedef typename boost::property_traits<typename boost::property_map<TriangleMeshB, CGAL::vertex_point_t>::const_type>::value_type Point_b;
+  typedef CGAL::Surface_mesh<Point_a> Disk_a;
+  typedef CGAL::Surface_mesh<Point_b> Disk_b;
+  Cross_parameterization_statistics local_stats;
+  Cross_parameterization_statistics* stats_out =
+    choose_parameter(get_parameter(np, internal_np::statistics), static_cast<Cross_parameterization_statistics*>(nullptr));
+  Cross_parameterization_statistics& stats = stats_out ? *stats_out : local_stats;
+  stats = Cross_parameterization_statistics();
+  stats.closed = true;
+  // what names the vertices of B or asks for meshes does not apply to the cut disks (not yet)
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::b_to_a_locations_t>::value ||
+               !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::compatible_meshes_t>::value ||
+               !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::border_vertex_pair_t>::value)
+    return ERROR_WRONG_PARAMETER;
+
+  // the chain: the landmarks in their order, each vertex once
+  std::vector<vertex_a> chain_a;
+  std::vector<vertex_b> chain_b;
+  {
+    std::unordered_set<vertex_a, boost::hash<vertex_a> > seen_a;
+    std::unordered_set<vertex_b, boost::hash<vertex_b> > seen_b;
+    std::unordered_set<vertex_a, boost::hash<vertex_a> > all_a(vertices(tm_a).begin(), vertices(tm_a).end());
+    std::unordered_set<vertex_b, boost::hash<vertex_b> > all_b(vertices(tm_b).begin(), vertices(tm_b).end());
+    for(const auto& l : landmarks)
+    {
+      stats.failed_landmark = chain_a.size();
+      if(all_a.count(l.first) == 0) { stats.failed_mesh = 0; return ERROR_WRONG_PARAMETER; }
+      if(all_b.count(l.second) == 0) { stats.failed_mesh = 1; return ERROR_WRONG_PARAMETER; }
+      if(!seen_a.insert(l.first).second) { stats.failed_mesh = 0; return ERROR_DUPLICATE_CONSTRAINT; }
+      if(!seen_b.insert(l.second).second) { stats.failed_mesh = 1; return ERROR_DUPLICATE_CONSTRAINT; }
+      chain_a.push_back(l.first);
+      chain_b.push_back(l.second);
+    }
+    stats.failed_landmark = std::size_t(-1);
+    stats.landmarks = chain_a.size();
+    if(chain_a.size() < 2) return ERROR_WRONG_PARAMETER; // a cut needs two landmarks
+  }
+  Cut_disk<TriangleMeshA> cut_a;
+  Cut_disk<TriangleMeshB> cut_b;
+  std::size_t failed = std::size_t(-1);
+  Error_code ec = cut_along_chain(tm_a, get(CGAL::vertex_point, tm_a), chain_a, cut_a, failed);
+  if(ec != OK) { stats.failed_mesh = 0; stats.failed_landmark = failed; return ec; }
+  ec = cut_along_chain(tm_b, get(CGAL::vertex_point, tm_b), chain_b, cut_b, failed);
+  if(ec != OK) { stats.failed_mesh = 1; stats.failed_landmark = failed; return ec; }
+  Disk_a disk_a;
+  Disk_b disk_b;
+  {
+    std::vector<Point_a> pa;
+    for(vertex_a v : cut_a.vertices) pa.push_back(get(CGAL::vertex_point, tm_a, v));
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pa, cut_a.triangles, disk_a);
+    std::vector<Point_b> pb;
+    for(vertex_b v : cut_b.vertices) pb.push_back(get(CGAL::vertex_point, tm_b, v));
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pb, cut_b.triangles, disk_b);
+  }
+  // every landmark a border landmark of the cut disks, each copy matched to the copy on the same side
+  std::unordered_map<vertex_a, std::size_t, boost::hash<vertex_a> > index_a;
+  std::unordered_map<vertex_b, std::size_t, boost::hash<vertex_b> > index_b;
+  for(std::size_t i = 0; i < cut_a.copy.size(); ++i) index_a.emplace(cut_a.vertices[i], i);
+  for(std::size_t i = 0; i < cut_b.copy.size(); ++i) index_b.emplace(cut_b.vertices[i], i);
+  typedef typename Disk_a::Vertex_index dva;
+  typedef typename Disk_b::Vertex_index dvb;
+  std::vector<std::pair<dva, dvb> > pairs;
+  std::vector<std::size_t> pair_landmark;
+  for(std::size_t k = 0; k < chain_a.size(); ++k)
+  {
+    const std::size_t ia = index_a.at(chain_a[k]), ib = index_b.at(chain_b[k]);
+    pairs.emplace_back(dva(ia), dvb(ib));
+    pair_landmark.push_back(k);
+    if(cut_a.copy[ia] != std::size_t(-1) && cut_b.copy[ib] != std::size_t(-1))
+    {
+      pairs.emplace_back(dva(cut_a.copy[ia]), dvb(cut_b.copy[ib]));
+      pair_landmark.push_back(k);
+    }
+  }
+  std::vector<Cross_location<Disk_b> > located(disk_a.number_of_vertices());
+  auto located_map = boost::make_iterator_property_map(located.begin(), get(CGAL::vertex_index, disk_a));
+  Cross_parameterization_statistics inner;
+  ec = cross_parameterization(disk_a, disk_b, pairs, located_map,
+    parameters::statistics(&inner,
+      parameters::optimization_time_limit(choose_parameter(get_parameter(np, internal_np::optimization_time_limit), 30.),
+        CGAL::parameters::maximum_running_time(choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
+                                                                std::numeric_limits<double>::infinity())))));
+  const std::size_t inner_failed = inner.failed_landmark;
+  stats = inner;
+  stats.closed = true;
+  stats.landmarks = chain_a.size();
+  stats.cut_edges_a = cut_a.path_edges;
+  stats.cut_edges_b = cut_b.path_edges;
+  stats.failed_landmark = inner_failed < pair_landmark.size() ? pair_landmark[inner_failed] : std::size_t(-1);
+  if(ec != OK) return ec;
+  // back to the faces of B: the corners of a cut face in the order of the location, as vertices of B
+  std::vector<face_b> faces_b(cut_b.faces);
+  for(vertex_a v : vertices(tm_a))
+  {
+    const Cross_location<Disk_b>& l = located[index_a.at(v)];
+    const std::size_t f = std::size_t(l.first);
+    const auto hc = halfedge(l.first, disk_b);
+    const vertex_b cut_corner[3] = { cut_b.vertices[std::size_t(source(hc, disk_b))], cut_b.vertices[std::size_t(target(hc, disk_b))],
+                                     cut_b.vertices[std::size_t(target(next(hc, disk_b), disk_b))] };
+    const auto h = halfedge(faces_b[f], tm_b);
+    const vertex_b corner[3] = { source(h, tm_b), target(h, tm_b), target(next(h, tm_b), tm_b) };
+    std::array<double, 3> w{{ 0, 0, 0 }};
+    for(int k = 0; k < 3; ++k)
+      for(int j = 0; j < 3; ++j)
+        if(corner[j] == cut_corner[k]) w[j] = l.second[k];
+    put(out, v, Cross_location<TriangleMeshB>(faces_b[f], w));
+  }
+  return OK;
+}
+
+} // namespace internal
+#endif
 
 /// \ingroup PkgProgressiveEmbeddingMainFunctions
 ///

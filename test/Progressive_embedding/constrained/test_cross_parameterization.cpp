@@ -434,6 +434,72 @@ int fan_disks()
   return EXIT_SUCCESS;
 }
 
+// Closed genus-0 surfaces: both cut along the chain of landmarks into disks. blobby against itself (every
+// landmark exactly on its partner, the others near themselves) and against its remeshed copy (the error bound
+// of the disks); a genus-3 surface, a closed surface against a disk and a single landmark are refused.
+template <class Mesh>
+int closed_surfaces(const std::string& data_dir)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vd;
+  Mesh a, b;
+  const std::string file = data_dir + "/meshes/blobby.off";
+  CHECK(CGAL::IO::read_polygon_mesh(file, a) && CGAL::IO::read_polygon_mesh(file, b), "read " << file);
+  std::vector<vd> va(vertices(a).begin(), vertices(a).end()), vb(vertices(b).begin(), vertices(b).end());
+  std::unordered_map<vd, std::size_t, boost::hash<vd> > index;
+  for(std::size_t i = 0; i < va.size(); ++i) index[va[i]] = i;
+  std::vector<std::pair<vd, vd> > landmarks;
+  for(vd v : PE::internal::spread_interior_vertices(a, 6)) landmarks.emplace_back(v, vb[index[v]]);
+  Location_map<Mesh> loc;
+  PE::Cross_parameterization_statistics st;
+  PE::Error_code ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(loc), PE::parameters::statistics(&st));
+  CHECK(ec == PE::OK, PE::get_error_message(ec) << " (failed mesh " << st.failed_mesh << ")");
+  CHECK(st.closed && st.cut_edges_a > 0 && st.cut_edges_a == st.cut_edges_b, "cut along the same chain");
+  CHECK(st.report_a.is_valid() && st.report_b.is_valid() && st.landmarks_exact, "certified, landmarks exact");
+  CHECK(loc.size() == va.size(), "every vertex located");
+  for(const auto& l : landmarks) CHECK(weight_of(b, loc.at(l.first), l.second) == 1., "landmark exactly on its partner");
+  const auto error = PE::internal::correspondence_error(a, b, boost::make_assoc_property_map(loc));
+  CHECK(error.first < 2e-3, "mean error " << error.first);
+  std::cout << "closed " << file << " (" << mesh_name<Mesh>() << ") against itself, 6 landmarks: cut along "
+            << st.cut_edges_a << " edges, both disks certified, landmarks exact, mean error " << error.first
+            << " of the diagonal, max " << error.second << ", " << st.seconds_total << " s" << std::endl;
+  // against its remeshed copy
+  Surface_mesh c;
+  CHECK(CGAL::IO::read_polygon_mesh(file, c), "read " << file);
+  PE::internal::remesh_isotropically(c);
+  c.collect_garbage();
+  std::unordered_map<vd, PE::Cross_location<Surface_mesh>, boost::hash<vd> > loc_c;
+  PE::Cross_parameterization_statistics sc;
+  ec = PE::cross_parameterization(a, c, PE::internal::nearest_vertex_landmarks(a, c, PE::internal::spread_interior_vertices(a, 6)),
+                                  boost::make_assoc_property_map(loc_c), PE::parameters::statistics(&sc));
+  CHECK(ec == PE::OK, PE::get_error_message(ec) << " (failed mesh " << sc.failed_mesh << ")");
+  const auto error_c = PE::internal::correspondence_error(a, c, boost::make_assoc_property_map(loc_c));
+  CHECK(error_c.first < 0.02, "mean error against the remeshed copy " << error_c.first);
+  std::cout << "closed " << file << " against its remeshed copy (" << sc.vertices_b << " vertices after the cut), 6 landmarks: "
+            << "mean error " << error_c.first << ", max " << error_c.second << ", " << sc.seconds_total << " s" << std::endl;
+  // refused: genus 3; a closed surface and a disk; one landmark
+  {
+    Mesh g;
+    CHECK(CGAL::IO::read_polygon_mesh(data_dir + "/meshes/elephant.off", g), "read elephant.off");
+    std::vector<std::pair<vd, vd> > two;
+    auto gv = vertices(g).begin();
+    for(std::size_t k = 0; k < 2; ++k, ++gv) two.emplace_back(*gv, landmarks[k].second);
+    Location_map<Mesh> none;
+    ec = PE::cross_parameterization(g, b, two, boost::make_assoc_property_map(none), PE::parameters::statistics(&st));
+    CHECK(ec == PE::ERROR_NOT_GENUS_ZERO && st.failed_mesh == 0 && none.empty(), "genus 3 refused: " << PE::get_error_name(ec));
+    Mesh disk;
+    CHECK(CGAL::IO::read_polygon_mesh(data_dir + "/meshes/mushroom.off", disk), "read mushroom.off");
+    const std::vector<std::pair<vd, vd> > no_landmarks;
+    ec = PE::cross_parameterization(a, disk, no_landmarks, boost::make_assoc_property_map(none), PE::parameters::statistics(&st));
+    CHECK(ec == PE::ERROR_NOT_A_DISK && st.failed_mesh == 0 && none.empty(), "closed and disk refused: " << PE::get_error_name(ec));
+    ec = PE::cross_parameterization(a, b, std::vector<std::pair<vd, vd> >(1, landmarks[0]), boost::make_assoc_property_map(none),
+                                    PE::parameters::statistics(&st));
+    CHECK(ec == PE::ERROR_WRONG_PARAMETER && none.empty(), "one landmark refused: " << PE::get_error_name(ec));
+  }
+  std::cout << "closed surfaces refused: genus 3 (ERROR_NOT_GENUS_ZERO), closed against a disk (ERROR_NOT_A_DISK), "
+            << "one landmark (ERROR_WRONG_PARAMETER)" << std::endl;
+  return EXIT_SUCCESS;
+}
+
 // every error: the code, the landmark and the mesh named, nothing written
 template <class Mesh>
 int errors(const std::string& data_dir)
@@ -598,6 +664,13 @@ PE_TEST_GROUP(cross_compatible)
   RUN(fan_disks<Polyhedron>());
   RUN(compatible_cases<Surface_mesh>(data_dir));
   RUN(compatible_cases<Polyhedron>(data_dir));
+  return EXIT_SUCCESS;
+}
+
+PE_TEST_GROUP(cross_closed)
+{
+  RUN(closed_surfaces<Surface_mesh>(data_dir));
+  RUN(closed_surfaces<Polyhedron>(data_dir));
   return EXIT_SUCCESS;
 }
 

@@ -210,3 +210,15 @@ def test_value_errors():
         pe.cross_parameterization(V, F.astype(np.float64), V, F)
     with pytest.raises(ValueError, match='F_b'):
         pe.cross_parameterization(V, F, V, np.r_[F, [[0, 1, 25]]])  # a face index out of range
+
+
+def test_closed_surfaces():
+    # two closed genus-0 meshes: cut into disks along the chain through the landmarks, in their order
+    V, F = data_mesh('blobby.off')
+    landmarks = [[0, 0], [500, 500], [1000, 1000], [1500, 1500]]
+    faces, barycentric, info = pe.cross_parameterization(V, F, V, F, landmarks)
+    assert info['closed'] and info['landmarks_exact']
+    assert_landmarks_exact(faces, barycentric, F, landmarks)
+    assert np.abs(images(faces, barycentric, V, F) - V).max() < 1e-2 * np.ptp(V, axis=0).max()
+    # one landmark is not a chain
+    raises('ERROR_WRONG_PARAMETER', V, F, V, F, [[0, 0]])

@@ -208,15 +208,15 @@ int check_mesh(Run& run, const std::string& what, const Mesh& m, Shape shape)
   found << plural(t.components, "component") << ", " << plural(t.border_cycles, "border cycle") << ", Euler characteristic "
         << t.euler;
   if(t.isolated_vertices) found << ", " << plural(t.isolated_vertices, "vertex") << " in no face";
-  if(shape == Shape::DISK && (t.components != 1 || t.border_cycles != 1 || t.euler != 1 || t.isolated_vertices))
-    return run.fail(PE::ERROR_NOT_A_DISK, what, "not a topological disk: " + found.str() +
-                    " (a disk has 1 component, 1 border cycle, Euler characteristic 1)");
   const bool disk = t.components == 1 && t.border_cycles == 1 && t.euler == 1 && !t.isolated_vertices;
   const bool sphere = t.components == 1 && t.border_cycles == 0 && t.euler == 2 && !t.isolated_vertices;
+  if(shape == Shape::DISK && !disk)
+    return run.fail(PE::ERROR_NOT_A_DISK, what, "not a topological disk: " + found.str() +
+                    " (a disk has 1 component, 1 border cycle, Euler characteristic 1)");
   if(shape == Shape::DISK_OR_SPHERE && !disk && !sphere)
     return run.fail(PE::ERROR_NOT_A_DISK, what, "neither a topological disk nor a closed genus-0 mesh: " + found.str() +
                     " (a disk has 1 component, 1 border cycle, Euler characteristic 1; a sphere no border, 2)");
-  if(shape == Shape::CLOSED_SPHERE && (t.components != 1 || t.border_cycles != 0 || t.euler != 2 || t.isolated_vertices))
+  if(shape == Shape::CLOSED_SPHERE && !sphere)
     return run.fail(PE::ERROR_NOT_A_DISK, what, "not a closed genus-0 mesh: " + found.str() +
                     " (the protocol needs 1 component, no border, Euler characteristic 2)");
   return EXIT_VALID;

@@ -945,7 +945,7 @@ Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const Triang
   stats.failed_landmark = inner_failed < pair_landmark.size() ? pair_landmark[inner_failed] : std::size_t(-1);
   if(ec != OK) return ec;
   // back to the faces of B: the corners of a cut face in the order of the location, as vertices of B
-  std::vector<face_b> faces_b(cut_b.faces);
+  const std::vector<face_b>& faces_b = cut_b.faces;
   for(vertex_a v : vertices(tm_a))
   {
     const Cross_location<Disk_b>& l = located[index_a.at(v)];

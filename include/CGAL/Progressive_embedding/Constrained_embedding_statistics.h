@@ -78,6 +78,11 @@ struct Constrained_embedding_statistics
   std::size_t steiner_vertices_inserted = 0;
   /// added vertices removed again by the coarsening (`coarsen` named parameter)
   std::size_t steiner_vertices_removed = 0;
+  /// added vertices that the coarsening could have removed with every new face positive, kept because a new face
+  /// that no later optimization can reshape (its three vertices on the border or constrained, or any face when the
+  /// optimization does not run again) would have been more distorted (symmetric Dirichlet against its 3D triangle)
+  /// than the worst face of the map before the coarsening
+  std::size_t steiner_vertices_kept_for_distortion = 0;
   /// of which added to split chords after tracing: chords along one path or border side, and chords of
   /// faces whose three vertices are on the paths and which the rounding of the path vertices left flat
   std::size_t chord_splits = 0;

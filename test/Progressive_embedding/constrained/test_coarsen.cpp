@@ -70,6 +70,12 @@ int star_cases()
     const VD s = make_star(m, Point_2(0, 0), ring, rv, uvs);
     auto uv = boost::make_assoc_property_map(uvs);
     std::vector<VD> link;
+    // a bound on the fan faces (the pipeline's distortion bound) is asked about each face of the fan, and
+    // one refused face keeps the vertex
+    std::size_t asked = 0;
+    const auto refuse_last = [&](VD a, VD x, VD y) { ++asked; return !(a == rv[0] && x == rv[2] && y == rv[3]); };
+    CHECK(!PE::internal::can_remove_into(m, uv, orient, CGAL::LEFT_TURN, s, rv[0], link, refuse_last) && asked == 2,
+          "a refused fan face keeps the vertex (asked " << asked << " times)");
     CHECK(PE::internal::can_remove_into(m, uv, orient, CGAL::LEFT_TURN, s, rv[0], link), "convex link: removable");
     CHECK(link.size() == 4 && link[0] == rv[0], "link starts at the kept vertex");
     CHECK(PE::internal::remove_into(m, s, rv[0]) == PE::OK, "removed");

@@ -179,6 +179,10 @@ int run_case(Mesh& m, std::size_t n, unsigned seed, const std::string& what, boo
   CHECK(r.is_valid() && r.flipped == 0 && r.degenerate == 0 && r.overlapping_pairs == 0 && r.non_finite == 0,
         "certified valid on the caller's mesh");
   CHECK(st.report.is_valid() && st.report_before_optimization.is_valid(), "certificates in the statistics");
+  if(optimize)
+    CHECK(st.report.mean_energy_3d <= st.report_before_optimization.mean_energy_3d,
+          "the optimized and coarsened map no more distorted than before the optimization: mean "
+          << st.report_before_optimization.mean_energy_3d << " -> " << st.report.mean_energy_3d);
   const std::size_t nv = static_cast<std::size_t>(std::distance(vertices(m).begin(), vertices(m).end()));
   CHECK(nv == before.verts.size() + st.steiner_vertices && st.output_vertices == nv, "Steiner count reported");
   CHECK(sp.size() == st.steiner_vertices, "one surface position per Steiner vertex");
@@ -209,8 +213,10 @@ int run_case(Mesh& m, std::size_t n, unsigned seed, const std::string& what, boo
 }
 
 template <class Mesh>
+// optimize: false where the case checks the partition only (the optimization of these maps is checked by
+// the cases that keep it, and it is most of their time)
 int disk_cases(const std::string& file, const std::vector<std::size_t>& counts, bool fixed_border,
-               PE::Border_shape shape = PE::Border_shape::SQUARE, bool consistent = false)
+               PE::Border_shape shape = PE::Border_shape::SQUARE, bool consistent = false, bool optimize = true)
 {
   Mesh m0;
   if(!read_mesh(file, m0)) return EXIT_FAILURE;
@@ -218,7 +224,8 @@ int disk_cases(const std::string& file, const std::vector<std::size_t>& counts, 
   for(std::size_t n : counts)
   {
     Mesh m = m0;
-    RUN((run_case<Epick>(m, n, static_cast<unsigned>(n) + 7, name + (fixed_border ? " fixed" : " shape"), fixed_border, shape, consistent)));
+    RUN((run_case<Epick>(m, n, static_cast<unsigned>(n) + 7, name + (fixed_border ? " fixed" : " shape"), fixed_border, shape, consistent,
+                         0, nullptr, optimize)));
   }
   return EXIT_SUCCESS;
 }
@@ -228,11 +235,12 @@ int disk_cases(const std::string& file, const std::vector<std::size_t>& counts, 
 PE_TEST_GROUP(constrained_embedding_disks)
 {
   RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/mushroom.off", { 1, 3, 10 }, true));
-  RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/lion-head.off", { 1, 3, 10 }, true));
+  RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/lion-head.off", { 1 }, true));
+  RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/lion-head.off", { 3, 10 }, true, PE::Border_shape::SQUARE, false, false));
   RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/three_peaks.off", { 1, 3, 10 }, true));
   // 50 landmarks roughly consistent with the surface (50 random targets tangle the paths: see the budget test)
   RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/mushroom.off", { 50 }, true, PE::Border_shape::SQUARE, true));
-  RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/lion-head.off", { 50 }, true, PE::Border_shape::SQUARE, true));
+  RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/lion-head.off", { 50 }, true, PE::Border_shape::SQUARE, true, false));
   return EXIT_SUCCESS;
 }
 
@@ -240,9 +248,12 @@ PE_TEST_GROUP(constrained_embedding_shapes)
 {
   RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/mushroom.off", { 3, 10 }, false, PE::Border_shape::CIRCLE));
   RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/lion-head.off", { 10 }, false, PE::Border_shape::SQUARE));
-  RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/lion-head.off", { 10 }, false, PE::Border_shape::CIRCLE));
+  RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/lion-head.off", { 10 }, false, PE::Border_shape::CIRCLE, false, false));
   // the slanted sides of a triangle are straight only up to rounding: the nodes are the hull's corners
-  RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/mushroom.off", { 3, 10 }, false, PE::Border_shape::TRIANGLE));
+  RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/mushroom.off", { 3 }, false, PE::Border_shape::TRIANGLE));
+  RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/mushroom.off", { 10 }, false, PE::Border_shape::TRIANGLE, false, false));
+  // optimized, then coarsened: three border vertices of a slanted side made a fan face of area 1e-19 that the
+  // second optimization could not move (mean energy 961 before the optimization, 2e26 after)
   RUN(disk_cases<Surface_mesh>(data_dir + "/meshes/three_peaks.off", { 10 }, false, PE::Border_shape::TRIANGLE));
   return EXIT_SUCCESS;
 }

@@ -7,7 +7,9 @@
 
 // Coarsening of a refined map: a vertex added by an edge split is removed again, its star replaced
 // by the fan from one end of the edge it split, wherever every face of that fan is strictly
-// positive (exact orientation) in the current map. Nothing else moves, so the map stays certified:
+// positive (exact orientation) in the current map and, optionally, passes a bound on its distortion
+// (the caller's: the constrained pipeline refuses a fan face more distorted than the map's worst face,
+// so that the coarsening never makes the optimized map worse). Nothing else moves, so the map stays certified:
 // the faces away from the fan are unchanged, the border is unchanged (added vertices are interior),
 // and a map whose faces are all positive with its border fixed and simple is one-to-one.
 //
@@ -66,13 +68,22 @@ bool fan_link(const TM& tm, typename boost::graph_traits<TM>::vertex_descriptor 
   return true; // link[0] == a
 }
 
+// Every fan face is acceptable (no bound on its shape)
+struct Any_fan_face
+{
+  template <class Vertex>
+  bool operator()(Vertex, Vertex, Vertex) const { return true; }
+};
+
 // Whether removing s into a keeps every new face strictly `positive` in `uv` (exact `orient`), and
-// the mesh a manifold (the link condition of the edge s-a)
-template <class TM, class UVMap, class Orientation>
+// the mesh a manifold (the link condition of the edge s-a); with `accept`, each new face (a, x, y) must
+// also pass accept(a, x, y) (a bound on its distortion)
+template <class TM, class UVMap, class Orientation, class FaceAccept = Any_fan_face>
 bool can_remove_into(const TM& tm, UVMap uv, Orientation orient, CGAL::Orientation positive,
                      typename boost::graph_traits<TM>::vertex_descriptor s,
                      typename boost::graph_traits<TM>::vertex_descriptor a,
-                     std::vector<typename boost::graph_traits<TM>::vertex_descriptor>& link)
+                     std::vector<typename boost::graph_traits<TM>::vertex_descriptor>& link,
+                     const FaceAccept& accept = FaceAccept())
 {
   if(!fan_link(tm, s, a, link) || link.size() < 3) return false;
   const auto h = halfedge(a, s, tm);
@@ -81,6 +92,8 @@ bool can_remove_into(const TM& tm, UVMap uv, Orientation orient, CGAL::Orientati
   const auto pa = get(uv, a);
   for(std::size_t k = 1; k + 1 < link.size(); ++k)
     if(orient(pa, get(uv, link[k]), get(uv, link[k + 1])) != positive) return false;
+  for(std::size_t k = 1; k + 1 < link.size(); ++k)
+    if(!accept(a, link[k], link[k + 1])) return false;
   return true;
 }
 

@@ -787,6 +787,7 @@ py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::objec
   info["closed"] = st.closed;
   info["cut_edges_a"] = st.cut_edges_a;
   info["cut_edges_b"] = st.cut_edges_b;
+  info["chords_split_b"] = st.chords_split_b;
   info["in_face"] = st.located_in_face;
   info["on_edge"] = st.located_on_edge;
   info["on_vertex"] = st.located_on_vertex;
@@ -931,7 +932,7 @@ PYBIND11_MODULE(progressive_embedding, m)
     "and its barycentric coordinates in the order of that row's columns (barycentric, (n_a, 3) float64,\n"
     "computed exactly and rounded once: they sum to 1 up to one rounding; a landmark gets exactly 1 at its\n"
     "partner). Two closed genus-0 meshes are first cut into disks along a chain through the landmarks (at\n"
-    "least two, in their order; info 'closed', 'cut_edges_a', 'cut_edges_b'; vertex and face counts are\n"
+    "least two, in their order; info 'closed', 'cut_edges_a', 'cut_edges_b', 'chords_split_b'; vertex and face counts are\n"
     "then those of the cut disks). info: 'valid', 'valid_a', 'valid_b', 'landmarks_exact', 'landmarks', 'vertices_a',\n"
     "'faces_a', 'vertices_b', 'faces_b', 'vertices_added_a', 'in_face', 'on_edge', 'on_vertex' (where A's\n"
     "vertices landed, decided exactly), 'seconds_validation', 'seconds_map_b', 'seconds_map_a',\n"

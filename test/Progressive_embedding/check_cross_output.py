@@ -2,27 +2,12 @@
 # Checks the output of `pe cross A B LANDMARKS OUT.txt` (A and B OFF files): one line per vertex of A,
 # `face_index b0 b1 b2` with a face of B, coordinates in [0, 1] summing to 1 up to rounding, and every
 # landmark of A exactly on its partner: coordinate 1 at the partner's place in the face's vertex list of B's file.
+import os
 import sys
 
-
-def read_off(path):
-    """(points, faces) of an OFF file"""
-    tokens = []
-    with open(path) as f:
-        for line in f:
-            line = line.split('#')[0]
-            tokens.extend(line.split())
-    i = 1 if tokens[0] == 'OFF' else 0
-    nv, nf = int(tokens[i]), int(tokens[i + 1])
-    i += 3
-    points = [tuple(float(x) for x in tokens[i + 3 * k:i + 3 * k + 3]) for k in range(nv)]
-    i += 3 * nv
-    faces = []
-    for _ in range(nf):
-        k = int(tokens[i])
-        faces.append([int(x) for x in tokens[i + 1:i + 1 + k]])
-        i += 1 + k
-    return points, faces
+# the OFF reader of the manual's cross-parameterization figure
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'scripts'))
+from cross_figure import read_off  # noqa: E402
 
 
 def main():

@@ -114,6 +114,7 @@ int cmd_constrain(const Arguments& a)
   run.result.add("steiner_vertices", st.steiner_vertices);
   run.result.add("steiner_vertices_inserted", st.steiner_vertices_inserted);
   run.result.add("steiner_vertices_removed", st.steiner_vertices_removed);
+  run.result.add("steiner_vertices_kept_for_distortion", st.steiner_vertices_kept_for_distortion);
   run.result.add("paths", st.paths);
   run.result.add("patches", st.patches);
   run.summary << "vertices " << vertices_in << " -> " << in.mesh.number_of_vertices() << " (" << st.steiner_vertices

@@ -169,6 +169,9 @@ struct Cross_parameterization_statistics
   std::size_t cut_edges_a = 0;
   /// closed meshes: edges of B on the cut
   std::size_t cut_edges_b = 0;
+  /// closed meshes: edges of B's cut disk joining two of its border vertices (where two paths of the cut run side by
+  /// side) split at their midpoints, when B's map had failed with `ERROR_DEGENERATE_CHORD` (0 otherwise)
+  std::size_t chords_split_b = 0;
   /// with `compatible_meshes`: the certificate of the triangulated overlay in exact coordinates (`check_embedding()`
   /// with `CGAL::Epeck` points)
   Embedding_report report_compatible;
@@ -899,15 +902,31 @@ Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const Triang
   ec = cut_along_chain(tm_b, get(CGAL::vertex_point, tm_b), chain_b, cut_b, failed);
   if(ec != OK) { stats.failed_mesh = 1; stats.failed_landmark = failed; return ec; }
   Disk_a disk_a;
-  Disk_b disk_b;
   {
     std::vector<Point_a> pa;
     for(vertex_a v : cut_a.vertices) pa.push_back(get(CGAL::vertex_point, tm_a, v));
     CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pa, cut_a.triangles, disk_a);
+  }
+  // B's cut disk as cut, or with its chords split (see below)
+  Disk_b disk_b;
+  Split_soup soup_b;
+  std::size_t chords_b = 0;
+  auto build_b = [&](bool split) {
     std::vector<Point_b> pb;
     for(vertex_b v : cut_b.vertices) pb.push_back(get(CGAL::vertex_point, tm_b, v));
-    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pb, cut_b.triangles, disk_b);
-  }
+    if(split) chords_b = split_chords(cut_b, soup_b);
+    else
+    {
+      soup_b.triangles = cut_b.triangles;
+      soup_b.face.resize(cut_b.triangles.size());
+      for(std::size_t t = 0; t < soup_b.face.size(); ++t) soup_b.face[t] = t;
+      soup_b.midpoint.clear();
+    }
+    for(const auto& m : soup_b.midpoint) pb.push_back(CGAL::midpoint(pb[m[0]], pb[m[1]]));
+    disk_b.clear();
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pb, soup_b.triangles, disk_b);
+  };
+  build_b(false);
   // every landmark a border landmark of the cut disks, each copy matched to the copy on the same side
   std::unordered_map<vertex_a, std::size_t, boost::hash<vertex_a> > index_a;
   std::unordered_map<vertex_b, std::size_t, boost::hash<vertex_b> > index_b;
@@ -931,35 +950,61 @@ Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const Triang
   std::vector<Cross_location<Disk_b> > located(disk_a.number_of_vertices());
   auto located_map = boost::make_iterator_property_map(located.begin(), get(CGAL::vertex_index, disk_a));
   Cross_parameterization_statistics inner;
-  ec = cross_parameterization(disk_a, disk_b, pairs, located_map,
-    parameters::statistics(&inner,
-      parameters::optimization_time_limit(choose_parameter(get_parameter(np, internal_np::optimization_time_limit), 30.),
-        CGAL::parameters::maximum_running_time(choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
-                                                                std::numeric_limits<double>::infinity())))));
+  const double max_seconds = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
+                                              std::numeric_limits<double>::infinity());
+  CGAL::Real_timer timer;
+  timer.start();
+  auto map_disks = [&]() {
+    return cross_parameterization(disk_a, disk_b, pairs, located_map,
+      parameters::statistics(&inner,
+        parameters::optimization_time_limit(choose_parameter(get_parameter(np, internal_np::optimization_time_limit), 30.),
+          CGAL::parameters::maximum_running_time((std::max)(0., max_seconds - timer.time())))));
+  };
+  ec = map_disks();
+  // Where two paths of the cut run side by side (up and down a limb to a landmark at its tip), the edges
+  // across them join two border vertices of B's disk, and when moving the square's corners cannot put
+  // their ends on two sides, B's map would flatten them: then B's disk is mapped again with those edges split
+  // at their midpoints (only then, so that the map of a disk that needs no split is the disk's own)
+  if(ec == ERROR_DEGENERATE_CHORD && inner.failed_mesh == 1)
+  {
+    build_b(true);
+    if(chords_b > 0) ec = map_disks();
+  }
   const std::size_t inner_failed = inner.failed_landmark;
   stats = inner;
   stats.closed = true;
   stats.landmarks = chain_a.size();
   stats.cut_edges_a = cut_a.path_edges;
   stats.cut_edges_b = cut_b.path_edges;
+  stats.chords_split_b = chords_b;
   stats.failed_landmark = inner_failed < pair_landmark.size() ? pair_landmark[inner_failed] : std::size_t(-1);
   if(ec != OK) return ec;
-  // back to the faces of B: the corners of a cut face in the order of the location, as vertices of B
+  // back to the faces of B: the corners of a cut face in the order of the location, as vertices of B (a
+  // chord's midpoint gives half its weight to each end), in the face of B that holds the cut face
   const std::vector<face_b>& faces_b = cut_b.faces;
+  const std::size_t n_cut = cut_b.vertices.size();
   for(vertex_a v : vertices(tm_a))
   {
     const Cross_location<Disk_b>& l = located[index_a.at(v)];
-    const std::size_t f = std::size_t(l.first);
+    const face_b fb = faces_b[soup_b.face[std::size_t(l.first)]];
     const auto hc = halfedge(l.first, disk_b);
-    const vertex_b cut_corner[3] = { cut_b.vertices[std::size_t(source(hc, disk_b))], cut_b.vertices[std::size_t(target(hc, disk_b))],
-                                     cut_b.vertices[std::size_t(target(next(hc, disk_b), disk_b))] };
-    const auto h = halfedge(faces_b[f], tm_b);
+    const std::size_t cut_corner[3] = { std::size_t(source(hc, disk_b)), std::size_t(target(hc, disk_b)),
+                                        std::size_t(target(next(hc, disk_b), disk_b)) };
+    const auto h = halfedge(fb, tm_b);
     const vertex_b corner[3] = { source(h, tm_b), target(h, tm_b), target(next(h, tm_b), tm_b) };
     std::array<double, 3> w{{ 0, 0, 0 }};
-    for(int k = 0; k < 3; ++k)
+    auto add = [&](std::size_t point, double weight) {
       for(int j = 0; j < 3; ++j)
-        if(corner[j] == cut_corner[k]) w[j] = l.second[k];
-    put(out, v, Cross_location<TriangleMeshB>(faces_b[f], w));
+        if(corner[j] == cut_b.vertices[point]) w[j] += weight;
+    };
+    for(int k = 0; k < 3; ++k)
+    {
+      if(cut_corner[k] < n_cut) { add(cut_corner[k], l.second[k]); continue; }
+      const auto& m = soup_b.midpoint[cut_corner[k] - n_cut];
+      add(m[0], l.second[k] / 2);
+      add(m[1], l.second[k] / 2);
+    }
+    put(out, v, Cross_location<TriangleMeshB>(fb, w));
   }
   return OK;
 }

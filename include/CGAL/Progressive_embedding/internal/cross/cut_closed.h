@@ -11,7 +11,8 @@
 // side (counterclockwise from the next chain vertex to the previous one) taking the copy. The chain's two
 // ends stay single. Cutting two meshes along chains through the same landmarks in the same order gives two
 // disks whose borders correspond: both run along the chain and back, and a landmark's copy on one side of
-// one chain matches the copy on the same side of the other.
+// one chain matches the copy on the same side of the other. split_chords() then splits the edges that join
+// two border vertices of a cut disk.
 
 #include <CGAL/Progressive_embedding/Error_code.h>
 
@@ -21,6 +22,7 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -153,6 +155,69 @@ Error_code cut_along_chain(const TriangleMesh& tm, VPM vpm,
     }
   }
   return OK;
+}
+
+// The cut disk with its chords split: an interior edge joining two border vertices gets a vertex at its
+// midpoint, its two triangles split in two each (no new chord: the new vertex is interior). Where two
+// paths of the chain run side by side (up and down a thin limb to a landmark at its tip) the edges across
+// them are chords, and the mesh mapped first onto the square (B, by Tutte's method) flattens any chord
+// whose ends lie on one side. `triangles` and `face` (the index in `cut.faces` of the face holding each
+// triangle) describe the split soup; a point of index i >= cut.vertices.size() is the midpoint of the two
+// points `midpoint[i - cut.vertices.size()]`. Returns the number of chords split.
+struct Split_soup
+{
+  std::vector<std::array<std::size_t, 3> > triangles;
+  std::vector<std::size_t> face;
+  std::vector<std::array<std::size_t, 2> > midpoint;
+};
+
+template <class TriangleMesh>
+std::size_t split_chords(const Cut_disk<TriangleMesh>& cut, Split_soup& out)
+{
+  typedef std::pair<std::size_t, std::size_t> Edge;
+  struct Edge_hash { std::size_t operator()(const Edge& e) const { return e.first * 1000003u ^ e.second; } };
+  out.triangles = cut.triangles;
+  out.face.resize(cut.triangles.size());
+  for(std::size_t t = 0; t < out.face.size(); ++t) out.face[t] = t;
+  out.midpoint.clear();
+  auto key = [](std::size_t a, std::size_t b) { return a < b ? Edge(a, b) : Edge(b, a); };
+  std::unordered_map<Edge, std::vector<std::size_t>, Edge_hash> incident;
+  for(std::size_t t = 0; t < out.triangles.size(); ++t)
+    for(int k = 0; k < 3; ++k) incident[key(out.triangles[t][k], out.triangles[t][(k + 1) % 3])].push_back(t);
+  std::vector<char> on_border(cut.vertices.size(), 0);
+  std::vector<Edge> chords;
+  for(const auto& e : incident)
+    if(e.second.size() == 1) on_border[e.first.first] = on_border[e.first.second] = 1;
+  for(const auto& e : incident)
+    if(e.second.size() == 2 && on_border[e.first.first] && on_border[e.first.second]) chords.push_back(e.first);
+  std::sort(chords.begin(), chords.end()); // the same split whatever the hash order
+  std::size_t next = cut.vertices.size();
+  for(const Edge& c : chords)
+  {
+    const std::vector<std::size_t> ts = incident.at(c);
+    const std::size_t m = next++;
+    out.midpoint.push_back({{ c.first, c.second }});
+    for(std::size_t t : ts)
+    {
+      // (a, b, x) with a -> b the chord: (a, m, x) in place, (m, b, x) added, in the same face
+      std::array<std::size_t, 3> tri = out.triangles[t];
+      int k = 0;
+      while(key(tri[k], tri[(k + 1) % 3]) != c) ++k;
+      const std::size_t a = tri[k], b = tri[(k + 1) % 3], x = tri[(k + 2) % 3];
+      const std::size_t added = out.triangles.size();
+      out.triangles[t] = {{ a, m, x }};
+      out.triangles.push_back({{ m, b, x }});
+      out.face.push_back(out.face[t]);
+      auto& bx = incident[key(b, x)];
+      std::replace(bx.begin(), bx.end(), t, added);
+      incident[key(a, m)].push_back(t);
+      incident[key(m, x)].push_back(t);
+      incident[key(m, x)].push_back(added);
+      incident[key(m, b)].push_back(added);
+    }
+    incident.erase(c);
+  }
+  return chords.size();
 }
 
 } // namespace internal

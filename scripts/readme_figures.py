@@ -36,6 +36,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RESULTS = "benchmark/results"
 README = "README.md"
 MANUAL = "doc/Progressive_embedding/Progressive_embedding.txt"
+STRIPE_MD = RESULTS + "/stripe_embedding.md"  # the side-by-side table of Stripe Embedding, with its set-up
 WORDS = {2: "two", 3: "three", 4: "four", 5: "five", 6: "six", 7: "seven", 8: "eight", 9: "nine", 10: "ten"}
 
 
@@ -254,6 +255,50 @@ def _(d):
     return ("**%s s** (median of %d runs, peak %s MB; %s s with `PE_NO_HUGE_PAGES=1`)"
             % (sig(med("yes", "wall_s")), len([r for r in rows if r["huge_pages"] == "yes"]),
                integer(med("yes", "peak_mb")), sig(med("no", "wall_s"))))
+
+
+def stripe_table(d):
+    rows = d.rows("stripe_embedding.csv")
+    se, pe = "Stripe Embedding (cinolib)", "Progressive_embedding"
+    stages = "large_meshes_benchmark"
+
+    def pick(case, program, nt, stage=False):
+        return [r for r in rows if r["case"] == case and r["program"] == program and r["number_type"] == nt
+                and (r["command"].startswith(stages) == stage)]
+
+    def med(rs, key):
+        return median(col(rs, key))
+
+    out = []
+    # (case, label, ours, theirs): ours as (number type, stages?), theirs as Stripe's number type
+    pairs = [("grid512", "grid disk 512×512", ("double", True), "mpfr"),
+             ("grid1024", "grid disk 1024×1024", ("double", True), "mpfr"),
+             ("thingi-dino-8", "dino seed 8 (Tutte fails)", ("exact", False), "rational"),
+             ("thingi-dino-8", "dino seed 8 (Tutte fails)", ("mpfr:256", False), "mpfr:256"),
+             ("thingi-man-4", "man seed 4 (Tutte fails)", ("exact", False), "rational"),
+             ("thingi-man-4", "man seed 4 (Tutte fails)", ("mpfr:256", False), "mpfr:256"),
+             ("thingi-dino-8", "dino seed 8 (Tutte fails)", ("double", False), "double"),
+             ("thingi-man-4", "man seed 4 (Tutte fails)", ("double", False), "double")]
+    for case, label, (nt, stage), theirs in pairs:
+        o, t, td = pick(case, pe, nt, stage), pick(case, se, theirs), pick(case, se, "double")
+        if not o or not t:
+            continue
+        ours_ok = all(r["status"] in ("0", "1") and r["certified"] in ("yes", "before-rounding") for r in o)
+        oursname = "double (Tutte + certificate)" if stage else (nt if nt != "double" else "double (Tutte, repair)")
+        whole = pick(case, pe, nt, False)  # the whole `pe` process (for the grids: `pe embed`, not the stages)
+        out.append([label, o[0]["vertices"], "%s: %s s" % (oursname, sig(med(o, "own_timer_s"), 3)),
+                    "%s: %s s" % (theirs, sig(med(t, "own_timer_s"), 3)),
+                    sig(med(o, "own_timer_s") / med(t, "own_timer_s"), 2) + "×",
+                    "yes" if ours_ok else "no",
+                    count(median(col(td, "flipped_double", int))) if td else "",
+                    "%s / %s" % (sig(med(whole, "wall_s"), 3), sig(med(t, "wall_s"), 3))])
+    return table(["input", "vertices", "ours (s)", "Stripe Embedding (s)", "ours / theirs",
+                  "ours certified", "Stripe's double map: flipped faces",
+                  "whole process, wall clock: ours / theirs (s)"], out)
+
+
+block("stripe_embedding", README, "stripe_embedding.csv")(stripe_table)
+block("stripe_embedding_results", STRIPE_MD, "stripe_embedding.csv")(stripe_table)
 
 
 @block("constrained_3", README, "constrained_embedding.csv")
@@ -913,7 +958,8 @@ def _(d):
 # ---------------------------------------------------------------------------------------------
 # measurements of other programs quoted side by side: the provenance each row must carry
 
-SIDE_BY_SIDE = {"slim_reference.csv": ("program", "repository", "commit", "command", "machine", "date")}
+SIDE_BY_SIDE = {"slim_reference.csv": ("program", "repository", "commit", "command", "machine", "date"),
+                "stripe_embedding.csv": ("program", "repository", "commit", "command", "machine", "date")}
 
 
 def check_provenance(data):
@@ -951,7 +997,7 @@ def line_of(text, offset):
 
 def process(root, check):
     data = Data(root)
-    texts = {p: open(os.path.join(root, p), encoding="utf-8").read() for p in (README, MANUAL)}
+    texts = {p: open(os.path.join(root, p), encoding="utf-8").read() for p in (README, MANUAL, STRIPE_MD)}
     problems, edits = check_provenance(data), {p: [] for p in texts}
     fixed = []  # the problems that rewriting mends
 

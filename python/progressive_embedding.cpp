@@ -316,7 +316,7 @@ struct Optimize_settings
 PE::Error_code run_optimize(Work& w, const Optimize_settings& o, PE::Optimization_statistics& os)
 {
   Stopwatch s(last_timing.algorithm_seconds);
-  return PE::optimize_distortion(w.mesh, w.uv, PE::parameters::free_border(o.free_border).constrained_vertices(o.fixed)
+  return PE::optimize_distortion<CGAL::Parallel_tag>(w.mesh, w.uv, PE::parameters::free_border(o.free_border).constrained_vertices(o.fixed)
                                                   .convergence_tolerance(o.tolerance).optimization_statistics(&os)
                                                   .number_of_iterations(o.iterations));
 }
@@ -328,7 +328,7 @@ void repair_and_optimize(Work& w, bool optimize, const Optimize_settings& o)
 {
   Stopwatch s(last_timing.algorithm_seconds);
   PE::Pipeline_statistics ps;
-  const PE::Error_code ec = PE::repair_and_optimize(w.mesh, w.uv,
+  const PE::Error_code ec = PE::repair_and_optimize<CGAL::Parallel_tag>(w.mesh, w.uv,
     PE::parameters::optimization_policy(optimize ? PE::Optimization_policy::ALWAYS : PE::Optimization_policy::NEVER)
                    .pipeline_statistics(&ps).convergence_tolerance(o.tolerance).number_of_iterations(o.iterations));
   fail_if(ec, ps.optimized ? "optimize_distortion after the repair" : "progressive_embedding");

@@ -257,6 +257,32 @@ def _(d):
                integer(med("yes", "peak_mb")), sig(med("no", "wall_s"))))
 
 
+@block("optimizer_scale", README, "optimizer_scale.csv")
+def _(d):
+    rows = d.rows("optimizer_scale.csv")
+    progs = list(dict.fromkeys(r["program"] for r in rows))
+    ours, base = progs[0], progs[1]
+
+    def stats(prog, grid):
+        rs = [r for r in rows if r["program"] == prog and r["grid"] == grid]
+        it = statistics.median(float(r["iterations"]) for r in rs)
+        sec = statistics.median(float(r["seconds_optimization"]) for r in rs)
+        return dict(it=it, sec=sec, per=sec / it, peak=statistics.median(float(r["peak_mb"]) for r in rs),
+                    e=statistics.median(float(r["energy_after"]) for r in rs), n=len(rs),
+                    conv=all(r["converged"] == "True" for r in rs), valid=all(r["valid"] == "True" for r in rs),
+                    vertices=int(rs[0]["vertices"]))
+    out = []
+    for g in dict.fromkeys(r["grid"] for r in rows):
+        a, b = stats(ours, g), stats(base, g)
+        out.append(["%s×%s" % (g, g), a["vertices"], a["n"], "%g (%g)" % (a["it"], b["it"]),
+                    "yes" if a["conv"] else "**no**", sig(a["e"], 5), "%s (%s)" % (sig(a["sec"]), sig(b["sec"])),
+                    "%s (%s)" % (sig(a["per"]), sig(b["per"])), sig(a["sec"] / b["sec"], 2) + "×",
+                    "%s (%s)" % (integer(a["peak"]), integer(b["peak"])), "yes" if a["valid"] else "**no**"])
+    return table(["grid disk, random init repaired", "vertices", "runs", "iterations (before)", "stopping rule met",
+                  "mean sym. Dirichlet", "optimization s (before)", "s per iteration (before)", "time ratio",
+                  "peak MB (before)", "certified"], out)
+
+
 def stripe_table(d):
     rows = d.rows("stripe_embedding.csv")
     se, pe = "Stripe Embedding (cinolib)", "Progressive_embedding"

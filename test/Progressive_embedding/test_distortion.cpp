@@ -22,6 +22,8 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Progressive_embedding/internal/disk_generators.h>
 #include <CGAL/Progressive_embedding/internal/tutte_failure_protocol.h>
+#include <CGAL/Progressive_embedding/internal/block_cg.h>
+#include <Eigen/SparseCholesky>
 
 #include <algorithm>
 #include <cmath>
@@ -183,14 +185,23 @@ void test_near_flip(const char* name)
         + std::to_string(st.energy_before) + " -> " + std::to_string(st.energy_after) + ")");
 }
 
+// an n x n grid disk with the circle border and random interior positions (seed), repaired: a valid
+// map far from the optimum
+SM::Property_map<SM::Vertex_index, K::Point_2> repaired_random_grid(std::size_t n, unsigned seed, SM& m)
+{
+  PE::internal::make_grid_disk(n, m);
+  auto uvm = m.add_property_map<SM::Vertex_index, K::Point_2>("uv").first;
+  PE::tutte_embedding(m, SM::null_halfedge(), uvm, PE::parameters::border_shape(PE::Border_shape::CIRCLE));
+  random_interior(m, uvm, seed, 0.9);
+  CHECK(PE::progressive_embedding(m, uvm) == PE::OK,
+        "random init on a " + std::to_string(n) + "x" + std::to_string(n) + " disk repaired");
+  return uvm;
+}
+
 void test_constraints_and_budgets()
 {
   SM m;
-  PE::internal::make_grid_disk(20, m);
-  auto uvm = m.add_property_map<SM::Vertex_index, K::Point_2>("uv").first;
-  PE::tutte_embedding(m, SM::null_halfedge(), uvm, PE::parameters::border_shape(PE::Border_shape::CIRCLE));
-  random_interior(m, uvm, 5, 0.9);
-  CHECK(PE::progressive_embedding(m, uvm) == PE::OK, "random init on a 20x20 disk repaired");
+  auto uvm = repaired_random_grid(20, 5, m);
   // constrain a few interior vertices where they are
   std::vector<SM::Vertex_index> constrained;
   std::vector<K::Point_2> values;
@@ -482,8 +493,80 @@ void test_number_type(const char* name)
         std::string(name) + ": optimization certified in the number type, energy " + std::to_string(st.energy_before) + " -> " + std::to_string(st.energy_after));
 }
 
+
+// The conjugate gradients of the large Newton systems (Block_cg) on a random symmetric positive
+// definite matrix of 2x2 blocks with a grid's pattern, in the optimizer's layout, over two chunks
+// of rows: the solve matches a direct one up to the float rounding of the matrix, and the parallel
+// run gives the sequential result bit for bit.
+void test_block_cg()
+{
+  const int side = 70, n = side * side; // 4900 block rows: two chunks
+  std::mt19937 gen(3);
+  std::uniform_real_distribution<double> U(0.1, 1.0);
+  std::vector<Eigen::Triplet<double> > t;
+  auto add_block = [&](int i, int j, const Eigen::Matrix2d& B) {
+    for(int a = 0; a < 2; ++a) for(int b = 0; b < 2; ++b) t.emplace_back(2 * i + a, 2 * j + b, B(a, b));
+  };
+  for(int i = 0; i < n; ++i) add_block(i, i, 0.1 * Eigen::Matrix2d::Identity());
+  for(int y = 0; y < side; ++y)
+    for(int x = 0; x < side; ++x)
+      for(int k = 0; k < 2; ++k)
+      {
+        const int i = y * side + x, j = k == 0 ? i + 1 : i + side;
+        if((k == 0 && x + 1 == side) || (k == 1 && y + 1 == side)) continue;
+        Eigen::Matrix2d R; R << U(gen), U(gen) - 0.5, 0, U(gen);
+        const Eigen::Matrix2d B = R * R.transpose(); // (e_i - e_j)(e_i - e_j)^T (x) B: positive semi-definite
+        add_block(i, i, B); add_block(j, j, B); add_block(i, j, -B); add_block(j, i, -B);
+      }
+  Eigen::SparseMatrix<double> H(2 * n, 2 * n);
+  H.setFromTriplets(t.begin(), t.end());
+  H.makeCompressed();
+  Eigen::VectorXd b(2 * n);
+  for(int i = 0; i < 2 * n; ++i) b(i) = U(gen) - 0.5;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > ldlt(H);
+  const Eigen::VectorXd exact = ldlt.solve(b);
+  PE::internal::Block_cg<CGAL::Sequential_tag> seq;
+  PE::internal::Block_cg<CGAL::Parallel_tag> par;
+  seq.set_pattern(H); seq.set_values(H);
+  par.set_pattern(H); par.set_values(H);
+  Eigen::VectorXd xs, xp;
+  const int its = seq.solve(b, xs, 2000, 1e-6), itp = par.solve(b, xp, 2000, 1e-6);
+  const double rel = (xs - exact).norm() / exact.norm(), res = (H * xs - b).norm() / b.norm();
+  CHECK(its > 0 && its < 2000 && seq.error() <= 1e-6 && rel < 1e-4 && res < 1e-4,
+        "Block_cg: " + std::to_string(its) + " iterations, residual " + std::to_string(res) + " against the double matrix, "
+        "distance to the direct solve " + std::to_string(rel));
+  CHECK(its == itp && xs == xp, "Block_cg: the parallel solve is the sequential one, bit for bit");
+  Eigen::VectorXd x0;
+  CHECK(seq.solve(Eigen::VectorXd::Zero(2 * n), x0, 10, 1e-6) == 0 && x0.isZero(), "Block_cg: a zero right-hand side gives 0");
+}
+
+// Above the direct solver's limit (50,000 free vertices) the Newton steps use Block_cg: a random
+// init of a 230x230 grid disk (52,900 vertices) repaired, then three iterations, sequential and
+// parallel: both certified, lower, and the same map bit for bit.
+void test_large_map_iterative_steps()
+{
+  SM m;
+  auto uvm = repaired_random_grid(230, 7, m);
+  auto uv2 = m.add_property_map<SM::Vertex_index, K::Point_2>("uv2").first;
+  for(auto v : m.vertices()) uv2[v] = uvm[v];
+  PE::Optimization_statistics s1, s2;
+  const PE::Error_code e1 = PE::optimize_distortion(m, uvm, PE::parameters::optimization_statistics(&s1,
+                                                    CGAL::parameters::number_of_iterations(3)));
+  const PE::Error_code e2 = PE::optimize_distortion<CGAL::Parallel_tag>(m, uv2, PE::parameters::optimization_statistics(&s2,
+                                                    CGAL::parameters::number_of_iterations(3)));
+  bool same = true;
+  for(auto v : m.vertices()) if(!(uvm[v] == uv2[v])) same = false;
+  CHECK(e1 == PE::ERROR_BUDGET_EXHAUSTED && s1.iterations == 3 && s1.global_steps > 0 && s1.report.is_valid()
+        && s1.energy_after < 0.9 * s1.energy_before,
+        "230x230 disk: three iterative Newton iterations, certified (mean " + std::to_string(s1.energy_before) + " -> "
+        + std::to_string(s1.energy_after) + ")");
+  CHECK(e2 == e1 && s2.report.is_valid() && same, "230x230 disk: the parallel optimization gives the same map bit for bit");
+}
+
 int main(int argc, char** argv)
 {
+  test_block_cg();
+  test_large_map_iterative_steps();
   test_hand_computed();
   test_free_border_stays_simple();
   test_free_border_closing_on_itself();

@@ -4,7 +4,9 @@
 
 // `pe untangle`, `pe embed`, `pe optimize`, and the repair and optimization steps of the other
 // commands: the only file that instantiates progressive_embedding() and optimize_distortion(). The
-// repair-and-optimize policy is the library's (repair_and_optimize()), not written here.
+// repair-and-optimize policy is the library's (repair_and_optimize()), not written here. All with
+// CGAL::Parallel_tag: the optimizer's sweeps and its large Newton solves run on TBB, with results bit
+// for bit those of a sequential run.
 
 #include "pe.h"
 
@@ -34,7 +36,7 @@ Optimize_settings optimize_settings(const Arguments& a, std::size_t default_iter
 PE::Error_code run_repair(Input& in, bool will_optimize, const Budget& budget, PE::Progressive_embedding_statistics& st)
 {
   Progress bar("progressive embedding", budget.progress());
-  return PE::progressive_embedding(in.mesh, in.uv,
+  return PE::progressive_embedding<CGAL::Parallel_tag>(in.mesh, in.uv,
     PE::parameters::minimum_area_ratio(PE::internal::pipeline_minimum_area_ratio(will_optimize, false),
     PE::parameters::statistics(&st,
     CGAL::parameters::callback(bar.callback()).maximum_running_time(budget.remaining()))));
@@ -43,7 +45,7 @@ PE::Error_code run_repair(Input& in, bool will_optimize, const Budget& budget, P
 PE::Error_code run_optimize(Input& in, const Optimize_settings& s, const Budget& budget, PE::Optimization_statistics& os)
 {
   Progress bar("optimization", budget.progress());
-  return PE::optimize_distortion(in.mesh, in.uv,
+  return PE::optimize_distortion<CGAL::Parallel_tag>(in.mesh, in.uv,
     PE::parameters::free_border(s.free_border,
     PE::parameters::constrained_vertices(s.fixed,
     PE::parameters::convergence_tolerance(s.tolerance,
@@ -95,7 +97,7 @@ int repair_optimize_and_finish(Run& run, Input& in, const Arguments& a, const Bu
     bar.set_label(st == PE::Pipeline_stage::REPAIR ? "progressive embedding" : "optimization");
     return bar.update(f);
   };
-  const PE::Error_code ec = PE::repair_and_optimize(in.mesh, in.uv,
+  const PE::Error_code ec = PE::repair_and_optimize<CGAL::Parallel_tag>(in.mesh, in.uv,
     PE::parameters::optimization_policy(optimize ? PE::Optimization_policy::ALWAYS : PE::Optimization_policy::NEVER,
     PE::parameters::pipeline_statistics(&ps,
     PE::parameters::stage_callback(stage,

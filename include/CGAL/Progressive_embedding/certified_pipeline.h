@@ -138,7 +138,8 @@ inline bool tolerated_optimization_status(Error_code ec)
 
 // the body of repair_and_optimize() (see its documentation there); `given`: the disk already indexed from `tm`
 // (with the default border start, see start_border_as_default()) by the caller, or null
-template <typename TriangleMesh, typename VertexUVMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
+template <typename ConcurrencyTag = CGAL::Sequential_tag,
+          typename TriangleMesh, typename VertexUVMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Error_code repair_and_optimize_impl(const TriangleMesh& tm, VertexUVMap uvm, const CGAL_NP_CLASS& np,
                                    const Indexed_disk<TriangleMesh>* given = nullptr)
 {
@@ -188,7 +189,7 @@ Error_code repair_and_optimize_impl(const TriangleMesh& tm, VertexUVMap uvm, con
   {
     s.repaired = true;
     const double ratio = pipeline_minimum_area_ratio(optimize, Traits::has_exact_constructions);
-    const Error_code ec = progressive_embedding_impl(tm, uvm,
+    const Error_code ec = progressive_embedding_impl<ConcurrencyTag>(tm, uvm,
       parameters::minimum_area_ratio(ratio,
       parameters::statistics(&s.repair,
       common.callback(stage(Pipeline_stage::REPAIR)).maximum_running_time(remaining()))), disk);
@@ -201,7 +202,7 @@ Error_code repair_and_optimize_impl(const TriangleMesh& tm, VertexUVMap uvm, con
     const std::size_t iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
                                                     std::size_t(1000));
     const double tolerance = choose_parameter(get_parameter(np, internal_np::convergence_tolerance), 1e-5);
-    s.optimization_status = optimize_distortion_impl(tm, uvm,
+    s.optimization_status = optimize_distortion_impl<ConcurrencyTag>(tm, uvm,
       parameters::convergence_tolerance(tolerance,
       parameters::optimization_statistics(&s.optimization,
       common.callback(stage(Pipeline_stage::OPTIMIZATION)).number_of_iterations(iterations)
@@ -229,6 +230,8 @@ Error_code repair_and_optimize_impl(const TriangleMesh& tm, VertexUVMap uvm, con
 ///
 /// The border is fixed throughout. The uv map is changed only by a stage that succeeds.
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`, passed to each stage (see
+///         `optimize_distortion()`: the result is the same bit for bit)
 /// \tparam TriangleMesh a model of `FaceListGraph` (triangles)
 /// \tparam VertexUVMap a model of `ReadWritePropertyMap` with the vertex descriptor as key type and a CGAL `Point_2`
 ///         as value type
@@ -287,11 +290,12 @@ Error_code repair_and_optimize_impl(const TriangleMesh& tm, VertexUVMap uvm, con
 ///         that failed: those of `check_embedding()` (a mesh that is not a disk, ...), of `progressive_embedding()`
 ///         (the uv map is then unchanged), or of `optimize_distortion()` other than the ones the policy tolerates
 ///         (the uv map then holds the certified repaired map).
-template <typename TriangleMesh, typename VertexUVMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
+template <typename ConcurrencyTag = CGAL::Sequential_tag,
+          typename TriangleMesh, typename VertexUVMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Error_code repair_and_optimize(const TriangleMesh& tm, VertexUVMap uvm,
                                const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
-  return internal::repair_and_optimize_impl(tm, uvm, np);
+  return internal::repair_and_optimize_impl<ConcurrencyTag>(tm, uvm, np);
 }
 
 /// \ingroup PkgProgressiveEmbeddingMainFunctions
@@ -301,6 +305,13 @@ Error_code repair_and_optimize(const TriangleMesh& tm, VertexUVMap uvm,
 /// policy defaults to `Optimization_policy::WHEN_REPAIRED`). `Pipeline_statistics::seconds_tutte` times the Tutte
 /// map and `Pipeline_statistics::input_report` certifies it.
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`, passed to each stage (the result is the
+///         same bit for bit)
+/// \tparam TriangleMesh a model of `FaceListGraph` (triangles)
+/// \tparam VertexUVMap a model of `ReadWritePropertyMap` with the vertex descriptor as key type and a CGAL `Point_2`
+///         as value type
+/// \tparam NamedParameters a sequence of named parameters
+///
 /// \param tm the mesh, a triangulated topological disk
 /// \param bhd a border halfedge of `tm`, or the null halfedge (the longest border cycle's)
 /// \param uvm the uv map: with `Border_shape::FIXED`, the border's positions; the certified map on success
@@ -308,7 +319,8 @@ Error_code repair_and_optimize(const TriangleMesh& tm, VertexUVMap uvm,
 ///
 /// \return `OK` with a certified map, the error of `tutte_embedding()` (nothing written), or that of
 ///         `repair_and_optimize()`
-template <typename TriangleMesh, typename VertexUVMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
+template <typename ConcurrencyTag = CGAL::Sequential_tag,
+          typename TriangleMesh, typename VertexUVMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Error_code parameterize_certified(const TriangleMesh& tm,
                                   typename boost::graph_traits<TriangleMesh>::halfedge_descriptor bhd,
                                   VertexUVMap uvm, const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
@@ -325,14 +337,14 @@ Error_code parameterize_certified(const TriangleMesh& tm,
   // one indexed disk for every stage
   internal::Indexed_disk<TriangleMesh> disk;
   const bool indexed = internal::make_indexed_disk(tm, bhd, disk) == OK;
-  const Error_code ec = internal::tutte_embedding_impl(tm, bhd, uvm, np, indexed ? &disk : nullptr);
+  const Error_code ec = internal::tutte_embedding_impl<ConcurrencyTag>(tm, bhd, uvm, np, indexed ? &disk : nullptr);
   const double tutte_seconds = timer.time();
   if(ec != OK) { s.seconds_tutte = s.seconds_total = tutte_seconds; return ec; }
   const double max_seconds = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
                                               std::numeric_limits<double>::infinity());
   const double left = max_seconds - timer.time();
   internal::start_border_as_default(tm, disk);
-  const Error_code er = internal::repair_and_optimize_impl(tm, uvm, parameters::pipeline_statistics(&s,
+  const Error_code er = internal::repair_and_optimize_impl<ConcurrencyTag>(tm, uvm, parameters::pipeline_statistics(&s,
                                                            np.maximum_running_time(left > 0 ? left : 0.)), &disk);
   s.seconds_tutte = tutte_seconds;
   s.seconds_total = timer.time();

@@ -81,9 +81,11 @@ namespace Progressive_embedding {
 /// it was; the output is written only once it is certified.
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`: with the latter (TBB linked, floating-point uv),
-///         the per-vertex sweeps move the vertices of each colour of a greedy colouring in parallel. The sequential
-///         sweeps visit the same colour classes in the same order, and the vertices of a class share no face, so the
-///         result is the sequential one bit for bit (tested)
+///         the per-vertex sweeps move the vertices of each colour of a greedy colouring in parallel, and above
+///         50,000 free vertices the conjugate gradients of the Newton steps run their products and sums in parallel
+///         over fixed chunks of rows. The sequential sweeps visit the same colour classes in the same order, the
+///         vertices of a class share no face, and the chunks' partial sums are added in the same order either way,
+///         so the result is the sequential one bit for bit (tested)
 /// \tparam TriangleMesh a model of `FaceGraph`
 /// \tparam VertexUVMap a model of `ReadWritePropertyMap` with `Point_2` values
 /// \tparam NamedParameters a sequence of named parameters

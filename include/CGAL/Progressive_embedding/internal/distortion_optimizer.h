@@ -39,6 +39,7 @@
 #include <CGAL/Progressive_embedding/internal/newton_step.h>
 #include <CGAL/Progressive_embedding/internal/holes_domain.h>
 #include <CGAL/Progressive_embedding/internal/symmetric_dirichlet.h>
+#include <CGAL/Progressive_embedding/internal/block_cg.h>
 
 #include <CGAL/Real_timer.h>
 #include <CGAL/tags.h>
@@ -52,7 +53,6 @@
 #include <Eigen/Core>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
-#include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SVD>
 #include <Eigen/LU>
 
@@ -663,14 +663,66 @@ private:
   }
 
   // Gradient and projected Hessian of the whole energy (sum of weight * psi), Hessian into H_
+  // The Hessian's sparsity pattern, built once from the stars: columns 2j and 2j + 1 of free vertex j
+  // both hold the rows 2i and 2i + 1 of every free vertex i that shares a face with j (j included),
+  // sorted. Written straight into H_'s compressed storage (per-face triplets would take 36 entries
+  // of 16 bytes per face: over 1 GB at a million vertices), with the position of each face's 3x3
+  // vertex blocks in it, so that the assembly adds into place.
+  void build_pattern()
+  {
+    const long n2 = 2 * nfree_;
+    std::vector<std::size_t> free_vertex(static_cast<std::size_t>(nfree_));
+    for(std::size_t i = 0; i < nv_; ++i) if(var_[i] >= 0) free_vertex[std::size_t(var_[i])] = i;
+    std::vector<long> around;
+    auto neighbours = [&](long j) {
+      around.clear();
+      for(const auto& fc : star_[free_vertex[std::size_t(j)]])
+        for(std::size_t v : disk_.faces[fc.first]) if(var_[v] >= 0) around.push_back(var_[v]);
+      std::sort(around.begin(), around.end());
+      around.erase(std::unique(around.begin(), around.end()), around.end());
+    };
+    std::vector<int> outer(std::size_t(n2) + 1, 0);
+    for(long j = 0; j < nfree_; ++j)
+    {
+      neighbours(j);
+      const int count = int(2 * around.size());
+      outer[std::size_t(2 * j + 1)] = outer[std::size_t(2 * j)] + count;
+      outer[std::size_t(2 * j + 2)] = outer[std::size_t(2 * j + 1)] + count;
+    }
+    H_.resize(n2, n2);
+    H_.resizeNonZeros(outer.back());
+    std::copy(outer.begin(), outer.end(), H_.outerIndexPtr());
+    int* inner = H_.innerIndexPtr();
+    for(long j = 0; j < nfree_; ++j)
+    {
+      neighbours(j);
+      for(int c = 0; c < 2; ++c)
+        for(long i : around) { *inner++ = int(2 * i); *inner++ = int(2 * i + 1); }
+    }
+    auto slot = [this](long r, long c) {
+      return int(std::lower_bound(H_.innerIndexPtr() + H_.outerIndexPtr()[c],
+                                  H_.innerIndexPtr() + H_.outerIndexPtr()[c + 1], int(r)) - H_.innerIndexPtr());
+    };
+    face_slots_.assign(nf_, std::array<int, 9>());
+    for(std::size_t f = 0; f < nf_; ++f)
+      for(int a = 0; a < 3; ++a)
+        for(int b = 0; b < 3; ++b)
+        {
+          const long va = var_[disk_.faces[f][a]], vb = var_[disk_.faces[f][b]];
+          face_slots_[f][3 * a + b] = (va >= 0 && vb >= 0) ? slot(2 * va, 2 * vb) : -1;
+        }
+    diagonal_slots_.resize(std::size_t(n2));
+    for(long i = 0; i < n2; ++i) diagonal_slots_[std::size_t(i)] = std::size_t(slot(i, i));
+  }
+
   bool assemble(Eigen::VectorXd& grad)
   {
     const long n2 = 2 * nfree_;
     grad = Eigen::VectorXd::Zero(n2);
-    const bool first = slots_.empty();
-    if(first) { triplets_.clear(); triplets_.reserve(nf_ * 36); }
-    else std::fill(H_.valuePtr(), H_.valuePtr() + H_.nonZeros(), 0.);
-    std::size_t entry = 0; // entries come in the same order at every iteration
+    if(face_slots_.empty()) build_pattern();
+    std::fill(H_.valuePtr(), H_.valuePtr() + H_.nonZeros(), 0.);
+    double* const values = H_.valuePtr();
+    const int* const outer = H_.outerIndexPtr();
     for(std::size_t f = 0; f < nf_; ++f)
     {
       const auto& t = disk_.faces[f];
@@ -704,43 +756,29 @@ private:
       pull(r2 * (u2 * v1.transpose() - u1 * v2.transpose()), modes[2]);
       pull(r2 * (u1 * v2.transpose() + u2 * v1.transpose()), modes[3]);
       const double lambda[4] = { it.scale1, it.scale2, it.twist, it.flip };
-      for(int p = 0; p < 6; ++p)
+      const std::array<int, 9>& slots = face_slots_[f];
+      for(int a = 0; a < 3; ++a)
       {
-        const long vp = var_[t[p / 2]];
-        if(vp < 0) continue;
-        const long rp = 2 * vp + (p % 2);
-        grad(rp) += w * gr[p];
-        for(int q = 0; q < 6; ++q)
+        const long va = var_[t[a]];
+        if(va < 0) continue;
+        grad(2 * va) += w * gr[2 * a];
+        grad(2 * va + 1) += w * gr[2 * a + 1];
+        for(int b = 0; b < 3; ++b)
         {
-          const long vq = var_[t[q / 2]];
-          if(vq < 0) continue;
-          double h = 0;
-          for(int k = 0; k < 4; ++k) h += lambda[k] * modes[k][p] * modes[k][q];
-          if(first) triplets_.emplace_back(rp, 2 * vq + (q % 2), w * h);
-          else H_.valuePtr()[slots_[entry]] += w * h;
-          ++entry;
+          const long vb = var_[t[b]];
+          if(vb < 0) continue;
+          // the 2x2 block (rows of a, columns of b): column 2 vb + 1 holds the same rows as column 2 vb
+          const int base = slots[3 * a + b], len = outer[2 * vb + 1] - outer[2 * vb];
+          for(int i = 0; i < 2; ++i)
+            for(int j = 0; j < 2; ++j)
+            {
+              const int p = 2 * a + i, q = 2 * b + j;
+              double h = 0;
+              for(int k = 0; k < 4; ++k) h += lambda[k] * modes[k][p] * modes[k][q];
+              values[base + i + j * len] += w * h;
+            }
         }
       }
-    }
-    if(first)
-    {
-      // the pattern never changes: record where each entry lands in the compressed storage,
-      // so that later iterations add into it instead of sorting triplets again
-      H_.resize(n2, n2);
-      H_.setFromTriplets(triplets_.begin(), triplets_.end());
-      H_.makeCompressed();
-      slots_.resize(triplets_.size());
-      for(std::size_t k = 0; k < triplets_.size(); ++k)
-      {
-        const long c = triplets_[k].col(), r = triplets_[k].row();
-        const int* begin = H_.innerIndexPtr() + H_.outerIndexPtr()[c];
-        const int* end = H_.innerIndexPtr() + H_.outerIndexPtr()[c + 1];
-        slots_[k] = std::size_t(std::lower_bound(begin, end, int(r)) - H_.innerIndexPtr());
-      }
-      for(long i = 0; i < n2; ++i) diagonal_slots_.push_back(std::size_t(
-        std::lower_bound(H_.innerIndexPtr() + H_.outerIndexPtr()[i], H_.innerIndexPtr() + H_.outerIndexPtr()[i + 1], int(i))
-        - H_.innerIndexPtr()));
-      std::vector<Eigen::Triplet<double> >().swap(triplets_);
     }
     if(barrier_ && !add_barrier_derivatives(grad)) return false;
     if(holding_) hold_rows(grad);
@@ -782,10 +820,9 @@ private:
     {
       // large meshes: a sparse factorization costs O(n^1.5) on 2D meshes; bounded conjugate
       // gradients keep an iteration linear (the line search decides anyway)
-      cg_.setMaxIterations(200);
-      cg_.setTolerance(1e-6);
-      cg_.compute(H_);
-      d = cg_.solve(-grad);
+      if(!cg_ready_) { cg_.set_pattern(H_); cg_ready_ = true; } // the pattern never changes
+      cg_.set_values(H_);
+      cg_.solve(-grad, d, cg_iterations, cg_tolerance);
     }
     return d.allFinite() && grad.dot(d) < 0;
   }
@@ -1157,6 +1194,8 @@ private:
   }
 
   static constexpr long direct_solver_limit = 100000; // unknowns (2 per free vertex)
+  static constexpr int cg_iterations = 200;            // per Newton step, above the direct solver's limit
+  static constexpr double cg_tolerance = 1e-6;         // relative residual
 
   const TriangleMesh& tm_;
   VertexUVMap uvm_;
@@ -1183,8 +1222,8 @@ private:
   double total_weight_ = 1;
   std::vector<std::vector<Face_corner> > star_;
   std::vector<std::vector<std::size_t> > colours_;
-  std::vector<Eigen::Triplet<double> > triplets_;
-  std::vector<std::size_t> slots_, diagonal_slots_; // positions of the Hessian entries in H_'s storage
+  std::vector<std::array<int, 9> > face_slots_; // per face: where its 3x3 vertex blocks start in H_'s storage
+  std::vector<std::size_t> diagonal_slots_;      // where the diagonal entries are in H_'s storage
   SpMat H_;
   Eigen::SimplicialLDLT<SpMat> ldlt_;
   bool analyzed_ = false;
@@ -1202,7 +1241,8 @@ private:
   std::vector<double> vertex_length_;    // per border vertex: the shorter reference length of its two border edges
   double max_reach_ = 0;                 // the largest reach of a pair
   std::vector<std::array<std::size_t, 4> > block_slots_; // per free vertex: its 2x2 block of H_
-  Eigen::ConjugateGradient<SpMat, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double> > cg_;
+  Block_cg<ConcurrencyTag> cg_;
+  bool cg_ready_ = false;
 };
 
 } // namespace internal

@@ -6,7 +6,11 @@
 # commit of this repository), both programs run alternately on the same maps and the table gives the ratios.
 #
 #   benchmark/optimizer_scale.sh BUILD_DIR [BASELINE_PE [BASELINE_LABEL]] [--sizes 224,256,512,1024] [--repeat 3]
-#                                [--out benchmark/results/optimizer_scale]
+#                                [--time-limit SECONDS] [--out benchmark/results/optimizer_scale]
+#
+# --time-limit: passed to `pe optimize` (a budget: the optimization stops there with its certified map, status
+# ERROR_BUDGET_EXHAUSTED); benchmark/results/optimizer_scale_budget.{csv,md} is the 1024 grid with 60 s.
+# --table-only: runs nothing, writes OUT.md again from OUT.csv.
 #
 # BUILD_DIR holds bin/pe. Each size N: `pe generate grid N`, `pe random-init --seed 1`, `pe untangle
 # --no-optimize` (the repaired map both programs start from), then `pe optimize IN OUT --json` under
@@ -20,6 +24,8 @@ baseline=""
 baseline_label="baseline"
 sizes=224,256,512,1024
 repeat=3
+limit=()
+table_only=0
 out=benchmark/results/optimizer_scale
 if [ $# -gt 0 ] && [ "${1#--}" = "$1" ]; then baseline=$(realpath "$1"); shift; fi
 if [ $# -gt 0 ] && [ "${1#--}" = "$1" ]; then baseline_label=$1; shift; fi
@@ -28,6 +34,8 @@ while [ $# -gt 0 ]; do
     --sizes) sizes=$2; shift 2 ;;
     --repeat) repeat=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
+    --time-limit) limit=(--time-limit "$2"); shift 2 ;;
+    --table-only) table_only=1; shift ;;
     *) echo "unknown argument: $1" >&2; exit 2 ;;
   esac
 done
@@ -36,7 +44,8 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 csv=$out.csv
-echo "program,commit,command,grid,vertices,run,iterations,converged,energy_before,energy_after,seconds_optimization,wall_s,peak_mb,valid,exit_status,machine,date,load1" > "$csv"
+if [ $table_only = 0 ]; then
+echo "program,commit,command,grid,vertices,run,iterations,converged,energy_before,energy_after,seconds_optimization,wall_s,peak_mb,valid,status,exit_status,machine,date,load1" > "$csv"
 commit=$(git rev-parse --short HEAD)$(git diff --quiet HEAD -- include tools || echo "+changes")
 for n in ${sizes//,/ }; do
   "$pe" generate grid "$n" "$work/g.obj" > /dev/null
@@ -49,28 +58,30 @@ for n in ${sizes//,/ }; do
       bin=$pe; rev=$commit
       if [ "$prog" != pe ]; then bin=$baseline; rev=$baseline_label; fi
       set +e
-      /usr/bin/time -f "%e %M" -o "$work/time.txt" "$bin" optimize "$work/un.obj" "$work/out.obj" --json --no-progress \
+      /usr/bin/time -f "%e %M" -o "$work/time.txt" "$bin" optimize "$work/un.obj" "$work/out.obj" --json --no-progress "${limit[@]}" \
         > "$work/out.json" 2> "$work/err.txt"
       status=$?
       set -e
       read -r wall peak_kb < <(tail -1 "$work/time.txt") # "Command exited with ..." comes first on a failure
       load=$(cut -d' ' -f1 /proc/loadavg)
-      python3 - "$work/out.json" "$prog,$rev,pe optimize un.obj out.obj --json,$n" "$run,$wall,$((peak_kb / 1024)),$status,$(hostname),$(date -u '+%Y-%m-%d %H:%M UTC'),$load" >> "$csv" <<'EOF'
+      python3 - "$work/out.json" "$prog,$rev,pe optimize un.obj out.obj --json${limit[*]:+ ${limit[*]}},$n" "$run,$wall,$((peak_kb / 1024)),$status,$(hostname),$(date -u '+%Y-%m-%d %H:%M UTC'),$load" >> "$csv" <<'EOF'
 import json, sys
 head, tail = sys.argv[2], sys.argv[3].split(",")
 try:
     j = json.loads(open(sys.argv[1]).read().splitlines()[-1])
 except (IndexError, ValueError):  # the program failed before its JSON line: a row that says so
     j = dict(vertices=0, iterations=0, converged="", energy_before=float("nan"), energy_after=float("nan"),
-             seconds_optimization=float("nan"), valid="")
+             seconds_optimization=float("nan"), valid="", status="")
 run, wall, peak, status = tail[0], tail[1], tail[2], tail[3]
-print("%s,%d,%s,%d,%s,%.6g,%.6g,%.4f,%s,%s,%s,%s,%s,%s,%s" % (head, j["vertices"], run, j["iterations"], j["converged"],
-      j["energy_before"], j["energy_after"], j["seconds_optimization"], wall, peak, j["valid"], status, tail[4], tail[5], tail[6]))
+print("%s,%d,%s,%d,%s,%.6g,%.6g,%.4f,%s,%s,%s,%s,%s,%s,%s,%s" % (head, j["vertices"], run, j["iterations"], j["converged"],
+      j["energy_before"], j["energy_after"], j["seconds_optimization"], wall, peak, j["valid"], j["status"], status, tail[4],
+      tail[5], tail[6]))
 EOF
       echo "grid $n run $run $prog: $(tail -1 "$csv")"
     done
   done
 done
+fi
 
 python3 - "$csv" <<'EOF'
 import csv, statistics, sys
@@ -88,18 +99,18 @@ for p in progs:
         stats[p, g] = dict(n=len(rs), vertices=int(rs[0]["vertices"]), it=it, conv=",".join(sorted({r["converged"] for r in rs})),
                            e0=med(rs, "energy_before"), e1=med(rs, "energy_after"), sec=med(rs, "seconds_optimization"),
                            wall=med(rs, "wall_s"), peak=med(rs, "peak_mb"), per=med(rs, "seconds_optimization") / max(it, 1),
-                           valid=",".join(sorted({r["valid"] for r in rs})), status=",".join(sorted({r["exit_status"] for r in rs})),
+                           valid=",".join(sorted({r["valid"] for r in rs})), status=",".join(sorted({r["status"] for r in rs})),
                            load=",".join(r["load1"] for r in rs))
 with open(path[:-4] + ".md", "w") as md:
     md.write("# The default optimization at scale: `pe optimize` on repaired random initializations of grid disks\n\n")
     md.write("`benchmark/optimizer_scale.sh`, %s to %s, host %s (2 cores). Each grid disk N x N: `pe generate grid N`, "
              "`pe random-init --seed 1`, `pe untangle --no-optimize`, then `pe optimize IN OUT --json` (the defaults: at most "
              "1000 iterations, stopping when two consecutive iterations lower the mean symmetric Dirichlet energy by less "
-             "than a relative 1e-5). Medians of the runs (the 1024 grid: one run per program); programs alternated; "
+             "than a relative 1e-5; the command: `%s`). Medians of the runs (the 1024 grid: one run per program); programs alternated; "
              "s/it: optimization seconds per iteration; growth: s/it over the smallest grid's s/it of the same program; "
-             "load1: the 1-minute load average after each run.\n\n" % (rows[0]["date"], rows[-1]["date"], rows[0]["machine"]))
-    md.write("| program | commit | vertices | runs | iterations | stopping rule met | energy before | energy after | optimization s | wall s | s/it | growth of s/it | peak MB | certified | load1 |\n")
-    md.write("|---|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---|---|\n")
+             "load1: the 1-minute load average after each run.\n\n" % (rows[0]["date"], rows[-1]["date"], rows[0]["machine"], rows[0]["command"]))
+    md.write("| program | commit | vertices | runs | iterations | stopping rule met | status | energy before | energy after | optimization s | wall s | s/it | growth of s/it | peak MB | certified | load1 |\n")
+    md.write("|---|---|---:|---:|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---|---|\n")
     for p in progs:
         first = None
         commit = next(r["commit"] for r in rows if r["program"] == p)
@@ -107,8 +118,8 @@ with open(path[:-4] + ".md", "w") as md:
             s = stats.get((p, g))
             if not s: continue
             if first is None: first = s
-            md.write("| %s | %s | %d | %d | %g | %s | %.4f | %.4f | %.2f | %.2f | %.3f | %.1f× | %d | %s | %s |\n" % (
-                p, commit, s["vertices"], s["n"], s["it"], s["conv"], s["e0"], s["e1"], s["sec"], s["wall"], s["per"],
+            md.write("| %s | %s | %d | %d | %g | %s | %s | %.4f | %.4f | %.2f | %.2f | %.3f | %.1f× | %d | %s | %s |\n" % (
+                p, commit, s["vertices"], s["n"], s["it"], s["conv"], s["status"], s["e0"], s["e1"], s["sec"], s["wall"], s["per"],
                 s["per"] / first["per"], s["peak"], "yes" if s["valid"] == "True" else s["valid"], s["load"]))
     if len(progs) > 1:
         base = progs[1]

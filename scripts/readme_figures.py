@@ -283,6 +283,19 @@ def _(d):
                   "peak MB (before)", "certified"], out)
 
 
+@block("optimizer_budget", README, "optimizer_scale_budget.csv", "optimizer_scale.csv", inline=True)
+def _(d):
+    r = d.rows("optimizer_scale_budget.csv")[0]
+    converged = [x for x in d.rows("optimizer_scale.csv") if x["grid"] == r["grid"] and x["commit"] == r["commit"]]
+    full = statistics.median(float(x["energy_after"]) for x in converged)
+    e = float(r["energy_after"])
+    return ("`%s` on the %s×%s grid stops after %s iterations and %s s (the budget is checked between iterations), "
+            "status `%s`, %s, mean %s: %.2f%% above the converged %s"
+            % (r["command"].replace("un.obj out.obj --json ", "IN OUT "), r["grid"], r["grid"], r["iterations"],
+               sig(r["seconds_optimization"]), r["status"], "certified" if r["valid"] == "True" else "**not certified**",
+               sig(e, 5), 100 * (e / full - 1), sig(full, 5)))
+
+
 def stripe_table(d):
     rows = d.rows("stripe_embedding.csv")
     se, pe = "Stripe Embedding (cinolib)", "Progressive_embedding"

@@ -296,6 +296,22 @@ def _(d):
                sig(e, 5), 100 * (e / full - 1), sig(full, 5)))
 
 
+@block("slim_scale", README, "slim_scale.csv", inline=True)
+def _(d):
+    parts = []
+    for r in d.rows("slim_scale.csv"):
+        if r["converged"] == "yes":
+            slim = "converged in %s iterations and %s s, mean %s" % (r["iterations"], sig(r["seconds_total"]), sig(r["mean_energy_3d"], 5))
+        else:
+            slim = "%s iteration%s in %s s (a %s s budget), mean %s" % (r["iterations"], "" if r["iterations"] == "1" else "s",
+                                                                       sig(r["seconds_total"]), r["budget_s"], sig(r["mean_energy_3d"], 5))
+        if r["peak_mb"]:
+            slim += ", peak %s MB" % integer(r["peak_mb"])
+        parts.append("%s vertices: SLIM %s; `pe` converged in %s s, mean %s" % (
+            "{:,}".format(int(r["vertices"])), slim, sig(r["comparison_pe_seconds"]), sig(r["comparison_pe_mean_energy_3d"], 5)))
+    return "; ".join(parts)
+
+
 def stripe_table(d):
     rows = d.rows("stripe_embedding.csv")
     se, pe = "Stripe Embedding (cinolib)", "Progressive_embedding"
@@ -998,7 +1014,8 @@ def _(d):
 # measurements of other programs quoted side by side: the provenance each row must carry
 
 SIDE_BY_SIDE = {"slim_reference.csv": ("program", "repository", "commit", "command", "machine", "date"),
-                "stripe_embedding.csv": ("program", "repository", "commit", "command", "machine", "date")}
+                "stripe_embedding.csv": ("program", "repository", "commit", "command", "machine", "date"),
+                "slim_scale.csv": ("program", "repository", "commit", "command", "machine", "date")}
 
 
 def check_provenance(data):

@@ -662,7 +662,6 @@ private:
     return s2 > 0 && std::isfinite(s1);
   }
 
-  // Gradient and projected Hessian of the whole energy (sum of weight * psi), Hessian into H_
   // The Hessian's sparsity pattern, built once from the stars: columns 2j and 2j + 1 of free vertex j
   // both hold the rows 2i and 2i + 1 of every free vertex i that shares a face with j (j included),
   // sorted. Written straight into H_'s compressed storage (per-face triplets would take 36 entries
@@ -699,10 +698,6 @@ private:
       for(int c = 0; c < 2; ++c)
         for(long i : around) { *inner++ = int(2 * i); *inner++ = int(2 * i + 1); }
     }
-    auto slot = [this](long r, long c) {
-      return int(std::lower_bound(H_.innerIndexPtr() + H_.outerIndexPtr()[c],
-                                  H_.innerIndexPtr() + H_.outerIndexPtr()[c + 1], int(r)) - H_.innerIndexPtr());
-    };
     face_slots_.assign(nf_, std::array<int, 9>());
     for(std::size_t f = 0; f < nf_; ++f)
       for(int a = 0; a < 3; ++a)
@@ -715,6 +710,14 @@ private:
     for(long i = 0; i < n2; ++i) diagonal_slots_[std::size_t(i)] = std::size_t(slot(i, i));
   }
 
+  // position of entry (r, c) in H_'s compressed storage (the entry must be in the pattern)
+  int slot(long r, long c) const
+  {
+    return int(std::lower_bound(H_.innerIndexPtr() + H_.outerIndexPtr()[c],
+                                H_.innerIndexPtr() + H_.outerIndexPtr()[c + 1], int(r)) - H_.innerIndexPtr());
+  }
+
+  // Gradient and projected Hessian of the whole energy (sum of weight * psi), Hessian into H_
   bool assemble(Eigen::VectorXd& grad)
   {
     const long n2 = 2 * nfree_;
@@ -1065,12 +1068,9 @@ private:
     if(block_slots_.empty())
     {
       block_slots_.resize(std::size_t(nfree_));
-      auto slot = [this](long r, long c) {
-        return std::size_t(std::lower_bound(H_.innerIndexPtr() + H_.outerIndexPtr()[c],
-                                            H_.innerIndexPtr() + H_.outerIndexPtr()[c + 1], int(r)) - H_.innerIndexPtr());
-      };
       for(long i = 0; i < nfree_; ++i)
-        block_slots_[std::size_t(i)] = {{ slot(2 * i, 2 * i), slot(2 * i + 1, 2 * i), slot(2 * i, 2 * i + 1), slot(2 * i + 1, 2 * i + 1) }};
+        block_slots_[std::size_t(i)] = {{ std::size_t(slot(2 * i, 2 * i)), std::size_t(slot(2 * i + 1, 2 * i)),
+                                          std::size_t(slot(2 * i, 2 * i + 1)), std::size_t(slot(2 * i + 1, 2 * i + 1)) }};
     }
     double E = 0, g[6], e1 = 0, e2 = 0;
     bool active, ok = true;

@@ -8,6 +8,10 @@
 #   benchmark/optimizer_scale.sh BUILD_DIR [BASELINE_PE [BASELINE_LABEL]] [--sizes 224,256,512,1024] [--repeat 3]
 #                                [--time-limit SECONDS] [--out benchmark/results/optimizer_scale]
 #
+# --sizes also takes Tutte-failure maps, `thingi:MESH:SEED` (`pe thingi` on libcgal-demo's MESH.off, then `pe untangle
+# --no-optimize`): benchmark/results/optimizer_reuse.{csv,md} (the reuse of the factorization, against the commit
+# before it) is `--sizes thingi:bull:0,thingi:dino:8,thingi:man:4,thingi:camel:3,64,128,200`.
+#
 # --time-limit: passed to `pe optimize` (a budget: the optimization stops there with its certified map, status
 # ERROR_BUDGET_EXHAUSTED); benchmark/results/optimizer_scale_budget.{csv,md} is the 1024 grid with 60 s.
 # --table-only: runs nothing, writes OUT.md again from OUT.csv.
@@ -48,11 +52,18 @@ if [ $table_only = 0 ]; then
 echo "program,commit,command,grid,vertices,run,iterations,converged,energy_before,energy_after,seconds_optimization,wall_s,peak_mb,valid,status,exit_status,machine,date,load1" > "$csv"
 commit=$(git rev-parse --short HEAD)$(git diff --quiet HEAD -- include tools || echo "+changes")
 for n in ${sizes//,/ }; do
-  "$pe" generate grid "$n" "$work/g.obj" > /dev/null
-  "$pe" random-init "$work/g.obj" "$work/ri.obj" --seed 1 > /dev/null || true # exit 1: the random map is invalid, as meant
-  "$pe" untangle "$work/ri.obj" "$work/un.obj" --no-optimize --no-progress > /dev/null
   runs=$repeat
-  [ "$n" -ge 1024 ] && runs=1
+  case $n in
+    thingi:*)
+      IFS=: read -r _ mesh seed <<< "$n"
+      "$pe" thingi "$build/cgal_data/data/meshes/$mesh.off" "$seed" "$work/t.obj" > /dev/null || true # exit 1: Tutte fails, as meant
+      "$pe" untangle "$work/t.obj" "$work/un.obj" --no-optimize --no-progress > /dev/null ;;
+    *)
+      "$pe" generate grid "$n" "$work/g.obj" > /dev/null
+      "$pe" random-init "$work/g.obj" "$work/ri.obj" --seed 1 > /dev/null || true # exit 1: the random map is invalid, as meant
+      "$pe" untangle "$work/ri.obj" "$work/un.obj" --no-optimize --no-progress > /dev/null
+      [ "$n" -ge 1024 ] && runs=1 ;;
+  esac
   for run in $(seq 1 "$runs"); do
     for prog in pe $([ -n "$baseline" ] && echo "$baseline_label"); do
       bin=$pe; rev=$commit
@@ -77,7 +88,7 @@ print("%s,%d,%s,%d,%s,%.6g,%.6g,%.4f,%s,%s,%s,%s,%s,%s,%s,%s" % (head, j["vertic
       j["energy_before"], j["energy_after"], j["seconds_optimization"], wall, peak, j["valid"], j["status"], status, tail[4],
       tail[5], tail[6]))
 EOF
-      echo "grid $n run $run $prog: $(tail -1 "$csv")"
+      echo "$n run $run $prog: $(tail -1 "$csv")"
     done
   done
 done
@@ -102,15 +113,21 @@ for p in progs:
                            valid=",".join(sorted({r["valid"] for r in rs})), status=",".join(sorted({r["status"] for r in rs})),
                            load=",".join(r["load1"] for r in rs))
 with open(path[:-4] + ".md", "w") as md:
-    md.write("# The default optimization at scale: `pe optimize` on repaired random initializations of grid disks\n\n")
+    thingi = any(g.startswith("thingi:") for g in grids)
+    md.write("# The default optimization%s: `pe optimize` on repaired %s\n\n" % (
+        "" if thingi else " at scale", "maps" if thingi else "random initializations of grid disks"))
     md.write("`benchmark/optimizer_scale.sh`, %s to %s, host %s (2 cores). Each grid disk N x N: `pe generate grid N`, "
-             "`pe random-init --seed 1`, `pe untangle --no-optimize`, then `pe optimize IN OUT --json` (the defaults: at most "
+             "`pe random-init --seed 1`, `pe untangle --no-optimize`%s, then `pe optimize IN OUT --json` (the defaults: at most "
              "1000 iterations, stopping when two consecutive iterations lower the mean symmetric Dirichlet energy by less "
              "than a relative 1e-5; the command: `%s`). Medians of the runs (the 1024 grid: one run per program); programs alternated; "
              "s/it: optimization seconds per iteration; growth: s/it over the smallest grid's s/it of the same program; "
-             "load1: the 1-minute load average after each run.\n\n" % (rows[0]["date"], rows[-1]["date"], rows[0]["machine"], rows[0]["command"]))
-    md.write("| program | commit | vertices | runs | iterations | stopping rule met | status | energy before | energy after | optimization s | wall s | s/it | growth of s/it | peak MB | certified | load1 |\n")
-    md.write("|---|---|---:|---:|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---|---|\n")
+             "load1: the 1-minute load average after each run.\n\n" % (rows[0]["date"], rows[-1]["date"], rows[0]["machine"],
+             "; each `thingi:MESH:SEED`: `pe thingi` (the Tutte-failure protocol) on libcgal-demo's MESH.off, then `pe untangle "
+             "--no-optimize`" if thingi else "", rows[0]["command"]))
+    col = (lambda g: g + " | ") if thingi else (lambda g: "")
+    md.write("| program | commit | %svertices | runs | iterations | stopping rule met | status | energy before | energy after | "
+             "optimization s | wall s | s/it | growth of s/it | peak MB | certified | load1 |\n" % ("input | " if thingi else ""))
+    md.write("|---|---|%s---:|---:|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---|---|\n" % ("---|" if thingi else ""))
     for p in progs:
         first = None
         commit = next(r["commit"] for r in rows if r["program"] == p)
@@ -118,16 +135,18 @@ with open(path[:-4] + ".md", "w") as md:
             s = stats.get((p, g))
             if not s: continue
             if first is None: first = s
-            md.write("| %s | %s | %d | %d | %g | %s | %s | %.4f | %.4f | %.2f | %.2f | %.3f | %.1f× | %d | %s | %s |\n" % (
-                p, commit, s["vertices"], s["n"], s["it"], s["conv"], s["status"], s["e0"], s["e1"], s["sec"], s["wall"], s["per"],
-                s["per"] / first["per"], s["peak"], "yes" if s["valid"] == "True" else s["valid"], s["load"]))
+            md.write("| %s | %s | %s%d | %d | %g | %s | %s | %.4f | %.4f | %.2f | %.2f | %.3f | %.1f× | %d | %s | %s |\n" % (
+                p, commit, col(g), s["vertices"], s["n"], s["it"], s["conv"], s["status"], s["e0"], s["e1"], s["sec"], s["wall"],
+                s["per"], s["per"] / first["per"], s["peak"], "yes" if s["valid"] == "True" else s["valid"], s["load"]))
     if len(progs) > 1:
         base = progs[1]
         md.write("\nRatios, %s over %s (below 1: %s is faster or smaller):\n\n" % (progs[0], base, progs[0]))
-        md.write("| vertices | optimization time | time per iteration | peak memory |\n|---:|---:|---:|---:|\n")
+        md.write("| %svertices | optimization time | time per iteration | peak memory |\n|%s---:|---:|---:|---:|\n" % (
+            "input | " if thingi else "", "---|" if thingi else ""))
         for g in grids:
             a, b = stats.get((progs[0], g)), stats.get((base, g))
             if a and b:
-                md.write("| %d | %.2f× | %.2f× | %.2f× |\n" % (a["vertices"], a["sec"] / b["sec"], a["per"] / b["per"], a["peak"] / b["peak"]))
+                md.write("| %s%d | %.2f× | %.2f× | %.2f× |\n" % (col(g), a["vertices"], a["sec"] / b["sec"], a["per"] / b["per"],
+                                                               a["peak"] / b["peak"]))
 print("wrote", path, "and", path[:-4] + ".md")
 EOF

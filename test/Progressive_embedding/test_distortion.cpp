@@ -433,6 +433,27 @@ void test_converges_on_real_failure(const std::string& data_dir)
   CHECK(ec == PE::OK && !PE::check_embedding(m, uvm).is_valid(), "bull seed 0: double Tutte is invalid");
   ec = PE::progressive_embedding(m, uvm);
   CHECK(ec == PE::OK, "bull seed 0: repaired");
+  // a factorization per step (reuse_factorization(false)) against the default, from the same repaired map:
+  // both converge to a certified map of about the same energy, the default with fewer factorizations
+  // than steps, the other with one per step
+  {
+    SM copy = m;
+    auto uvc = copy.property_map<SM::Vertex_index, K::Point_2>("uv").first;
+    PE::Optimization_statistics fresh;
+    ec = PE::optimize_distortion(copy, uvc, PE::parameters::reuse_factorization(false).optimization_statistics(&fresh));
+    CHECK(ec == PE::OK && fresh.converged && fresh.report.is_valid() && fresh.factorizations >= fresh.global_steps,
+          "bull seed 0 without reuse: converged, certified, a factorization per step (" + std::to_string(fresh.factorizations)
+          + " for " + std::to_string(fresh.global_steps) + " steps)");
+    PE::Optimization_statistics reused;
+    copy = m;
+    uvc = copy.property_map<SM::Vertex_index, K::Point_2>("uv").first;
+    ec = PE::optimize_distortion(copy, uvc, PE::parameters::optimization_statistics(&reused));
+    CHECK(ec == PE::OK && reused.converged && reused.report.is_valid() && reused.factorizations < reused.global_steps
+          && reused.factorizations > 0 && std::abs(reused.energy_after - fresh.energy_after) < 0.02 * fresh.energy_after,
+          "bull seed 0 with reuse: converged, certified, fewer factorizations than steps (" + std::to_string(reused.factorizations)
+          + " for " + std::to_string(reused.global_steps) + "), mean " + std::to_string(reused.energy_after) + " against "
+          + std::to_string(fresh.energy_after));
+  }
   PE::Optimization_statistics st;
   ec = PE::optimize_distortion(m, uvm, PE::parameters::optimization_statistics(&st));
   CHECK(ec == PE::OK && st.converged && st.report.is_valid(),

@@ -45,6 +45,9 @@ struct Optimization_statistics
   std::size_t global_steps = 0;
   /// per-vertex sweeps run
   std::size_t vertex_sweeps = 0;
+  /// factorizations of the Hessian made by the direct solver (fewer than the global steps when the
+  /// named parameter `reuse_factorization` lets steps reuse one; 0 when the iterative solver ran)
+  std::size_t factorizations = 0;
   /// certificate of the output (of the input when the input is refused); for an immersion, its energies
   /// (its overlap test is skipped and it reports the border as not simple, by design)
   Embedding_report report;

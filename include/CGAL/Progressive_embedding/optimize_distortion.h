@@ -105,6 +105,16 @@ namespace Progressive_embedding {
 ///     \cgalParamType{`double`, non-negative}
 ///     \cgalParamDefault{1e-5}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{reuse_factorization}
+///     \cgalParamDescription{whether a Newton step may reuse the factorization of the Hessian made by an earlier step
+///                           (two triangular solves instead of a factorization): after a step with a fresh
+///                           factorization, the next ones reuse it as long as each lowers the energy by at least half
+///                           of what that step did; a reused step that fails its line search is made again at once
+///                           with a fresh factorization, and only steps with a fresh one decide convergence.
+///                           Maps of more than 50,000 free vertices use an iterative solver, where this does not apply.}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_running_time}
 ///     \cgalParamDescription{time budget in seconds}
 ///     \cgalParamType{`double`}

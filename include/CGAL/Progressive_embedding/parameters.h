@@ -64,6 +64,7 @@ enum class Weights
   X(check_overlap) \
   X(statistics) \
   X(convergence_tolerance) \
+  X(reuse_factorization) \
   X(minimum_area_ratio) \
   X(free_border) \
   X(constrained_vertices) \
@@ -256,6 +257,11 @@ template <typename T> unspecified_type minimum_area_ratio(const T& t);
 /// \ingroup PkgProgressiveEmbeddingNamedParameters
 /// `optimize_distortion()` has converged when two consecutive iterations each lower the energy by less than this fraction (`double`, default 1e-5)
 template <typename T> unspecified_type convergence_tolerance(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// whether `optimize_distortion()`'s Newton steps may reuse the last factorization of the Hessian while the steps made
+/// with it gain at least half of what the step that made it gained (`bool`, default `true`; only fresh steps decide
+/// convergence)
+template <typename T> unspecified_type reuse_factorization(const T& t);
 /// \ingroup PkgProgressiveEmbeddingNamedParameters
 /// whether `optimize_distortion()` may move the border vertices (`bool`, default `false`); the border stays simple
 template <typename T> unspecified_type free_border(const T& t);

@@ -153,6 +153,8 @@ public:
     Distortion_energy energy = Distortion_energy::SYMMETRIC_DIRICHLET;
     bool verbose = false;
     std::function<bool(double)> callback;
+    // reuse the last factorization of the Hessian while its steps gain enough (see run())
+    bool reuse_factorization = true;
   };
 
   Distortion_optimizer(const TriangleMesh& tm, VertexUVMap uvm, VertexPointMap vpm, const Settings& s,
@@ -247,8 +249,10 @@ public:
       // A global step, then a sweep of per-vertex steps if the global step was held back by the
       // first face to degenerate (far from smooth: tiny faces), where each vertex fixes its own
       // star at O(n) cost per sweep.
+      const std::size_t factorizations_before = factorizations_;
       const bool global_ok = global_step(E);
       if(global_ok) ++stats.global_steps;
+      const bool reused = global_ok && factorizations_ == factorizations_before && direct_solve();
       if(!global_ok || held_back_)
       {
         vertex_sweep();
@@ -257,6 +261,17 @@ public:
       }
       ++stats.iterations;
       const double decrease = (E0 - E) / E0;
+      // Reusing the factorization: a Newton step costs a factorization, a step with the last one only two
+      // triangular solves, and it still descends (the old Hessian is positive definite). After a fresh
+      // step, the next ones reuse its factorization as long as each gains at least half of what the fresh
+      // one gained; a reused step whose line search fails is computed again at once with a fresh one
+      // (global_step()). Only fresh steps decide convergence, so the stopping rule means what it did.
+      if(reused) reuse_next_ = decrease >= reuse_gain_ratio * fresh_gain_ && decrease >= s_.tolerance;
+      else
+      {
+        fresh_gain_ = decrease;
+        reuse_next_ = global_ok && s_.reuse_factorization && direct_solve() && decrease > 0;
+      }
       if(s_.verbose) std::cerr << "[optimize] iteration " << stats.iterations << ": energy " << E
                                << (global_ok ? "" : " (sweep only)") << "\n";
       stats.energy_current = E;
@@ -264,9 +279,10 @@ public:
       // converged: two consecutive iterations lower the energy by less than the tolerance
       // (a tolerance of 0 never converges: a step that gains nothing, or loses a rounding error, still
       // leaves the rest of the budget to run)
-      quiet = (s_.tolerance > 0 && decrease < s_.tolerance) ? quiet + 1 : 0;
+      if(!reused) quiet = (s_.tolerance > 0 && decrease < s_.tolerance) ? quiet + 1 : 0;
       if(quiet >= 2) { result = OK; stats.converged = true; break; }
     }
+    stats.factorizations = factorizations_;
     stats.seconds = timer.time();
     return result;
   }
@@ -354,11 +370,17 @@ public:
       Eigen::VectorXd grad;
       if(!assemble(grad)) return false;
       Eigen::VectorXd d;
-      if(!solve(grad, d)) return false;
+      const bool reuse = reuse_next_ && factor_ready_ && !holding_;
+      if(!solve(grad, d, reuse))
+      {
+        if(!reuse) return false;
+        reuse_next_ = false; --attempt; continue; // once: fresh at once
+      }
       std::vector<double> dx(nv_, 0.), dy(nv_, 0.);
       for(std::size_t i = 0; i < nv_; ++i)
         if(var_[i] >= 0 && !held_[i]) { dx[i] = d(2 * var_[i]); dy[i] = d(2 * var_[i] + 1); }
       if(line_search(dx, dy, E)) return true;
+      if(reuse) { reuse_next_ = false; --attempt; continue; } // the old factorization's step failed: a fresh one
       if(!holes_ || contact_.empty() || attempt + 1 >= max_hold_attempts) return false;
       std::size_t added = 0;
       for(const std::array<std::size_t, 4>& pair : contact_)
@@ -802,7 +824,11 @@ private:
   }
 
   // d = -H^-1 grad; a small relative shift keeps H definite (a free border leaves translations free)
-  bool solve(const Eigen::VectorXd& grad, Eigen::VectorXd& d)
+  // whether the Newton steps use the direct solver (whose factorization may be reused)
+  bool direct_solve() const { return 2 * long(nfree_) <= direct_solver_limit; }
+
+  // reuse: solve with the factorization of an earlier iteration (the direct solver only)
+  bool solve(const Eigen::VectorXd& grad, Eigen::VectorXd& d, bool reuse = false)
   {
     const long n2 = H_.rows();
     Eigen::VectorXd diag = H_.diagonal();
@@ -813,9 +839,15 @@ private:
     for(long i = 0; i < n2; ++i) H_.valuePtr()[diagonal_slots_[std::size_t(i)]] += shift;
     if(n2 <= direct_solver_limit)
     {
-      if(!analyzed_) { ldlt_.analyzePattern(H_); analyzed_ = true; } // the pattern never changes
-      ldlt_.factorize(H_);
-      if(ldlt_.info() != Eigen::Success) return false;
+      if(!reuse)
+      {
+        if(!analyzed_) { ldlt_.analyzePattern(H_); analyzed_ = true; } // the pattern never changes
+        factor_ready_ = false;
+        ldlt_.factorize(H_);
+        ++factorizations_;
+        if(ldlt_.info() != Eigen::Success) return false;
+        factor_ready_ = true;
+      }
       d = ldlt_.solve(-grad);
       if(ldlt_.info() != Eigen::Success) return false;
     }
@@ -1227,6 +1259,13 @@ private:
   SpMat H_;
   Eigen::SimplicialLDLT<SpMat> ldlt_;
   bool analyzed_ = false;
+  // reuse of the factorization (run()): ldlt_ holds one, the next step may use it, the relative
+  // decrease of the last step with a fresh one, and the factorizations made
+  bool factor_ready_ = false;
+  bool reuse_next_ = false;
+  double fresh_gain_ = 0;
+  std::size_t factorizations_ = 0;
+  static constexpr double reuse_gain_ratio = 0.5;
   bool held_back_ = false; // the last global step was limited by the flip-free (or border contact) bound
   // vertices held still by the global steps (loops in contact, see global_step()); holding_: any
   std::vector<char> held_;

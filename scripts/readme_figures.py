@@ -478,7 +478,8 @@ def _(d):
     imp = col(s, "improvement_percent")
     return ("On the repaired Tutte maps of the %d failing corpus runs (`%s/optimize_quality.csv`) this takes\n"
             "%d to %d iterations (median %s), and ten times more iterations lower the mean by %s%% (median),\n"
-            "%s%% at most (`optimize_stability.csv`);" % (len(q), RESULTS, min(it), max(it), sig(median(it)),
+            "%s%% at most (`optimize_stability.csv`, measured before the Newton steps reused their factorization);" % (
+                len(q), RESULTS, min(it), max(it), sig(median(it)),
                                                          sig(median(imp), 2), sig(max(imp), 2)))
 
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Plot of benchmark/results/optimize_quality.csv (and slim_reference.csv when present): per corpus
 run, the mean symmetric Dirichlet energy of the default repair, of the default optimize_distortion()
-and of libigl's SLIM from the same map (its best final value), on a log scale. Writes an SVG and, if
+and of libigl's SLIM from the repaired map of its run (slim_reference.csv; its best final value), on a log scale. Writes an SVG and, if
 rsvg-convert is installed, a PNG next to it.
 
     python3 benchmark/Progressive_embedding/plot_quality.py [RESULTS_DIR]
@@ -50,7 +50,7 @@ for i, r in enumerate(runs):
     out.append('<text transform="translate(%.1f,%d) rotate(60)" font-size="8">%s %s</text>'
                % (x - 2, H - bottom + 6, r["mesh"].replace(".off", ""), r["seed"]))
 legend = [("#999", "after the default repair"), ("#1f5fb4", "after the default optimize_distortion()"),
-          ("#e8852a", "libigl SLIM from the same map (best valid final value)")]
+          ("#e8852a", "libigl SLIM from the repaired map of 2026-11-23 (best valid final value)")]
 for k, (color, text) in enumerate(legend):
     out.append('<rect x="%d" y="%d" width="10" height="10" fill="%s"/><text x="%d" y="%d">%s</text>'
                % (left + 20, 160 + 16 * k, color, left + 35, 169 + 16 * k, text))

@@ -249,10 +249,9 @@ public:
       // A global step, then a sweep of per-vertex steps if the global step was held back by the
       // first face to degenerate (far from smooth: tiny faces), where each vertex fixes its own
       // star at O(n) cost per sweep.
-      const std::size_t factorizations_before = factorizations_;
       const bool global_ok = global_step(E);
       if(global_ok) ++stats.global_steps;
-      const bool reused = global_ok && factorizations_ == factorizations_before && direct_solve();
+      const bool reused = global_ok && step_reused_;
       if(!global_ok || held_back_)
       {
         vertex_sweep();
@@ -367,10 +366,12 @@ public:
   {
     for(int attempt = 0; ; ++attempt)
     {
-      Eigen::VectorXd grad;
-      if(!assemble(grad)) return false;
-      Eigen::VectorXd d;
+      // a step with the last factorization needs the gradient only
       const bool reuse = reuse_next_ && factor_ready_ && !holding_;
+      step_reused_ = reuse;
+      Eigen::VectorXd grad;
+      if(!assemble(grad, !reuse)) return false;
+      Eigen::VectorXd d;
       if(!solve(grad, d, reuse))
       {
         if(!reuse) return false;
@@ -740,12 +741,12 @@ private:
   }
 
   // Gradient and projected Hessian of the whole energy (sum of weight * psi), Hessian into H_
-  bool assemble(Eigen::VectorXd& grad)
+  bool assemble(Eigen::VectorXd& grad, bool hessian = true)
   {
     const long n2 = 2 * nfree_;
     grad = Eigen::VectorXd::Zero(n2);
     if(face_slots_.empty()) build_pattern();
-    std::fill(H_.valuePtr(), H_.valuePtr() + H_.nonZeros(), 0.);
+    if(hessian) std::fill(H_.valuePtr(), H_.valuePtr() + H_.nonZeros(), 0.);
     double* const values = H_.valuePtr();
     const int* const outer = H_.outerIndexPtr();
     for(std::size_t f = 0; f < nf_; ++f)
@@ -774,6 +775,12 @@ private:
       const Eigen::Vector2d u1 = U.col(0), u2 = U.col(1), v1 = V.col(0), v2 = V.col(1);
       std::array<double, 6> gr;
       pull(U * Eigen::Vector2d(it.d1, it.d2).asDiagonal() * V.transpose(), gr);
+      if(!hessian)
+      {
+        for(int a = 0; a < 3; ++a)
+          if(var_[t[a]] >= 0) { grad(2 * var_[t[a]]) += w * gr[2 * a]; grad(2 * var_[t[a]] + 1) += w * gr[2 * a + 1]; }
+        continue;
+      }
       std::array<std::array<double, 6>, 4> modes;
       const double r2 = std::sqrt(0.5);
       pull(u1 * v1.transpose(), modes[0]);
@@ -830,6 +837,11 @@ private:
   // reuse: solve with the factorization of an earlier iteration (the direct solver only)
   bool solve(const Eigen::VectorXd& grad, Eigen::VectorXd& d, bool reuse = false)
   {
+    if(reuse)
+    {
+      d = ldlt_.solve(-grad);
+      return ldlt_.info() == Eigen::Success && d.allFinite() && grad.dot(d) < 0;
+    }
     const long n2 = H_.rows();
     Eigen::VectorXd diag = H_.diagonal();
     if(!diag.allFinite()) return false;
@@ -839,15 +851,12 @@ private:
     for(long i = 0; i < n2; ++i) H_.valuePtr()[diagonal_slots_[std::size_t(i)]] += shift;
     if(n2 <= direct_solver_limit)
     {
-      if(!reuse)
-      {
-        if(!analyzed_) { ldlt_.analyzePattern(H_); analyzed_ = true; } // the pattern never changes
-        factor_ready_ = false;
-        ldlt_.factorize(H_);
-        ++factorizations_;
-        if(ldlt_.info() != Eigen::Success) return false;
-        factor_ready_ = true;
-      }
+      if(!analyzed_) { ldlt_.analyzePattern(H_); analyzed_ = true; } // the pattern never changes
+      factor_ready_ = false;
+      ldlt_.factorize(H_);
+      ++factorizations_;
+      if(ldlt_.info() != Eigen::Success) return false;
+      factor_ready_ = true;
       d = ldlt_.solve(-grad);
       if(ldlt_.info() != Eigen::Success) return false;
     }
@@ -1263,6 +1272,7 @@ private:
   // decrease of the last step with a fresh one, and the factorizations made
   bool factor_ready_ = false;
   bool reuse_next_ = false;
+  bool step_reused_ = false; // the last global step used the last factorization
   double fresh_gain_ = 0;
   std::size_t factorizations_ = 0;
   static constexpr double reuse_gain_ratio = 0.5;

@@ -57,7 +57,7 @@ Error_code optimize_distortion_impl(const TriangleMesh& tm, VertexUVMap uvm,
   settings.energy = choose_parameter(get_parameter(np, internal_np::distortion_energy), Distortion_energy::SYMMETRIC_DIRICHLET);
   settings.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   settings.callback = choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
-  settings.reuse_factorization = choose_parameter(get_parameter(np, internal_np::reuse_factorization), true);
+  settings.reuse_factorization = choose_parameter(get_parameter(np, internal_np::reuse_factorization), settings.reuse_factorization);
   const std::vector<vertex_descriptor> constrained =
     choose_parameter(get_parameter(np, internal_np::constrained_vertices), std::vector<vertex_descriptor>());
 

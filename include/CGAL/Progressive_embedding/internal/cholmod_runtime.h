@@ -39,6 +39,9 @@
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 #if defined(__unix__)
 #include <dlfcn.h>
 #endif
@@ -173,6 +176,18 @@ inline void use_huge_pages_for_cholmod()
 inline void use_huge_pages_for_cholmod() { }
 
 #endif
+
+// Gives the free memory of glibc's heap back to the system before a large factorization. Why: the
+// system's rows, the weights and a mesh reader's buffers are many small blocks; freed, they stay in
+// the heap (glibc returns only its top on its own), and CHOLMOD's large blocks are mappings of their
+// own that cannot reuse them, so they would count in the peak beside the factor (at 1M unknowns
+// about 100 MB on the grid disk, benchmark/results/large_meshes_memory.md). Nothing elsewhere.
+inline void release_free_heap_memory()
+{
+#if defined(__GLIBC__)
+  ::malloc_trim(0);
+#endif
+}
 
 // Dynamic OpenMP threads on the calling thread while it lives (see above); the former setting after.
 class Cholmod_dynamic_threads

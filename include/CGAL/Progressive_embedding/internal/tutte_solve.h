@@ -74,6 +74,14 @@ struct Default_tutte_solver<double, true>
 // benchmark/results/large_meshes.md (grid disks: equal times at 65k unknowns, CHOLMOD ahead from 262k on).
 constexpr std::size_t cholmod_minimum_unknowns = 100000;
 
+// CHOLMOD's relaxed amalgamation of supernodes (cholmod_common::zrelax, for supernodes of fewer than 4,
+// 16 and 48 columns): merging two supernodes into one larger dense block stores the zeros between them, and
+// CHOLMOD's defaults {0.8, 0.1, 0.05} let the merged blocks be up to 80%, 10% and 5% zeros. At 1M unknowns
+// (the grid disk) those zeros are about 92 MB of the 793 MB CHOLMOD uses, and the larger blocks did not make the
+// factorization measurably faster (benchmark/results/large_meshes_memory.md): the package asks for
+// {0, 0.05, 0.01}.
+constexpr double cholmod_zrelax[3] = { 0, 0.05, 0.01 };
+
 #ifdef CGAL_PROGRESSIVE_EMBEDDING_CHOLMOD_ENABLED
 typedef CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<typename CGAL::Eigen_sparse_matrix<double>::EigenType> >
   Cholmod_tutte_solver;
@@ -164,15 +172,21 @@ Error_code solve_with_solver_traits(const Tutte_system<FT>& S, Solver solver, Pr
 
 // The default double solvers of a symmetric system (Eigen's LDLT, CHOLMOD) on an Eigen matrix built in place:
 // no triplet list and no second copy as through CGAL::Eigen_sparse_matrix (at 1M unknowns the triplets alone
-// are 112 MB), and the rows of the system released once the matrix holds them. The matrix has the same entries
-// as the one solve_with_solver_traits() assembles, so Eigen's LDLT computes the same map, bit for bit.
-template <class EigenSolver>
+// are 112 MB), and the rows of the system released once the matrix holds them. The matrix holds the lower
+// triangle only, the one both solvers read (Eigen's LDLT and its AMD ordering through selfadjointView<Lower>,
+// CHOLMOD as stype -1): the same entries there as the matrix solve_with_solver_traits() assembles, so Eigen's
+// LDLT computes the same map, bit for bit, and the matrix is 4 entries per unknown instead of 7 (36 MB less
+// at 1M unknowns, while the factor is being computed).
+// `configure(solver)` runs before the factorization.
+template <class EigenSolver, class Configure>
 Error_code solve_symmetric_with_eigen(const Eigen::SparseMatrix<double>& A, const Tutte_system<double>& S,
-                                      Progress_budget& budget, std::vector<double>& xu, std::vector<double>& xv)
+                                      Progress_budget& budget, std::vector<double>& xu, std::vector<double>& xv,
+                                      const Configure& configure)
 {
   typedef Eigen::Map<const Eigen::VectorXd> Rhs;
   const Eigen::Index n = static_cast<Eigen::Index>(S.n);
   EigenSolver solver;
+  configure(solver);
   solver.compute(A);
   if(solver.info() != Eigen::Success) return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
   if(!budget.report(0.5)) return ERROR_BUDGET_EXHAUSTED;
@@ -195,14 +209,20 @@ inline Error_code solve_symmetric_default(Tutte_system<double>& S, Progress_budg
   Eigen::SparseMatrix<double> A(n, n);
   {
     Eigen::VectorXi sizes(n);
-    for(Eigen::Index r = 0; r < n; ++r) sizes[r] = static_cast<int>(S.off[static_cast<std::size_t>(r)].size()) + 1;
+    for(Eigen::Index r = 0; r < n; ++r)
+    {
+      int below = 1;
+      for(const auto& e : S.off[static_cast<std::size_t>(r)]) below += (static_cast<Eigen::Index>(e.first) > r) ? 1 : 0;
+      sizes[r] = below;
+    }
     A.reserve(sizes);
   }
-  // column r holds the entries of row r (the matrix is symmetric)
+  // column r holds the entries of row r below the diagonal (the matrix is symmetric)
   for(Eigen::Index r = 0; r < n; ++r)
   {
     A.insert(r, r) = S.diag[static_cast<std::size_t>(r)];
-    for(const auto& e : S.off[static_cast<std::size_t>(r)]) A.insert(static_cast<Eigen::Index>(e.first), r) = e.second;
+    for(const auto& e : S.off[static_cast<std::size_t>(r)])
+      if(static_cast<Eigen::Index>(e.first) > r) A.insert(static_cast<Eigen::Index>(e.first), r) = e.second;
   }
   A.makeCompressed();
   std::vector<std::vector<std::pair<std::size_t, double> > >().swap(S.off);
@@ -211,12 +231,17 @@ inline Error_code solve_symmetric_default(Tutte_system<double>& S, Progress_budg
   if(default_tutte_solver_is_cholmod(S.n))
   {
     use_huge_pages_for_cholmod();
+    release_free_heap_memory();
     const Cholmod_dynamic_threads threads;
-    const Error_code ec = solve_symmetric_with_eigen<Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double> > >(A, S, budget, xu, xv);
+    typedef Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double> > Cholmod;
+    const Error_code ec = solve_symmetric_with_eigen<Cholmod>(A, S, budget, xu, xv, [](Cholmod& c) {
+      for(int k = 0; k < 3; ++k) c.cholmod().zrelax[k] = cholmod_zrelax[k];
+    });
     if(ec != ERROR_CANNOT_SOLVE_LINEAR_SYSTEM) return ec;
   }
 #endif
-  return solve_symmetric_with_eigen<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > >(A, S, budget, xu, xv);
+  typedef Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > Ldlt;
+  return solve_symmetric_with_eigen<Ldlt>(A, S, budget, xu, xv, [](Ldlt&) { });
 }
 
 // A fill-reducing elimination order of the system's (symmetric) pattern: order[k] is the

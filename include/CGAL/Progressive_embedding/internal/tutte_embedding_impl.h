@@ -101,10 +101,13 @@ Error_code solve_tutte_system(Tutte_system<FT>& S, bool symmetric, const NamedPa
 
 // The interior positions of the Tutte map of `disk` (weights, solver, callback and time as the
 // named parameters of tutte_embedding() say), given the border positions in `pos` (by vertex
-// index); `pos` is written on the interior vertices only, and only on success.
+// index); `pos` is written on the interior vertices only, and only on success. `faces_to_release`: the faces
+// of a disk that only this solve needs (those of `disk` itself, at the caller's choice), released once the
+// system is assembled, before the factorization, whose peak they would add to (50 MB at 1M vertices).
 template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class VPM, class Point_2, class NamedParameters>
 Error_code tutte_interior(const Indexed_disk<TriangleMesh>& disk, VPM vpm, const NamedParameters& np,
-                          Progress_budget& budget, std::vector<Point_2>& pos)
+                          Progress_budget& budget, std::vector<Point_2>& pos,
+                          std::vector<std::array<std::size_t, 3> >* faces_to_release = nullptr)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -118,6 +121,7 @@ Error_code tutte_interior(const Indexed_disk<TriangleMesh>& disk, VPM vpm, const
     if(status != OK) return status;
     assemble_tutte_system(disk, adj, pos, S);
   } // the weights are released before the solve
+  if(faces_to_release != nullptr) std::vector<std::array<std::size_t, 3> >().swap(*faces_to_release);
   Error_code status = OK;
   std::vector<FT> xu, xv;
   status = solve_tutte_system<ConcurrencyTag>(S, wts == Weights::UNIFORM, np, budget, xu, xv);
@@ -186,7 +190,8 @@ Error_code tutte_embedding_impl(const TriangleMesh& tm,
   }
 
   internal::Progress_budget budget(callback, max_seconds);
-  status = internal::tutte_interior<ConcurrencyTag>(disk, vpm, np, budget, pos);
+  // the disk indexed here is not needed after the solve but for its vertices: its faces go before the factorization
+  status = internal::tutte_interior<ConcurrencyTag>(disk, vpm, np, budget, pos, given ? nullptr : &own.faces);
   if(status != OK) return status;
 
   // written only now: on every error the uv map is left as it was

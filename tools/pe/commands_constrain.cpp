@@ -151,7 +151,8 @@ int cmd_constrain(const Arguments& a)
   run.result.add("constraint_error", error);
   run.result.add("constraints_exact", exact);
   // the new vertices are interior (border edges are never split): one `v` line each after the input's
-  if(in.has_uv)
+  // (without a seam map, each vertex is its own `v` line already)
+  if(in.has_uv && !in.vt_to_v.empty())
     for(vertex_descriptor v : in.mesh.vertices())
       if(std::size_t(v) >= in.vt_to_v.size())
       {

@@ -44,8 +44,8 @@ struct Input
   Mesh mesh;
   UV_map uv;
   bool has_uv = false;                  // read from `vt` entries
-  std::vector<std::size_t> vt_to_v;     // with has_uv: to write the seams back
-  std::vector<Point_3> positions;
+  std::vector<std::size_t> vt_to_v;     // with has_uv: to write the seams back; empty for a file without seams
+  std::vector<Point_3> positions;       // the `v` lines, with vt_to_v
 };
 
 enum class Uv_mode { REQUIRED, OPTIONAL, IGNORED };

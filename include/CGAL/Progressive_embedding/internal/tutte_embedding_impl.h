@@ -101,9 +101,10 @@ Error_code solve_tutte_system(Tutte_system<FT>& S, bool symmetric, const NamedPa
 
 // The interior positions of the Tutte map of `disk` (weights, solver, callback and time as the
 // named parameters of tutte_embedding() say), given the border positions in `pos` (by vertex
-// index); `pos` is written on the interior vertices only, and only on success. `faces_to_release`: the faces
-// of a disk that only this solve needs (those of `disk` itself, at the caller's choice), released once the
-// system is assembled, before the factorization, whose peak they would add to (50 MB at 1M vertices).
+// index); `pos` is written on the interior vertices only (the solution; on failure, (0, 0) or part
+// of the solution). `faces_to_release`: the faces of a disk that only this solve needs (those of
+// `disk` itself, at the caller's choice), released once the system is assembled, before the
+// factorization, whose peak they would add to (50 MB at 1M vertices).
 template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class VPM, class Point_2, class NamedParameters>
 Error_code tutte_interior(const Indexed_disk<TriangleMesh>& disk, VPM vpm, const NamedParameters& np,
                           Progress_budget& budget, std::vector<Point_2>& pos,
@@ -121,22 +122,30 @@ Error_code tutte_interior(const Indexed_disk<TriangleMesh>& disk, VPM vpm, const
     if(status != OK) return status;
     assemble_tutte_system(disk, adj, pos, S);
   } // the weights are released before the solve
+  // what the solve does not read is released before its peak: the faces (at the caller's choice), the
+  // vertex -> unknown map (the unknowns are the interior vertices in index order) and `pos` (16 MB at 1M
+  // vertices in double), its border entries kept aside
   if(faces_to_release != nullptr) std::vector<std::array<std::size_t, 3> >().swap(*faces_to_release);
-  Error_code status = OK;
-  std::vector<FT> xu, xv;
-  status = solve_tutte_system<ConcurrencyTag>(S, wts == Weights::UNIFORM, np, budget, xu, xv);
-  if(status != OK) return status;
+  std::vector<long>().swap(S.row);
   const std::size_t nv = disk.number_of_vertices();
-  std::vector<Point_2> sol(nv);
+  std::vector<std::pair<std::size_t, Point_2> > fixed;
+  fixed.reserve(nv - S.n);
   for(std::size_t i = 0; i < nv; ++i)
+    if(disk.on_border[i]) fixed.emplace_back(i, pos[i]);
+  std::vector<Point_2>().swap(pos);
+  std::vector<FT> xu, xv;
+  const Error_code status = solve_tutte_system<ConcurrencyTag>(S, wts == Weights::UNIFORM, np, budget, xu, xv);
+  pos.assign(nv, Point_2(0, 0));
+  for(const auto& f : fixed) pos[f.first] = f.second;
+  if(status != OK) return status;
+  for(std::size_t i = 0, r = 0; i < nv; ++i)
   {
-    if(S.row[i] < 0) continue;
-    sol[i] = Point_2(xu[S.row[i]], xv[S.row[i]]);
-    if(!is_finite_ft(sol[i].x()) || !is_finite_ft(sol[i].y()))
+    if(disk.on_border[i]) continue;
+    pos[i] = Point_2(xu[r], xv[r]);
+    ++r;
+    if(!is_finite_ft(pos[i].x()) || !is_finite_ft(pos[i].y()))
       return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
   }
-  for(std::size_t i = 0; i < nv; ++i)
-    if(S.row[i] >= 0) pos[i] = sol[i];
   return OK;
 }
 

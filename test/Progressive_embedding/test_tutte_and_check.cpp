@@ -921,7 +921,7 @@ int test_helpers()
     // nearly or exactly collinear triples
     gmp_randclass rng(gmp_randinit_default);
     rng.seed(7);
-    std::size_t cases = 0, exact_zero = 0;
+    std::size_t cases = 0, exact_zero = 0, filtered = 0;
     auto fraction = [](const mpz_class& n, const mpz_class& den) {
       CGAL::Gmpq q;
       mpq_set_num(q.mpq(), n.get_mpz_t());
@@ -949,7 +949,37 @@ int test_helpers()
         c[4] = c[0] + t * (c[2] - c[0]);
         c[5] = c[1] + t * (c[3] - c[1]) + (trial % 2 ? fraction(mpz_class(1), d) : CGAL::Gmpq(0));
       }
+      std::size_t moderate = 0;
+      if(trial % 5 == 4)
+      {
+        // r on the line pq, then moved by 2^-k |p - q| for k in [100, 300]: the products cancel beyond what
+        // doubles resolve, and mostly within what the leading bits of the fractions do (the second filter
+        // decides; not where the coordinates are large too: over 2^500 with the unrelated denominators)
+        const CGAL::Gmpq t = fraction(mpz_class(rng.get_z_bits(30)), mpz_class(rng.get_z_bits(30)) + 1);
+        c[4] = c[0] + t * (c[2] - c[0]);
+        moderate = 100 + std::size_t(small(200));
+        c[5] = c[1] + t * (c[3] - c[1]) + (c[2] - c[0]) / fraction(mpz_class(1) << static_cast<mp_bitcnt_t>(moderate), mpz_class(1));
+      }
       const CGAL::Gmpq det = (c[2] - c[0]) * (c[5] - c[1]) - (c[3] - c[1]) * (c[4] - c[0]);
+      if(moderate > 0 && det != 0)
+      {
+        // the second filter alone, on the differences as rational_twice_area() gives them to it
+        const CGAL::Gmpq* const terms[4][2] = { { &c[2], &c[0] }, { &c[5], &c[1] }, { &c[3], &c[1] }, { &c[4], &c[0] } };
+        mpz_class n[4], dn[4];
+        bool integral[4];
+        for(int k = 0; k < 4; ++k) integral[k] = PE::internal::cheap_rational_difference(*terms[k][0], *terms[k][1], n[k], dn[k]);
+        double fm = 0;
+        long fe = 0;
+        const bool decided = PE::internal::leading_bits_twice_area(terms, n, dn, integral, false, fm, fe);
+        CGAL::Gmpq approx(fm);
+        const CGAL::Gmpq power = fraction(mpz_class(1) << static_cast<mp_bitcnt_t>(fe >= 0 ? fe : -fe), mpz_class(1));
+        approx = fe >= 0 ? approx * power : approx / power;
+        CGAL::Gmpq err = approx - det;
+        if(err < 0) err = -err;
+        CHECK(!decided || err * fraction(mpz_class(1) << 40, mpz_class(1)) <= (det < 0 ? -det : det),
+              "the leading bits decide an area cancelling over " << moderate << " bits within 2^-40, trial " << trial);
+        if(decided) ++filtered;
+      }
       const CGAL::Orientation o = PE::internal::rational_orientation(c[0], c[1], c[2], c[3], c[4], c[5]);
       CHECK(o == CGAL::Orientation(CGAL::sign(det)), "rational orientation, trial " << trial);
       double m = 0;
@@ -968,7 +998,9 @@ int test_helpers()
       }
       ++cases;
     }
-    std::cout << "  rational orientation and area: " << cases << " triples (" << exact_zero << " collinear) as CGAL::Gmpq computes them" << std::endl;
+    std::cout << "  rational orientation and area: " << cases << " triples (" << exact_zero << " collinear, " << filtered
+              << " decided by the leading bits alone) as CGAL::Gmpq computes them" << std::endl;
+    CHECK(filtered >= 100, "the second filter decided " << filtered << " of 120 triples");
   }
   auto big = [](double x, double y, long e) { return Q(scaled_ft<CGAL::Gmpq>(x, e), scaled_ft<CGAL::Gmpq>(y, e)); };
   for(long e : { 0L, 1100L, -1100L })

@@ -169,8 +169,8 @@ struct Face_areas
 // Signed areas relative to the border orientation. Evaluated in double on the scaled
 // coordinates, and exactly where the double value is unreliable; for exact and MPFR types from the
 // rationals, to a relative 2^-40 (rational_twice_area(): exact coordinate differences, products in
-// double unless they nearly cancel), without a gcd per operation on the long fractions of exact
-// Tutte maps.
+// double unless they nearly cancel, then on the fractions' leading bits, exact as a last resort),
+// without a gcd per operation on the long fractions of exact Tutte maps.
 template <class TriangleMesh, class Point_2>
 void area_pass(const Indexed_disk<TriangleMesh>& disk, const Uv_samples<Point_2>& s, const Face_orientations& o, Face_areas& r)
 {

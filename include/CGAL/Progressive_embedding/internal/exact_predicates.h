@@ -105,12 +105,102 @@ inline void rational_difference(const CGAL::Gmpq& a, const CGAL::Gmpq& b, mpz_cl
   mpz_mul(den.get_mpz_t(), da, db);
 }
 
+// Leading bits of rationals: the second filter of rational_twice_area(), between the double one and exact
+// products. The coordinates of an exact Tutte map are fractions of tens of thousands of bits, and where
+// its faces are slivers (the maps of Tutte failures), the double filter rarely decides: the exact products
+// then cost about as much as the Tutte solve. Their leading bits decide nearly always.
+constexpr long twice_area_filter_bits = 512;
+
+// n / d (d > 0) as M 2^E with |M 2^E - n / d| <= 2^-(P-2) |n / d|: n and d cut to their P + 2 leading bits
+// (a relative error below 2^-(P+1) each), then a quotient of P + 1 bits or more (truncated: the same bound).
+inline void leading_bits_quotient(mpz_srcptr n, mpz_srcptr d, long P, mpz_class& M, long& E)
+{
+  if(mpz_sgn(n) == 0) { M = 0; E = 0; return; }
+  mpz_class a, b;
+  const long cn = (std::max)(long(mpz_sizeinbase(n, 2)) - P - 2, 0L);
+  const long cd = (std::max)(long(mpz_sizeinbase(d, 2)) - P - 2, 0L);
+  mpz_tdiv_q_2exp(a.get_mpz_t(), n, static_cast<mp_bitcnt_t>(cn));
+  mpz_tdiv_q_2exp(b.get_mpz_t(), d, static_cast<mp_bitcnt_t>(cd));
+  // a 2^s / b >= 2^(P+1): s = bits(b) - bits(a) + P + 2 >= 1
+  const long s = long(mpz_sizeinbase(b.get_mpz_t(), 2)) - long(mpz_sizeinbase(a.get_mpz_t(), 2)) + P + 2;
+  mpz_mul_2exp(a.get_mpz_t(), a.get_mpz_t(), static_cast<mp_bitcnt_t>(s));
+  mpz_tdiv_q(M.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
+  E = cn - cd - s;
+}
+
+// x 2^ex - y 2^ey, exactly, as D 2^E
+inline void shifted_difference(const mpz_class& x, long ex, const mpz_class& y, long ey, mpz_class& D, long& E)
+{
+  E = (std::min)(ex, ey);
+  mpz_class a = x, b = y;
+  mpz_mul_2exp(a.get_mpz_t(), a.get_mpz_t(), static_cast<mp_bitcnt_t>(ex - E));
+  mpz_mul_2exp(b.get_mpz_t(), b.get_mpz_t(), static_cast<mp_bitcnt_t>(ey - E));
+  D = a - b;
+}
+
+// log2 |z 2^e| as a double (-infinity for z = 0)
+inline double log2_magnitude(const mpz_class& z, long e)
+{
+  if(z == 0) return -std::numeric_limits<double>::infinity();
+  long k = 0;
+  const double f = mpz_get_d_2exp(&k, z.get_mpz_t());
+  return std::log2(std::abs(f)) + double(k + e);
+}
+
+// The second filter (see above) of rational_twice_area() for the differences (qx - px, ry - py, qy - py,
+// rx - px) of `terms`, `n[k] / d[k]` where `integral[k]` (exact already). True, with m 2^e, if it decides:
+// a relative error below 2^-40 (the sign only with `sign_only`).
+inline bool leading_bits_twice_area(const CGAL::Gmpq* const terms[4][2], const mpz_class n[4], const mpz_class d[4],
+                                    const bool integral[4], bool sign_only, double& m, long& e)
+{
+  const long P = twice_area_filter_bits;
+  const double unit = double(2 - P); // log2 of the relative error of one quotient
+  mpz_class v[4];
+  long x[4];
+  double rel[4]; // log2 of the relative error of v[k] 2^x[k]
+  for(int k = 0; k < 4; ++k)
+  {
+    if(integral[k])
+    {
+      leading_bits_quotient(n[k].get_mpz_t(), d[k].get_mpz_t(), P, v[k], x[k]);
+      rel[k] = unit;
+      continue;
+    }
+    mpz_class a, b;
+    long ea = 0, eb = 0;
+    leading_bits_quotient(mpq_numref(terms[k][0]->mpq()), mpq_denref(terms[k][0]->mpq()), P, a, ea);
+    leading_bits_quotient(mpq_numref(terms[k][1]->mpq()), mpq_denref(terms[k][1]->mpq()), P, b, eb);
+    shifted_difference(a, ea, b, eb, v[k], x[k]);
+    if(v[k] == 0) return false; // the two coordinates agree to P bits: undecided
+    // (|a| + |b|) 2^(2-P) / |a - b|, in log2 (the larger of |a|, |b| counted twice: an upper bound)
+    rel[k] = unit + 1 + (std::max)(log2_magnitude(a, ea), log2_magnitude(b, eb)) - log2_magnitude(v[k], x[k]);
+  }
+  // the products, exact, and their difference, exact; the error of the approximations bounds the error
+  const mpz_class p1 = v[0] * v[1], p2 = v[2] * v[3];
+  const long e1 = x[0] + x[1], e2 = x[2] + x[3];
+  mpz_class diff;
+  long ed = 0;
+  shifted_difference(p1, e1, p2, e2, diff, ed);
+  if(diff == 0) return false;
+  // |p1| (r0 + r1 + r0 r1) + |p2| (r2 + r3 + r2 r3), relative to the exact products, is below
+  // 3 max(|p1| max(r0, r1), |p2| max(r2, r3)) with p1, p2 the approximations, while every r is below 2^-10
+  for(int k = 0; k < 4; ++k) if(!(rel[k] < -10)) return false;
+  const double err = std::log2(3.) + (std::max)(log2_magnitude(p1, e1) + (std::max)(rel[0], rel[1]),
+                                               log2_magnitude(p2, e2) + (std::max)(rel[2], rel[3]));
+  if(!(log2_magnitude(diff, ed) > err + (sign_only ? 1 : 41))) return false;
+  long k = 0;
+  m = mpz_get_d_2exp(&k, diff.get_mpz_t());
+  e = k + ed;
+  return true;
+}
+
 // Twice the signed area of (p, q, r) as m 2^e with a relative error below 2^-40 (m = 0 for a zero area;
 // the sign is exact). Each of the four coordinate differences is in double with a bound on its relative
 // error: a few units in the last place where it is an exact integer over a denominator
 // (cheap_rational_difference()), the difference of the two rounded coordinates otherwise (as accurate as
 // they are far apart). Where the determinant in double is not that accurate (its two products nearly
-// cancel, or two coordinates nearly agree), it is computed exactly from integer products. With
+// cancel, or two coordinates nearly agree), it is computed again from the leading bits of the fractions
+// (leading_bits_twice_area()), and exactly from integer products where that does not decide either. With
 // `sign_only`, m is accurate enough for its sign only.
 inline void rational_twice_area(const CGAL::Gmpq& px, const CGAL::Gmpq& py, const CGAL::Gmpq& qx,
                                 const CGAL::Gmpq& qy, const CGAL::Gmpq& rx, const CGAL::Gmpq& ry, double& m, long& e,
@@ -164,6 +254,7 @@ inline void rational_twice_area(const CGAL::Gmpq& px, const CGAL::Gmpq& py, cons
                        + std::abs(p2) * (rel[2] + rel[3] + rel[2] * rel[3] + 4 * ulp) + 2 * ulp * std::abs(m);
     if(std::abs(m) > (sign_only ? bound : std::ldexp(bound, 40))) return;
   }
+  if(leading_bits_twice_area(terms, n, d, integral, sign_only, m, e)) return;
   // exactly
   for(int k = 0; k < 4; ++k) if(!integral[k]) rational_difference(*terms[k][0], *terms[k][1], n[k], d[k]);
   mpz_class num = n[0] * n[1], right = n[2] * n[3], den;

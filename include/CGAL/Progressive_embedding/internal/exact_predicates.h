@@ -172,7 +172,8 @@ inline bool leading_bits_twice_area(const CGAL::Gmpq* const terms[4][2], const m
     leading_bits_quotient(mpq_numref(terms[k][1]->mpq()), mpq_denref(terms[k][1]->mpq()), P, b, eb);
     shifted_difference(a, ea, b, eb, v[k], x[k]);
     if(v[k] == 0) return false; // the two coordinates agree to P bits: undecided
-    // (|a| + |b|) 2^(2-P) / |a - b|, in log2 (the larger of |a|, |b| counted twice: an upper bound)
+    // (|a| + |b|) 2^(2-P) / |a - b|, in log2 (the larger of |a|, |b| counted twice: an upper bound); relative
+    // to the exact difference, at most 1.001 times that while it is below 2^-10 (counted in the bound below)
     rel[k] = unit + 1 + (std::max)(log2_magnitude(a, ea), log2_magnitude(b, eb)) - log2_magnitude(v[k], x[k]);
   }
   // the products, exact, and their difference, exact; the error of the approximations bounds the error
@@ -182,10 +183,11 @@ inline bool leading_bits_twice_area(const CGAL::Gmpq* const terms[4][2], const m
   long ed = 0;
   shifted_difference(p1, e1, p2, e2, diff, ed);
   if(diff == 0) return false;
-  // |p1| (r0 + r1 + r0 r1) + |p2| (r2 + r3 + r2 r3), relative to the exact products, is below
-  // 3 max(|p1| max(r0, r1), |p2| max(r2, r3)) with p1, p2 the approximations, while every r is below 2^-10
+  // the error, |P1| (r0 + r1 + r0 r1) + |P2| (r2 + r3 + r2 r3) with P1, P2 the exact products, is below
+  // 2.01 (|p1| max(r0, r1) + |p2| max(r2, r3)) <= 5 max(|p1| max(r0, r1), |p2| max(r2, r3)) with p1, p2 the
+  // approximations, while every r is below 2^-10
   for(int k = 0; k < 4; ++k) if(!(rel[k] < -10)) return false;
-  const double err = std::log2(3.) + (std::max)(log2_magnitude(p1, e1) + (std::max)(rel[0], rel[1]),
+  const double err = std::log2(5.) + (std::max)(log2_magnitude(p1, e1) + (std::max)(rel[0], rel[1]),
                                                log2_magnitude(p2, e2) + (std::max)(rel[2], rel[3]));
   if(!(log2_magnitude(diff, ed) > err + (sign_only ? 1 : 41))) return false;
   long k = 0;

@@ -697,8 +697,8 @@ def _(d):
 
 @rule(README, "Side by side with it off ([`constrained_embedding_many_no_kinetic.md`](benchmark/results/constrained_embedding_many_no_kinetic.md), "
       "same runs), the kinetic tracing is kept in {kk} of the {kn} runs with 50 random targets and cuts the median "
-      "Steiner vertices per mesh from {a}–{b} to {c}–{e} (up to {f}-fold on one run; {never:never more vertices|more vertices in \\d+ runs}), at a "
-      "median of {t} s more to the certified map (at most {tm} s more).", "constrained_embedding_many.csv",
+      "Steiner vertices per mesh from {a}–{b} to {c}–{e} (up to {f}-fold on one run; {never:never more vertices|more vertices in \\d+ runs?}), at a "
+      "median of {t} s {ml:more|less} to the certified map (at most {tm} s more).", "constrained_embedding_many.csv",
       "constrained_embedding_many_no_kinetic.csv")
 def _(d):
     r50 = where(_many(d), constraints="50", targets="random")
@@ -707,8 +707,10 @@ def _(d):
     ratios = [float(off[(r["mesh"], r["seed"])]["steiner"]) / max(1., float(r["steiner"])) for r in r50]
     extra = [float(r["s_certified_map"]) - float(off[(r["mesh"], r["seed"])]["s_certified_map"]) for r in r50]
     return dict(kk=sum(r["tracing"] == "kinetic" for r in r50), kn=len(r50), a=kilo(min(before)), b=kilo(max(before)),
-                c=kilo(min(after)), e=kilo(max(after)), f=integer(max(ratios)), t=sig(median(extra), 2), tm=sig(max(extra), 2),
-                never="never more vertices" if min(ratios) >= 1 else "more vertices in %d runs" % sum(x < 1 for x in ratios))
+                c=kilo(min(after)), e=kilo(max(after)), f=integer(max(ratios)), t=sig(abs(median(extra)), 2),
+                ml="more" if median(extra) >= 0 else "less", tm=sig(max(extra), 2),
+                never="never more vertices" if min(ratios) >= 1 else "more vertices in %d run%s" % (
+                    sum(x < 1 for x in ratios), "" if sum(x < 1 for x in ratios) == 1 else "s"))
 
 
 @rule(README, "`python3 benchmark/constrained_default_command.py build --optimize-time 5`, {date:\\S+ \\S+} UTC): `pe constrain IN "
@@ -764,7 +766,7 @@ def _(d):
 
 @rule(README, "median over the seeds: man ({v1} vertices) **{t1} s** and diplodocus ({v2}) **{t2} s** (seeds {a} s and "
       "{b} s: the time follows the Steiner vertices, {c} M on these two meshes, whose count varies {f1}-fold and "
-      "{f2}-fold between the seeds).", "constrained_embedding_many.csv")
+      "{f2}-fold between the seeds;", "constrained_embedding_many.csv")
 def _(d):
     both = where(_many(d), constraints="50", targets="random")
     man, dip = where(both, mesh="man.off"), where(both, mesh="diplodocus.off")

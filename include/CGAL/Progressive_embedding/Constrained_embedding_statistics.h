@@ -97,15 +97,21 @@ struct Constrained_embedding_statistics
   bool overlay_tracing = false;
   /// whether the overlay tracing's paths were kept (it succeeded with the fewest Steiner vertices)
   bool overlay_tracing_kept = false;
-  /// whether the paths were traced in the homeomorphism class of the targets' straight-line motion: from
-  /// where a uniform Tutte map puts the constrained vertices to their targets, a triangulation kept valid by
-  /// edge flips, each flip re-tracing one curve (after shortest paths ran out of their Steiner budget or added
-  /// more than a tenth of the vertices; a convex border, no holes, at least one constraint). Its partition
-  /// replaces the Delaunay one when its paths are kept.
+  /// whether the paths were traced in the homeomorphism class of a motion of the targets: from where a
+  /// uniform Tutte map puts the constrained vertices to their targets, a triangulation kept valid by edge
+  /// flips, each flip re-tracing one curve (after shortest paths ran out of their Steiner budget or added
+  /// more than a tenth of the vertices; a convex border, no holes, at least one constraint). Five motions
+  /// are simulated, the straight-line one and four whose crossings all have one sign (a permutation braid
+  /// along the directions at 0, 90, 45 and 135 degrees); the one whose curves cross its own start
+  /// triangulation least is traced on the mesh. Its partition replaces the Delaunay one when its paths are
+  /// kept.
   bool kinetic_tracing = false;
   /// whether the kinetic tracing's paths (and partition) were kept (it succeeded with the fewest Steiner vertices)
   bool kinetic_tracing_kept = false;
-  /// edge flips of the targets' straight-line motion (0 when the kinetic tracing did not run)
+  /// the motion whose paths were kept: 0 the straight-line motion, 1, 2, 3, 4 the permutation braid along
+  /// the direction at 0, 90, 45, 135 degrees; -1 when no kinetic tracing was kept
+  int kinetic_motion = -1;
+  /// edge flips of the motion traced on the mesh (0 when the kinetic tracing did not run)
   std::size_t kinetic_flips = 0;
   /// paths traced (interior edges of the partition of the domain)
   std::size_t paths = 0;

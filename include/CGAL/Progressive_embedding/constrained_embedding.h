@@ -197,8 +197,9 @@ namespace Progressive_embedding {
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{kinetic_tracing}
-///     \cgalParamDescription{whether to trace the paths also in the class of the targets' straight-line motion when
-///                           shortest paths add many vertices (see above); `false` keeps the other tracings only}
+///     \cgalParamDescription{whether to trace the paths also in the class of a motion of the targets (the
+///                           straight-line motion or a permutation braid, the one that winds least) when shortest
+///                           paths add many vertices (see above); `false` keeps the other tracings only}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd

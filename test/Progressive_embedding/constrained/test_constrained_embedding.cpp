@@ -10,6 +10,7 @@
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
 #include <CGAL/Progressive_embedding/check_embedding.h>
 #include <CGAL/Progressive_embedding/internal/constrained/kinetic_triangulation.h>
+#include <CGAL/Progressive_embedding/internal/constrained/trace_kinetic.h>
 #include <CGAL/Progressive_embedding/internal/constrained/domain_partition.h>
 
 #include "registry.h"
@@ -839,6 +840,8 @@ PE_TEST_GROUP(constrained_embedding_kinetic)
     }
     CHECK(with.kinetic_tracing && with.kinetic_flips > 0 && !without.kinetic_tracing, "the kinetic tracing ran (flips " << with.kinetic_flips << ")");
     CHECK(with.steiner_vertices <= without.steiner_vertices, "never more vertices: " << with.steiner_vertices << " vs " << without.steiner_vertices);
+    CHECK(with.kinetic_tracing_kept == (with.kinetic_motion >= 0) && with.kinetic_motion < 5 && without.kinetic_motion == -1,
+          "the kept motion reported: " << with.kinetic_motion);
     if(with.kinetic_tracing_kept)
     {
       ++wins;
@@ -867,11 +870,20 @@ PE_TEST_GROUP(kinetic_triangulation)
   std::uniform_real_distribution<double> U(-0.6, 0.6);
   std::size_t total_flips = 0;
   for(std::size_t n : { 1, 5, 20, 60 })
+  for(int motion = 0; motion < 3; ++motion)
   {
     std::vector<P2> start(n), end(n);
     for(std::size_t i = 0; i < n; ++i) { start[i] = { { U(rng), U(rng) } }; end[i] = { { U(rng), U(rng) } }; }
     PI::Kinetic_triangulation kt;
-    CHECK(PI::kinetic_triangulation(border, start, end, 1000000, kt), "motion of " << n << " points");
+    if(motion == 0)
+      CHECK(PI::kinetic_triangulation(border, start, end, 1000000, kt), "motion of " << n << " points");
+    else
+    {
+      // a permutation braid along x (motion 1) or y (motion 2): four waypoints, the ends given
+      const auto w = PI::permutation_braid_waypoints(border, start, end, motion == 1 ? 0. : 0.5 * CGAL_PI);
+      CHECK(w.size() == 4 && w.front() == start && w.back() == end, "waypoints of a permutation braid");
+      CHECK(PI::kinetic_triangulation(border, w, 1000000, kt), "braid motion of " << n << " points");
+    }
     const std::size_t nb = border.size(), nn = nb + n;
     CHECK(kt.initial.size() == 2 * nn - nb - 2 && kt.final_triangles.size() == kt.initial.size(), "triangle counts");
     auto pos = [&](std::size_t v, bool at_end) -> const P2& { return v < nb ? border[v] : (at_end ? end[v - nb] : start[v - nb]); };
@@ -907,9 +919,23 @@ PE_TEST_GROUP(kinetic_triangulation)
     if(!kt.flips.empty())
       CHECK(PI::merge_triangulation(bp, ep, kt.initial, part) == PE::ERROR_DEGENERATE_BORDER, "start triangulation refused at the targets");
     total_flips += kt.flips.size();
-    std::cout << "  " << n << " moving points: " << kt.initial.size() << " triangles, " << kt.flips.size() << " flips" << std::endl;
+    // the proxy of how much the curves wind: every curve crosses the subdivided start triangulation at least
+    // once, and exactly once (its own edge's replacement) when nothing moved across an edge
+    const std::size_t proxy = PI::kinetic_proxy_crossings(kt, border, start, 100000000, 60.);
+    CHECK(proxy != std::size_t(-1) && proxy >= kt.edges.size() && (!kt.flips.empty() || proxy == kt.edges.size()),
+          "proxy crossings " << proxy << " of " << kt.edges.size() << " curves");
+    std::cout << "  " << n << " moving points, motion " << motion << ": " << kt.initial.size() << " triangles, "
+              << kt.flips.size() << " flips, " << proxy << " proxy crossings" << std::endl;
   }
   CHECK(total_flips > 0, "points crossed edges");
+  {
+    // two points at the same x at the start: no braid along x (they would meet on the way to the band), one along y
+    const std::vector<P2> s{ { { 0.1, 0.3 } }, { { 0.1, -0.3 } } }, e{ { { 0.2, -0.1 } }, { { -0.2, 0.1 } } };
+    CHECK(PI::permutation_braid_waypoints(border, s, e, 0.).empty(), "a tie along the direction: no waypoints");
+    const auto w = PI::permutation_braid_waypoints(border, s, e, 0.5 * CGAL_PI);
+    PI::Kinetic_triangulation kt;
+    CHECK(w.size() == 4 && PI::kinetic_triangulation(border, w, 1000, kt), "the other direction moves");
+  }
   {
     PI::Kinetic_triangulation kt;
     std::vector<P2> s{ { { 0.1, 0.1 } }, { { 0.1, 0.1 } } }, e{ { { 0.2, 0.1 } }, { { -0.2, 0.1 } } };

@@ -697,12 +697,20 @@ public:
   }
 
   // ---- 3b. path tracing, chord splits -------------------------------------------------------
-  // The paths in the class of the targets' straight-line motion from where a uniform Tutte map of the
-  // copy puts the constrained vertices (kinetic_triangulation.h, trace_kinetic.h), on `work` as copied;
-  // `kpart` receives the partition that the motion's end triangulation merges into. For a convex
-  // border without holes and with targets only.
-  Error_code trace_kinetic(internal::Domain_partition& kpart, std::size_t max_steiner, double seconds)
+  // The motions of the kinetic tracing (kinetic_triangulation.h, trace_kinetic.h): from where a uniform
+  // Tutte map of the copy puts the constrained vertices to their targets, each with its end triangulation
+  // merged into convex polygons (its own partition) and the proxy of its crossings; ordered by the proxy.
+  // For a convex border without holes and with targets only.
+  struct Kinetic_candidate
   {
+    std::size_t motion = 0;           // 0: straight lines; 1, 2, 3, 4: permutation braid along 0, 90, 45, 135 degrees
+    internal::Kinetic_triangulation kt;
+    internal::Domain_partition part;
+    std::size_t proxy = 0;            // kinetic_proxy_crossings()
+  };
+  Error_code kinetic_candidates(std::vector<Kinetic_candidate>& out, double seconds)
+  {
+    out.clear();
     if(holes || immersed || non_convex || targets.empty()) return ERROR_WRONG_PARAMETER;
     const std::size_t n = static_cast<std::size_t>(num_vertices(work)), nt = T.size();
     std::vector<std::vector<std::size_t> > adjacency(n);
@@ -725,18 +733,37 @@ public:
       start.push_back(pos[static_cast<std::size_t>(nodes[nbn + i])]);
       end.push_back({ { CGAL::to_double(T[i].x()), CGAL::to_double(T[i].y()) } });
     }
-    internal::Kinetic_triangulation kt;
     const std::size_t max_flips = 64 * (nbn + nt) * (nt + 1) + 1000;
-    const bool moved = internal::kinetic_triangulation(border, start, end, max_flips, kt);
-    stats.kinetic_flips = kt.flips.size();
-    if(verbose)
-      std::cerr << "[constrained_embedding] kinetic triangulation: " << (moved ? "" : "failed, ") << kt.flips.size()
-                << " flips" << std::endl;
-    if(!moved) return ERROR_PATH_TRACING_FAILED;
-    // the end triangulation, checked exactly at the targets, merged into convex polygons as the Delaunay one is
-    if(internal::merge_triangulation(B, T, kt.final_triangles, kpart, popt) != OK) return ERROR_PATH_TRACING_FAILED;
-    return internal::trace_paths_kinetic(work, wvpm, nodes, kt, kpart, paths, steiner,
-                                         parameters::maximum_steiner_vertices(max_steiner).maximum_running_time(seconds));
+    const double t0 = timer.time();
+    static_assert(internal::kinetic_motions == 5, "one direction per braid motion");
+    for(std::size_t motion = 0; motion < internal::kinetic_motions; ++motion)
+    {
+      Kinetic_candidate c;
+      c.motion = motion;
+      std::vector<std::vector<std::array<double, 2> > > waypoints{ start, end };
+      if(motion > 0)
+      {
+        const double pi = 3.14159265358979323846;
+        const double directions[] = { 0., 0.5 * pi, 0.25 * pi, 0.75 * pi };
+        waypoints = internal::permutation_braid_waypoints(border, start, end, directions[motion - 1]);
+        if(waypoints.empty()) continue;
+      }
+      const bool moved = internal::kinetic_triangulation(border, waypoints, max_flips, c.kt);
+      // the end triangulation, checked exactly at the targets, merged into convex polygons as the Delaunay one is
+      if(moved && internal::merge_triangulation(B, T, c.kt.final_triangles, c.part, popt) == OK)
+        c.proxy = internal::kinetic_proxy_crossings(c.kt, border, start, (std::numeric_limits<std::size_t>::max)() - 1,
+                                                    seconds - (timer.time() - t0));
+      if(verbose)
+        std::cerr << "[constrained_embedding] kinetic triangulation (motion " << motion << "): " << (moved ? "" : "failed, ")
+                  << c.kt.flips.size() << " flips, " << (moved && c.proxy != std::size_t(-1) ? std::to_string(c.proxy) : std::string("no"))
+                  << " crossings of the start triangulation" << std::endl;
+      if(moved && c.proxy != std::size_t(-1)) out.push_back(std::move(c));
+    }
+    // fewest crossings first; on a tie, the braids before the straight-line motion
+    std::stable_sort(out.begin(), out.end(), [](const Kinetic_candidate& a, const Kinetic_candidate& b) {
+      return a.proxy != b.proxy ? a.proxy < b.proxy : (a.motion + internal::kinetic_motions - 1) % internal::kinetic_motions
+                                                        < (b.motion + internal::kinetic_motions - 1) % internal::kinetic_motions; });
+    return out.empty() ? ERROR_PATH_TRACING_FAILED : OK;
   }
 
   Error_code trace()
@@ -790,28 +817,47 @@ public:
           have_best = true;
         };
         keep_if_best();
-        // the class of the targets' straight-line motion: a partition of its own (kinetic_triangulation.h)
+        // the class of a motion of the targets, with a partition of its own (kinetic_triangulation.h): the
+        // straight-line motion and permutation braids along four directions are simulated, and the ones whose
+        // curves cross their own start triangulation least are traced on the mesh, each stopped as soon as it
+        // would add as many vertices as the best so far (benchmark/results/constrained_design_measurements.md)
         if(!holes && !immersed && !non_convex && !targets.empty() && remaining() > 0 && kinetic)
         {
-          work = before_tracing;
-          wvpm = get(CGAL::vertex_point, work);
-          paths.clear();
-          steiner.clear();
-          const std::size_t max_k = have_best ? best_steiner.size() - 1 : (user_max != unset ? user_max : internal::overlay_tracing_budget.of(ne));
-          const double t_kinetic = timer.time();
-          internal::Domain_partition kpart;
           // under a time budget, a quarter of what is left: the tracings after it keep the rest (measured:
           // 100 random targets on a 17.5k-vertex disk, certified in 78 s of 120 without it, ran out with it)
-          const double kinetic_seconds = std::isfinite(remaining()) ? 0.25 * remaining() : remaining();
-          ec = trace_kinetic(kpart, max_k, kinetic_seconds);
+          const double kinetic_end = std::isfinite(remaining()) ? timer.time() + 0.25 * remaining() : remaining();
+          work = before_tracing;
+          wvpm = get(CGAL::vertex_point, work);
+          std::vector<Kinetic_candidate> candidates;
+          ec = kinetic_candidates(candidates, std::isfinite(kinetic_end) ? kinetic_end - timer.time() : kinetic_end);
           stats.kinetic_tracing = true;
-          if(verbose)
-            std::cerr << "[constrained_embedding] kinetic tracing: " << get_error_message(ec) << ", "
-                      << steiner.size() << " Steiner vertices, " << timer.time() - t_kinetic << " s" << std::endl;
-          if(ec == OK && (!have_best || steiner.size() < best_steiner.size())) stats.kinetic_tracing_kept = true;
-          if(ec == OK) partition = kpart;
-          keep_if_best();
-          partition = original_partition;
+          for(std::size_t m = 0; m < (std::min)(candidates.size(), internal::kinetic_traced_motions); ++m)
+          {
+            const Kinetic_candidate& c = candidates[m];
+            const double seconds = std::isfinite(kinetic_end) ? kinetic_end - timer.time() : kinetic_end;
+            if(!(seconds > 0) || (have_best && best_steiner.empty())) break;
+            work = before_tracing;
+            wvpm = get(CGAL::vertex_point, work);
+            paths.clear();
+            steiner.clear();
+            const std::size_t max_k = have_best ? best_steiner.size() - 1 : (user_max != unset ? user_max : internal::overlay_tracing_budget.of(ne));
+            const double t_kinetic = timer.time();
+            ec = internal::trace_paths_kinetic(work, wvpm, nodes, c.kt, c.part, paths, steiner,
+                                               parameters::maximum_steiner_vertices(max_k).maximum_running_time(seconds));
+            if(verbose)
+              std::cerr << "[constrained_embedding] kinetic tracing (motion " << c.motion << "): " << get_error_message(ec) << ", "
+                        << steiner.size() << " Steiner vertices, " << timer.time() - t_kinetic << " s" << std::endl;
+            if(m == 0) stats.kinetic_flips = c.kt.flips.size();
+            if(ec == OK && (!have_best || steiner.size() < best_steiner.size()))
+            {
+              stats.kinetic_tracing_kept = true;
+              stats.kinetic_motion = static_cast<int>(c.motion);
+              stats.kinetic_flips = c.kt.flips.size();
+            }
+            if(ec == OK) partition = c.part;
+            keep_if_best();
+            partition = original_partition;
+          }
         }
         double t_overlay_start = timer.time();
         if(!holes && remaining() > 0)
@@ -834,6 +880,7 @@ public:
           {
             stats.overlay_tracing_kept = true;
             stats.kinetic_tracing_kept = false;
+            stats.kinetic_motion = -1;
           }
           keep_if_best();
         }
@@ -870,6 +917,7 @@ public:
             stats.guided_tracing_kept = true;
             stats.overlay_tracing_kept = false;
             stats.kinetic_tracing_kept = false;
+            stats.kinetic_motion = -1;
           }
           keep_if_best();
         }

@@ -5,7 +5,7 @@
 #ifndef CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CONSTRAINED_TRACE_KINETIC_H
 #define CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CONSTRAINED_TRACE_KINETIC_H
 
-// Phase 2 of constrained maps in the homeomorphism class of a straight-line motion of the targets
+// Phase 2 of constrained maps in the homeomorphism class of a motion of the targets
 // (kinetic_triangulation.h): the start triangulation's edges are traced as curves over the input
 // edges (trace_overlay.h's Overlay_tracer), then every flip of the motion takes its edge's curve out
 // and traces the new diagonal inside the quadrilateral the two triangles leave (the new curve leaves c
@@ -23,6 +23,10 @@
 //       default overlay_tracing_budget), CGAL::parameters::maximum_running_time.
 //   Errors: ERROR_BUDGET_EXHAUSTED (either budget), ERROR_PATH_TRACING_FAILED (no curve in a sector:
 //   a motion that the floating-point simulation got wrong), the errors of check_triangulated_disk().
+//
+//   std::size_t kinetic_proxy_crossings(kinetic, border, start, max_crossings, max_seconds)
+//       how much the motion's curves wind, cheaply: their crossings with a mesh made of the motion's own
+//       start triangulation (see there); used to choose which motion is traced on the mesh.
 
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/parameters.h>
@@ -34,6 +38,9 @@
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Real_timer.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/subdivision_method_3.h>
 
 #include <algorithm>
 #include <array>
@@ -88,6 +95,63 @@ inline bool triangulation_rotation(const std::vector<std::array<std::size_t, 3> 
   return true;
 }
 
+// The curves of the motion on the mesh, as crossings held by `tracer`: the start triangulation's edges, then
+// each flip's new diagonal (the curve of the flipped edge taken out).
+template <class TriangleMesh, class VertexPointMap>
+Error_code trace_kinetic_curves(TriangleMesh& tm, VertexPointMap vpm, Overlay_tracer<TriangleMesh, VertexPointMap>& tracer,
+                                const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& nodes,
+                                const Kinetic_triangulation& kinetic, const std::vector<std::vector<std::size_t> >& rotation0,
+                                std::size_t max_splits, const CGAL::Real_timer& timer, double max_seconds)
+{
+  tracer.set_crossing_cost(4.);
+  const Error_code status = trace_partition_curves(tm, vpm, tracer, nodes, kinetic.edges, rotation0, max_splits, timer, max_seconds);
+  if(status != OK) return status;
+  for(const Kinetic_flip& f : kinetic.flips)
+  {
+    if(timer.time() > max_seconds) return ERROR_BUDGET_EXHAUSTED;
+    tracer.remove(static_cast<int>(f.edge));
+    if(!tracer.trace(static_cast<int>(f.edge), nodes[f.c], static_cast<int>(f.ca), static_cast<int>(f.cb),
+                     nodes[f.d], static_cast<int>(f.db), static_cast<int>(f.da)))
+      return ERROR_PATH_TRACING_FAILED;
+    if(tracer.live_crossings() > max_splits) return ERROR_BUDGET_EXHAUSTED;
+  }
+  return OK;
+}
+
+// A cheap estimate of how much a motion's curves wind: their crossings with the edges of a mesh made of the
+// motion's own start triangulation, subdivided once (a few hundred vertices for 50 targets), the curves
+// traced as on the input mesh. The class of the curves is the one the mesh tracing follows; the input
+// mesh scales the crossings by about the number of its edges along a start edge.
+// (size_t)-1 when the tracing fails or runs out of max_crossings or max_seconds.
+inline std::size_t kinetic_proxy_crossings(const Kinetic_triangulation& kinetic, const std::vector<std::array<double, 2> >& border,
+                                           const std::vector<std::array<double, 2> >& start, std::size_t max_crossings,
+                                           double max_seconds)
+{
+  typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Mesh;
+  const std::size_t failed = std::size_t(-1), nb = border.size(), nn = nb + start.size();
+  Mesh m;
+  std::vector<Mesh::Vertex_index> nodes;
+  for(std::size_t n = 0; n < nn; ++n)
+  {
+    const std::array<double, 2>& p = n < nb ? border[n] : start[n - nb];
+    nodes.push_back(m.add_vertex(CGAL::Simple_cartesian<double>::Point_3(p[0], p[1], 0.)));
+  }
+  for(const auto& t : kinetic.initial)
+    if(m.add_face(nodes[t[0]], nodes[t[1]], nodes[t[2]]) == Mesh::null_face()) return failed;
+  // one step of sqrt(3) subdivision: the curves need room between the nodes (the tracer finds none along an
+  // edge that joins two of them); the new edges cross the start edges, one crossing per start edge and
+  // face centre, and the nodes keep their indices
+  CGAL::Subdivision_method_3::Sqrt3_subdivision(m, CGAL::parameters::number_of_iterations(1));
+  std::vector<std::vector<std::size_t> > rotation0;
+  if(!triangulation_rotation(kinetic.initial, nb, nn, kinetic.edges, rotation0)) return failed;
+  CGAL::Real_timer timer;
+  timer.start();
+  auto vpm = get(CGAL::vertex_point, m);
+  Overlay_tracer<Mesh, decltype(vpm)> tracer(m, vpm);
+  if(trace_kinetic_curves(m, vpm, tracer, nodes, kinetic, rotation0, max_crossings, timer, max_seconds) != OK) return failed;
+  return tracer.live_crossings();
+}
+
 template <class TriangleMesh, class VertexPointMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Error_code trace_paths_kinetic(TriangleMesh& tm, VertexPointMap vpm,
                                const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& nodes,
@@ -110,19 +174,8 @@ Error_code trace_paths_kinetic(TriangleMesh& tm, VertexPointMap vpm,
   std::vector<std::vector<std::size_t> > rotation0;
   if(!triangulation_rotation(kinetic.initial, nb, nn, edges0, rotation0)) return ERROR_PATH_TRACING_FAILED;
   Overlay_tracer<TriangleMesh, VertexPointMap> tracer(tm, vpm);
-  tracer.set_crossing_cost(4.);
-  status = trace_partition_curves(tm, vpm, tracer, nodes, edges0, rotation0, max_splits, timer, max_seconds);
+  status = trace_kinetic_curves(tm, vpm, tracer, nodes, kinetic, rotation0, max_splits, timer, max_seconds);
   if(status != OK) return status;
-  // the motion's flips
-  for(const Kinetic_flip& f : kinetic.flips)
-  {
-    if(timer.time() > max_seconds) return ERROR_BUDGET_EXHAUSTED;
-    tracer.remove(static_cast<int>(f.edge));
-    if(!tracer.trace(static_cast<int>(f.edge), nodes[f.c], static_cast<int>(f.ca), static_cast<int>(f.cb),
-                     nodes[f.d], static_cast<int>(f.db), static_cast<int>(f.da)))
-      return ERROR_PATH_TRACING_FAILED;
-    if(tracer.live_crossings() > max_splits) return ERROR_BUDGET_EXHAUSTED;
-  }
   // the edges the merge kept, by node pair; the others are taken out
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> final_id;
   std::vector<std::pair<vertex_descriptor, vertex_descriptor> > ends(edges0.size());

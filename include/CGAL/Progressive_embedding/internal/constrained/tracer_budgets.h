@@ -37,6 +37,12 @@ constexpr Steiner_budget guided_tracing_budget{ 32, 10000 };
 constexpr std::size_t guided_after_overlay_factor = 4;
 // the shortest paths are traced again (overlay, guided) when they add more than vertices / this + 10
 constexpr std::size_t retrace_above_fraction = 10;
+// Motions of the kinetic tracing: the straight-line one and permutation braids along four directions; the
+// kinetic_traced_motions with the fewest crossings of their own start triangulation are traced on the mesh
+// (one: with 50 random or jittered targets, the second one never added fewer vertices in 38 runs,
+// constrained_design_measurements.md).
+constexpr std::size_t kinetic_motions = 5;
+constexpr std::size_t kinetic_traced_motions = 1;
 
 } // namespace internal
 } // namespace Progressive_embedding

@@ -706,11 +706,11 @@ def _(d):
     before, after = _per_mesh(list(off.values()), "steiner"), _per_mesh(r50, "steiner")
     ratios = [float(off[(r["mesh"], r["seed"])]["steiner"]) / max(1., float(r["steiner"])) for r in r50]
     extra = [float(r["s_certified_map"]) - float(off[(r["mesh"], r["seed"])]["s_certified_map"]) for r in r50]
+    more = sum(x < 1 for x in ratios)
     return dict(kk=sum(r["tracing"] == "kinetic" for r in r50), kn=len(r50), a=kilo(min(before)), b=kilo(max(before)),
                 c=kilo(min(after)), e=kilo(max(after)), f=integer(max(ratios)), t=sig(abs(median(extra)), 2),
                 ml="more" if median(extra) >= 0 else "less", tm=sig(max(extra), 2),
-                never="never more vertices" if min(ratios) >= 1 else "more vertices in %d run%s" % (
-                    sum(x < 1 for x in ratios), "" if sum(x < 1 for x in ratios) == 1 else "s"))
+                never="never more vertices" if more == 0 else "more vertices in %d run%s" % (more, "" if more == 1 else "s"))
 
 
 @rule(README, "`python3 benchmark/constrained_default_command.py build --optimize-time 5`, {date:\\S+ \\S+} UTC): `pe constrain IN "

@@ -736,8 +736,9 @@ public:
     const std::size_t max_flips = 64 * (nbn + nt) * (nt + 1) + 1000;
     const double t0 = timer.time();
     static_assert(internal::kinetic_motions == 5, "one direction per braid motion");
-    for(std::size_t motion = 0; motion < internal::kinetic_motions; ++motion)
+    for(std::size_t m = 0; m < internal::kinetic_motions; ++m)
     {
+      const std::size_t motion = (m + 1) % internal::kinetic_motions; // the braids first: they win ties
       Kinetic_candidate c;
       c.motion = motion;
       std::vector<std::vector<std::array<double, 2> > > waypoints{ start, end };
@@ -759,10 +760,8 @@ public:
                   << " crossings of the start triangulation" << std::endl;
       if(moved && c.proxy != std::size_t(-1)) out.push_back(std::move(c));
     }
-    // fewest crossings first; on a tie, the braids before the straight-line motion
-    std::stable_sort(out.begin(), out.end(), [](const Kinetic_candidate& a, const Kinetic_candidate& b) {
-      return a.proxy != b.proxy ? a.proxy < b.proxy : (a.motion + internal::kinetic_motions - 1) % internal::kinetic_motions
-                                                        < (b.motion + internal::kinetic_motions - 1) % internal::kinetic_motions; });
+    // fewest crossings first (stable: on a tie, the order above)
+    std::stable_sort(out.begin(), out.end(), [](const Kinetic_candidate& a, const Kinetic_candidate& b) { return a.proxy < b.proxy; });
     return out.empty() ? ERROR_PATH_TRACING_FAILED : OK;
   }
 

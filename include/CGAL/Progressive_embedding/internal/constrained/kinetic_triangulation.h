@@ -331,14 +331,13 @@ permutation_braid_waypoints(const std::vector<std::array<double, 2> >& border,
   std::vector<std::size_t> order(nt);
   for(std::size_t i = 0; i < nt; ++i) order[i] = i;
   // two points at the same u at the start or the end would pass through each other on the way to
-  // or from the band: no motion along this direction then
-  for(const std::vector<P2>* at : { &start, &end })
+  // or from the band: no motion along this direction then (the start last: its order gives the heights)
+  for(const std::vector<P2>* at : { &end, &start })
   {
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return along((*at)[a]) < along((*at)[b]); });
     for(std::size_t k = 1; k < nt; ++k)
       if(!(along((*at)[order[k - 1]]) < along((*at)[order[k]]))) return none;
   }
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return along(start[a]) < along(start[b]); });
   // heights in [-r/4, r/4], u in [-0.8 r, 0.8 r]: inside the disk of radius 0.84 r
   std::vector<double> height(nt, 0.);
   for(std::size_t k = 0; k < nt; ++k) height[order[k]] = nt > 1 ? 0.5 * r * (double(k) / double(nt - 1) - 0.5) : 0.;

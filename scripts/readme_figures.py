@@ -1003,7 +1003,7 @@ def _(d):
     return dict(f=len(failing), n=len([k for k in by_key if k[0] == "corpus"]))
 
 
-@rule(MANUAL, "on the {v}-vertex mushroom of `libcgal-demo` with 50 random targets this takes {lo} to {hi} Steiner "
+@rule(MANUAL, "On the {v}-vertex mushroom of `libcgal-demo` with 50 random targets this takes {lo} to {hi} Steiner "
       "vertices ({k} seeds, `benchmark/results/constrained_embedding_many.csv`), and the certified map in {t1} to {t2} "
       "seconds.", "constrained_embedding_many.csv")
 def _(d):

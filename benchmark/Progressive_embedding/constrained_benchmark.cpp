@@ -122,6 +122,7 @@ struct Row
   std::size_t iterations = 0;
   std::string optimization_status;
   std::string tracing = "-"; // the tracing whose paths were kept: shortest, kinetic, overlay, guided
+  int kinetic_motion = -1;   // the motion the kinetic tracing kept (Constrained_embedding_statistics::kinetic_motion)
   double unconstrained_mean = -1; // optimized, same border, no constraint (-1: not run)
 };
 
@@ -190,6 +191,7 @@ Row run(const SM& m0, const std::vector<std::pair<vertex_descriptor, K::Point_2>
   r.t_optimization = st.seconds_optimization; r.t_coarsening = st.seconds_coarsening; r.t_output = st.seconds_output; r.t_total = st.seconds_total;
   r.optimized = st.optimized;
   r.tracing = st.kinetic_tracing_kept ? "kinetic" : st.overlay_tracing_kept ? "overlay" : st.guided_tracing_kept ? "guided" : "shortest";
+  r.kinetic_motion = st.kinetic_motion;
   r.optimization_status = st.optimized ? PE::get_error_name(st.optimization_status) : "-";
   r.iterations = st.optimization.iterations;
   r.mean_before = st.report_before_optimization.mean_energy_3d;
@@ -363,7 +365,7 @@ int main(int argc, char** argv)
          "repaired_patches,status,certified,constraint_error,s_validation,s_partition,s_tracing,s_patches,"
          "s_certification,s_certified_map,s_optimization,s_output,s_total,peak_rss_mb,optimized,optimization_status,"
          "iterations,mean_sd_before,max_sd_before,mean_sd_after,max_sd_after,unconstrained_mean_sd,steiner_inserted,"
-         "steiner_removed,s_coarsening,tracing\n";
+         "steiner_removed,s_coarsening,tracing,kinetic_motion\n";
   csv << std::setprecision(6);
   for(const Row& r : rows)
     csv << r.kind << ',' << r.mesh << ',' << r.seed << ',' << r.count << ',' << r.targets << ',' << r.v_in << ',' << r.v_out << ','
@@ -374,7 +376,7 @@ int main(int argc, char** argv)
         << r.t_output << ',' << r.t_total << ',' << r.peak_mb << ',' << (r.optimized ? 1 : 0) << ','
         << r.optimization_status << ',' << r.iterations << ',' << r.mean_before << ',' << r.max_before << ','
         << r.mean_after << ',' << r.max_after << ',' << r.unconstrained_mean << ',' << r.inserted << ',' << r.removed << ','
-        << r.t_coarsening << ',' << r.tracing << '\n';
+        << r.t_coarsening << ',' << r.tracing << ',' << r.kinetic_motion << '\n';
 
   // Markdown: per (mesh, count) medians over the seeds
   std::size_t ok = 0, certified = 0, exact = 0;
@@ -402,7 +404,7 @@ int main(int argc, char** argv)
         "certificate (before the optimization). Added vertices: inserted by the refinement, removed again by the "
         "coarsening after the optimization (" << (coarsen ? "on" : "off: `--no-coarsen`") << "), kept in the output. Path tracings: "
         "shortest paths, then, when they add many vertices, the kinetic tracing (" << (kinetic ? "on" : "off: `--no-kinetic`") <<
-        "), the overlay and the guided ones, the one with the fewest added vertices kept (column `tracing`). Symmetric Dirichlet energies against the 3D triangles (an isometry "
+        "), the overlay and the guided ones, the one with the fewest added vertices kept (column `tracing`; CSV column `kinetic_motion`: the motion kept, 0 the straight line, 1-4 the braids at 0, 90, 45, 135 degrees, -1 none). Symmetric Dirichlet energies against the 3D triangles (an isometry "
         "scores 4), optimized with border and constraints fixed, next to the optimized map with no constraint on the "
         "same border.\n\n"
      << "- runs: " << rows.size() << "; OK: " << ok << "; certified again by check_embedding(): " << certified

@@ -117,6 +117,10 @@ int cmd_constrain(const Arguments& a)
   run.result.add("steiner_vertices_kept_for_distortion", st.steiner_vertices_kept_for_distortion);
   run.result.add("paths", st.paths);
   run.result.add("patches", st.patches);
+  // which tracing's paths were kept, and with the kinetic tracing, which motion of the targets
+  run.result.add("tracing", std::string(st.kinetic_tracing_kept ? "kinetic" : st.overlay_tracing_kept ? "overlay"
+                                        : st.guided_tracing_kept ? "guided" : "shortest"));
+  run.result.add("kinetic_motion", static_cast<double>(st.kinetic_motion));
   run.summary << "vertices " << vertices_in << " -> " << in.mesh.number_of_vertices() << " (" << st.steiner_vertices
               << " Steiner";
   if(st.steiner_vertices_removed > 0)

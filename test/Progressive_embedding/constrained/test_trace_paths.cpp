@@ -363,23 +363,41 @@ PE_TEST_GROUP(trace_paths_polyhedron)
 
 // two mesh-adjacent nodes, partition-adjacent (one-edge path) or not (the edge stays a chord
 // between two corners of one patch, split by split_chords)
+namespace {
+
+// appends to `interior` a mesh neighbour of its first vertex (interior, not in it yet) and returns it
+Surface_mesh::Vertex_index add_interior_neighbour(const Surface_mesh& m, std::vector<Surface_mesh::Vertex_index>& interior)
+{
+  Surface_mesh::Vertex_index y;
+  for(auto w : CGAL::vertices_around_target(halfedge(interior[0], m), m))
+    if(!CGAL::is_border(w, m) && std::find(interior.begin(), interior.end(), w) == interior.end()) { y = w; break; }
+  interior.push_back(y);
+  return y;
+}
+
+// the index of the partition edge joining nodes a and b, or -1
+template <class Mesh>
+std::size_t partition_edge(const Partition<Mesh>& P, std::size_t a, std::size_t b)
+{
+  for(std::size_t e = 0; e < P.edges.size(); ++e)
+    if(std::set<std::size_t>{ P.edges[e][0], P.edges[e][1] } == std::set<std::size_t>{ a, b }) return e;
+  return std::size_t(-1);
+}
+
+} // namespace
+
 PE_TEST_GROUP(trace_paths_adjacent_nodes)
 {
   Surface_mesh m0;
   if(!read_mesh(data_dir + "/meshes/lion-head.off", m0)) return EXIT_FAILURE;
   auto uv = circle_tutte(m0);
   auto interior = random_interior(m0, uv, 8, 3);
-  const auto x = interior[0];
-  Surface_mesh::Vertex_index y;
-  for(auto w : CGAL::vertices_around_target(halfedge(x, m0), m0)) if(!CGAL::is_border(w, m0)) { y = w; break; }
-  interior.push_back(y);
+  const auto x = interior[0], y = add_interior_neighbour(m0, interior);
   const std::size_t ix = 8, iy = 8 + interior.size() - 1;
   {
     Surface_mesh m = m0;
     const auto P = delaunay_partition(m, uv, 8, interior, false);
-    std::size_t exy = std::size_t(-1);
-    for(std::size_t e = 0; e < P.edges.size(); ++e)
-      if(std::set<std::size_t>{ P.edges[e][0], P.edges[e][1] } == std::set<std::size_t>{ ix, iy }) exy = e;
+    const std::size_t exy = partition_edge(P, ix, iy);
     CHECK(exy != std::size_t(-1), "the Delaunay partition joins the two close nodes");
     std::vector<std::vector<Surface_mesh::Vertex_index> > paths;
     std::vector<PI::Steiner_vertex<Surface_mesh> > steiner;
@@ -807,6 +825,28 @@ PE_TEST_GROUP(trace_paths_overlay)
       RUN(trace_and_verify(m, delaunay_partition(m, uv, 8, interior, true), nested, "mirrored n=50, trace_paths"));
       CHECK(overlay.steiner < nested.steiner, "curves over the input edges: " << overlay.steiner << " vs " << nested.steiner);
     }
+  }
+  for(bool mirrored : { false, true })
+  {
+    // two nodes joined by an input edge: the curve between them runs along that edge (no crossing, where a
+    // crossing curve finds no room), and the curves traced after it go around it
+    auto interior = random_interior(m0, uv, 8, 3);
+    const auto x = interior[0], y = add_interior_neighbour(m0, interior);
+    Surface_mesh m = m0;
+    const auto P = delaunay_partition(m, uv, 8, interior, mirrored);
+    const std::size_t exy = partition_edge(P, 8, 8 + interior.size() - 1);
+    CHECK(exy != std::size_t(-1), "the partition joins the two adjacent nodes");
+    const auto before = snapshot(m);
+    std::vector<std::vector<Surface_mesh::Vertex_index> > paths;
+    std::vector<PI::Steiner_vertex<Surface_mesh> > steiner;
+    CHECK(PI::trace_paths_overlay(m, get(CGAL::vertex_point, m), P.nodes, P.edges, P.rotation, paths, steiner) == PE::OK,
+          "adjacent nodes traced (mirrored " << mirrored << ")");
+    CHECK(paths[exy].size() == 2 && std::set<Surface_mesh::Vertex_index>(paths[exy].begin(), paths[exy].end()) ==
+                                      (std::set<Surface_mesh::Vertex_index>{ x, y }), "the curve is the input edge");
+    Counts c;
+    RUN(verify(m, P, paths, steiner, count_vertices(m0), before, c));
+    std::cout << "  adjacent nodes (mirrored " << mirrored << "): the curve along their edge, " << c.steiner
+              << " Steiner vertices for the " << P.edges.size() << " paths" << std::endl;
   }
   {
     // the refinement replayed on a Polyhedron_3 with the same connectivity gives the same mesh

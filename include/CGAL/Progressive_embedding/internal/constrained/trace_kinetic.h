@@ -112,7 +112,7 @@ Error_code trace_kinetic_curves(TriangleMesh& tm, VertexPointMap vpm, Overlay_tr
     tracer.remove(static_cast<int>(f.edge));
     if(!tracer.trace(static_cast<int>(f.edge), nodes[f.c], static_cast<int>(f.ca), static_cast<int>(f.cb),
                      nodes[f.d], static_cast<int>(f.db), static_cast<int>(f.da)))
-      return ERROR_PATH_TRACING_FAILED;
+      return tracer.timed_out() ? ERROR_BUDGET_EXHAUSTED : ERROR_PATH_TRACING_FAILED;
     if(tracer.live_crossings() > max_splits) return ERROR_BUDGET_EXHAUSTED;
   }
   return OK;

@@ -32,6 +32,8 @@
 // ends on its boundary cross iff their ends interleave along the boundary). A curve leaves its node
 // through a corner, to a gap of the edge opposite it, and arrives likewise; the angular position of
 // that gap around the node decides the sector (between the node's traced curves, in rotation order).
+// A curve whose nodes are joined by an input edge runs along it instead, when no curve crosses that edge yet
+// and the edge's direction lies in both sectors (no crossing; later curves do not cross the edge).
 //
 // Refinement: every input edge crossed k times gets k points by midpoint splits (the crossing of median
 // rank at the midpoint, the others recursively on either side: the Steiner vertices stay at dyadic
@@ -101,6 +103,7 @@ public:
                          0.5 * (CGAL::to_double(p.z()) + CGAL::to_double(q.z())) } });
     }
     cross_.resize(eh_.size());
+    blocked_.assign(eh_.size(), 0);
     for(face_descriptor f : faces(tm_)) { put(fid_, f, static_cast<int>(fh_.size())); fh_.push_back(halfedge(f, tm_)); }
     chords_.resize(fh_.size());
     fdata_.resize(fh_.size());
@@ -134,6 +137,12 @@ public:
     step_ = w * (eh_.empty() ? 1. : sum / double(eh_.size()));
   }
 
+  // A deadline for every later trace(): a search that runs past `max_seconds` on `timer` gives up (false,
+  // and timed_out() then says why). One curve's search can take seconds on a mesh crowded with curves:
+  // a check between curves alone let a budget be overrun by tens of seconds.
+  void set_deadline(const CGAL::Real_timer& timer, double max_seconds) { timer_ = &timer; max_seconds_ = max_seconds; }
+  bool timed_out() const { return timed_out_; }
+
   // One curve from node vertex u to node vertex v. Sectors: the curve must leave u strictly between
   // the curves `before_u` and `after_u` (curve indices, -1: none) counterclockwise, likewise at v;
   // `border_u` / `border_v` say whether the node is a border vertex (its sector is then bounded by
@@ -153,6 +162,7 @@ public:
     std::priority_queue<QE, std::vector<QE>, std::greater<QE> > q;
     const Star su = star(u), sv = star(v);
     const Sector secu = sector(su, before_u, after_u), secv = sector(sv, before_v, after_v);
+    if(trace_along_edge(curve, u, v, su, sv, secu, secv)) return true;
     const std::array<double, 3> pu = point(u), pv = point(v);
     // start: chords from the corner u to a gap of the opposite edge
     for(std::size_t j = 0; j < su.out.size(); ++j)
@@ -161,7 +171,7 @@ public:
       if(is_border(g, tm_)) continue;
       const halfedge_descriptor o = next(g, tm_); // the edge opposite u, from the vertex after u
       const std::size_t e = static_cast<std::size_t>(get(hid_, o));
-      if(is_border(opposite(o, tm_), tm_)) continue; // a curve does not cross the border
+      if(is_border(opposite(o, tm_), tm_) || blocked_[e]) continue; // a curve crosses neither the border nor an edge curve
       const Face_data& fd = face_data(static_cast<std::size_t>(get(fid_, face(g, tm_))));
       const std::size_t ku = fd.index(g), ko = fd.index(o);
       const std::int64_t cu = 2 * fd.off[ku];
@@ -181,6 +191,8 @@ public:
     std::size_t guard = 0;
     while(!q.empty() && ++guard <= 64 * S + 1000000)
     {
+      // the clock every 4096 states (a state costs well under a microsecond: the check is free)
+      if(timer_ != nullptr && guard % 4096 == 0 && timer_->time() > max_seconds_) { timed_out_ = true; return false; }
       const QE top = q.top(); q.pop();
       const double d = top.first;
       if(d >= best) break;
@@ -239,6 +251,16 @@ public:
   {
     if(curve < 0 || static_cast<std::size_t>(curve) >= curve_crossings_.size()) return;
     std::vector<int>& xs = curve_crossings_[static_cast<std::size_t>(curve)];
+    if(curve_edge_[static_cast<std::size_t>(curve)] >= 0)
+    {
+      const std::size_t e = static_cast<std::size_t>(curve_edge_[static_cast<std::size_t>(curve)]);
+      curve_edge_[static_cast<std::size_t>(curve)] = -1;
+      set_blocked(e, false);
+      const auto& ends = curve_ends_[static_cast<std::size_t>(curve)];
+      node_curves_.erase(std::make_pair(ends.first, curve));
+      node_curves_.erase(std::make_pair(ends.second, curve));
+      return;
+    }
     if(xs.empty()) return;
     removed_.resize(crossing_.size(), 0);
     for(int x : xs) removed_[static_cast<std::size_t>(x)] = 1;
@@ -301,7 +323,16 @@ public:
         p = x;
       }
     }
-    if(steiner.size() == first) return paths.empty();
+    if(steiner.size() == first) // every curve along an input edge (or none): nothing to refine
+    {
+      paths.assign(ends.size(), std::vector<vertex_descriptor>());
+      for(std::size_t c = 0; c < ends.size(); ++c)
+      {
+        if(curve_crossings_.size() <= c || !curve_crossings_[c].empty()) return false;
+        paths[c] = { ends[c].first, ends[c].second };
+      }
+      return true;
+    }
     // Each chord becomes an edge across its face. Between two crossings, the halfedges ending at them
     // in that face are known: no walk around the face (as long as its crossings) to find them. From a
     // corner, which may have several chords in one face, the edge is found by a walk (connect_in_face()).
@@ -409,9 +440,9 @@ private:
     bool all = true, border = false;
     std::int64_t lo = 0, hi = 0, M = 0; // keys j * W + p
     static constexpr std::int64_t W = std::int64_t(1) << 32;
-    bool contains(std::size_t j, std::int64_t p) const
+    bool contains(std::size_t j, std::int64_t p) const { return contains_key(static_cast<std::int64_t>(j) * W + p); }
+    bool contains_key(std::int64_t k) const
     {
-      const std::int64_t k = static_cast<std::int64_t>(j) * W + p;
       if(border) return k > lo && k < hi;
       if(all) return true;
       const std::int64_t x = ((k - lo) % M + M) % M, y = ((hi - lo) % M + M) % M;
@@ -428,6 +459,7 @@ private:
     {
       const auto& n = node_curves_.at(std::make_pair(u, c)); // (outgoing halfedge, crossing)
       const std::size_t j = s.index_of(n.first);
+      if(n.second < 0) return edge_key(j); // a curve along the input edge n.first
       const halfedge_descriptor o = next(n.first, tm_);
       return static_cast<std::int64_t>(j) * Sector::W + 2 * (position_along(o, n.second) + 1) - 1;
     };
@@ -443,6 +475,47 @@ private:
     sec.lo = key(before >= 0 ? before : after);
     sec.hi = key(after >= 0 ? after : before);
     return sec;
+  }
+
+  // The angular key of the direction of out[j] around a node: after every gap of the face before it, before
+  // every gap of face(out[j]) (gap i of face j has key j * W + 2i).
+  static std::int64_t edge_key(std::size_t j) { return static_cast<std::int64_t>(j) * Sector::W - 1; }
+  void set_blocked(std::size_t e, bool b)
+  {
+    blocked_[e] = b ? 1 : 0;
+    for(halfedge_descriptor h : { eh_[e], opposite(eh_[e], tm_) })
+      if(!is_border(h, tm_)) fdata_[static_cast<std::size_t>(get(fid_, face(h, tm_)))].valid = false;
+  }
+  // A curve between two nodes joined by an interior input edge runs along that edge when no curve crosses
+  // it and its direction lies in the curve's sectors at both ends: no crossing at all (the crossing
+  // curves, which must leave a node towards the edge opposite it, find no room along such an edge: near
+  // a border where every border vertex is a node, a chord between two of them had no curve). Later curves
+  // do not cross it.
+  bool trace_along_edge(int curve, vertex_descriptor u, vertex_descriptor v, const Star& su, const Star& sv,
+                        const Sector& secu, const Sector& secv)
+  {
+    const auto hv = halfedge(u, v, tm_);
+    if(!hv.second) return false;
+    const halfedge_descriptor g = hv.first;
+    if(is_border(g, tm_) || is_border(opposite(g, tm_), tm_)) return false;
+    const std::size_t e = static_cast<std::size_t>(get(hid_, g));
+    if(blocked_[e] || !cross_[e].empty()) return false;
+    const std::size_t ju = su.index_of(g), jv = sv.index_of(opposite(g, tm_));
+    if(ju == std::size_t(-1) || jv == std::size_t(-1)) return false;
+    if(!secu.contains_key(edge_key(ju)) || !secv.contains_key(edge_key(jv))) return false;
+    if(curve_crossings_.size() <= static_cast<std::size_t>(curve))
+    {
+      curve_crossings_.resize(static_cast<std::size_t>(curve) + 1);
+      curve_ends_.resize(static_cast<std::size_t>(curve) + 1);
+      curve_edge_.resize(static_cast<std::size_t>(curve) + 1, -1);
+    }
+    curve_ends_[static_cast<std::size_t>(curve)] = std::make_pair(u, v);
+    curve_crossings_[static_cast<std::size_t>(curve)].clear();
+    curve_edge_[static_cast<std::size_t>(curve)] = static_cast<int>(e);
+    node_curves_[std::make_pair(u, curve)] = std::make_pair(g, -1);
+    node_curves_[std::make_pair(v, curve)] = std::make_pair(opposite(g, tm_), -1);
+    set_blocked(e, true);
+    return true;
   }
 
   // Boundary positions in a face are doubled: point k at 2k, the gap after it at 2k+1. Points: corner
@@ -581,7 +654,7 @@ private:
       const std::size_t k = static_cast<std::size_t>(g[1]), j = static_cast<std::size_t>(g[2]);
       const halfedge_descriptor hk = fd.h[k];
       std::size_t state = no_state;
-      if(!is_border(opposite(hk, tm_), tm_))
+      if(!is_border(opposite(hk, tm_), tm_) && !blocked_[fd.e[k]])
       {
         const std::size_t ek = fd.e[k];
         const bool along = hk == eh_[ek];
@@ -624,19 +697,34 @@ private:
       gs.push_back(G{ e, i, s % 2, -1 });
     }
     for(G& g : gs) { g.id = static_cast<int>(crossing_.size()); crossing_.push_back(Crossing{ g.e }); }
-    // insert the crossings: per edge by decreasing gap index, so that earlier indices stay valid
+    // insert the crossings, each edge's in one merge: a curve may cross one edge thousands of times and an
+    // edge hold thousands of crossings, where an insertion and a renumbering per crossing cost their product
     std::vector<std::size_t> order(gs.size());
     for(std::size_t k = 0; k < order.size(); ++k) order[k] = k;
     std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y)
-              { return gs[x].e != gs[y].e ? gs[x].e < gs[y].e : gs[x].i > gs[y].i; });
-    for(std::size_t k : order)
-      cross_[gs[k].e].insert(cross_[gs[k].e].begin() + static_cast<std::ptrdiff_t>(gs[k].i), gs[k].id);
+              { return gs[x].e != gs[y].e ? gs[x].e < gs[y].e : gs[x].i < gs[y].i; });
     cpos_.resize(crossing_.size());
-    for(const G& g : gs)
+    std::vector<int>& merged = merge_scratch_;
+    for(std::size_t a = 0; a < order.size(); )
     {
-      for(std::size_t k = 0; k < cross_[g.e].size(); ++k) cpos_[static_cast<std::size_t>(cross_[g.e][k])] = static_cast<int>(k);
-      for(halfedge_descriptor h : { eh_[g.e], opposite(eh_[g.e], tm_) })
+      const std::size_t e = gs[order[a]].e;
+      std::size_t b = a;
+      while(b < order.size() && gs[order[b]].e == e) ++b;
+      // gap i of the old list: before its i-th crossing (a shortest curve passes a gap once)
+      std::vector<int>& cr = cross_[e];
+      merged.clear();
+      merged.reserve(cr.size() + (b - a));
+      std::size_t k = a;
+      for(std::size_t j = 0; j <= cr.size(); ++j)
+      {
+        for(; k < b && gs[order[k]].i == j; ++k) merged.push_back(gs[order[k]].id);
+        if(j < cr.size()) merged.push_back(cr[j]);
+      }
+      cr.swap(merged);
+      for(std::size_t m = 0; m < cr.size(); ++m) cpos_[static_cast<std::size_t>(cr[m])] = static_cast<int>(m);
+      for(halfedge_descriptor h : { eh_[e], opposite(eh_[e], tm_) })
         if(!is_border(h, tm_)) fdata_[static_cast<std::size_t>(get(fid_, face(h, tm_)))].valid = false;
+      a = b;
     }
     // chords: u to the first crossing (in the face before it), between consecutive crossings (in the
     // face the first enters), the last to v (in the face it enters)
@@ -662,8 +750,10 @@ private:
     {
       curve_crossings_.resize(static_cast<std::size_t>(curve) + 1);
       curve_ends_.resize(static_cast<std::size_t>(curve) + 1);
+      curve_edge_.resize(static_cast<std::size_t>(curve) + 1, -1);
     }
     curve_ends_[static_cast<std::size_t>(curve)] = std::make_pair(u, v);
+    curve_edge_[static_cast<std::size_t>(curve)] = -1;
     curve_crossings_[static_cast<std::size_t>(curve)].clear();
     for(const G& g : gs) curve_crossings_[static_cast<std::size_t>(curve)].push_back(g.id);
     live_ += gs.size();
@@ -727,8 +817,14 @@ private:
   std::array<std::vector<std::pair<std::int64_t, int> >, 3> corner_scratch_;
   std::vector<char> opened_scratch_;
   std::vector<std::array<int, 3> > gaps_scratch_;
+  std::vector<int> merge_scratch_;            // commit()'s
+  std::vector<char> blocked_;                 // per input edge: an edge curve runs along it (not to be crossed)
+  std::vector<int> curve_edge_;               // per curve: the input edge it runs along, or -1 (it crosses edges)
   double step_ = 0;                           // the cost of one crossing
   std::size_t live_ = 0;                      // crossings of the curves not taken out
+  const CGAL::Real_timer* timer_ = nullptr;   // set_deadline()
+  double max_seconds_ = std::numeric_limits<double>::infinity();
+  bool timed_out_ = false;
 };
 
 // The budgets of a curve tracing (named parameters maximum_running_time, default none, and
@@ -747,7 +843,8 @@ Error_code read_curve_tracing_budgets(const TriangleMesh& tm, const NamedParamet
 
 // Traces every edge of the partition (nodes, edges, rotation) with `tracer`, curve id = edge index, in
 // tracing_order() (after the checks of mark_nodes_and_check_partition(); a disk only). ERROR_BUDGET_EXHAUSTED
-// when the curves cross more than max_splits input edges or the timer passes max_seconds.
+// when the curves cross more than max_splits input edges or the timer passes max_seconds (checked inside each
+// curve's search too: the tracer keeps that deadline for later curves).
 template <class TriangleMesh, class VertexPointMap>
 Error_code trace_partition_curves(TriangleMesh& tm, VertexPointMap vpm, Overlay_tracer<TriangleMesh, VertexPointMap>& tracer,
                                   const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& nodes,
@@ -764,6 +861,7 @@ Error_code trace_partition_curves(TriangleMesh& tm, VertexPointMap vpm, Overlay_
     if(loops.size() != 1) return ERROR_WRONG_PARAMETER; // a disk only
     tracing_order(vpm, net, nodes, edges, loops, false, order);
   }
+  tracer.set_deadline(timer, max_seconds);
   std::vector<char> traced(edges.size(), 0);
   auto neighbours = [&](std::size_t i, std::size_t e, int& before, int& after)
   {
@@ -779,7 +877,8 @@ Error_code trace_partition_curves(TriangleMesh& tm, VertexPointMap vpm, Overlay_
     neighbours(a, e, ba, aa);
     neighbours(b, e, bb, ab);
     // at b the curve arrives: its counterclockwise order around b is the rotation's
-    if(!tracer.trace(static_cast<int>(e), nodes[a], ba, aa, nodes[b], bb, ab)) return ERROR_PATH_TRACING_FAILED;
+    if(!tracer.trace(static_cast<int>(e), nodes[a], ba, aa, nodes[b], bb, ab))
+      return tracer.timed_out() ? ERROR_BUDGET_EXHAUSTED : ERROR_PATH_TRACING_FAILED;
     traced[e] = 1;
     if(tracer.live_crossings() > max_splits) return ERROR_BUDGET_EXHAUSTED;
   }

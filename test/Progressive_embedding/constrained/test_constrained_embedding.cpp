@@ -924,6 +924,8 @@ PE_TEST_GROUP(kinetic_triangulation)
     const std::size_t proxy = PI::kinetic_proxy_crossings(kt, border, start, 100000000, 60.);
     CHECK(proxy != std::size_t(-1) && proxy >= kt.edges.size() && (!kt.flips.empty() || proxy == kt.edges.size()),
           "proxy crossings " << proxy << " of " << kt.edges.size() << " curves");
+    // a cap below the count stops it (constrained_embedding() caps the motions that would not be traced)
+    CHECK(PI::kinetic_proxy_crossings(kt, border, start, proxy - 1, 60.) == std::size_t(-1), "capped proxy");
     std::cout << "  " << n << " moving points, motion " << motion << ": " << kt.initial.size() << " triangles, "
               << kt.flips.size() << " flips, " << proxy << " proxy crossings" << std::endl;
   }

@@ -750,13 +750,22 @@ public:
         if(waypoints.empty()) continue;
       }
       const bool moved = internal::kinetic_triangulation(border, waypoints, max_flips, c.kt);
+      // the cap: a motion whose proxy passes a multiple of the ones that would be traced is not traced
+      std::size_t cap = (std::numeric_limits<std::size_t>::max)() - 1;
+      if(out.size() >= internal::kinetic_traced_motions)
+      {
+        std::vector<std::size_t> so_far;
+        for(const Kinetic_candidate& o : out) so_far.push_back(o.proxy);
+        std::nth_element(so_far.begin(), so_far.begin() + (internal::kinetic_traced_motions - 1), so_far.end());
+        const std::size_t k = so_far[internal::kinetic_traced_motions - 1];
+        if(k < cap / internal::kinetic_proxy_cap_factor) cap = internal::kinetic_proxy_cap_factor * k;
+      }
       // the end triangulation, checked exactly at the targets, merged into convex polygons as the Delaunay one is
       if(moved && internal::merge_triangulation(B, T, c.kt.final_triangles, c.part, popt) == OK)
-        c.proxy = internal::kinetic_proxy_crossings(c.kt, border, start, (std::numeric_limits<std::size_t>::max)() - 1,
-                                                    seconds - (timer.time() - t0));
+        c.proxy = internal::kinetic_proxy_crossings(c.kt, border, start, cap, seconds - (timer.time() - t0));
       if(verbose)
         std::cerr << "[constrained_embedding] kinetic triangulation (motion " << motion << "): " << (moved ? "" : "failed, ")
-                  << c.kt.flips.size() << " flips, " << (moved && c.proxy != std::size_t(-1) ? std::to_string(c.proxy) : std::string("no"))
+                  << c.kt.flips.size() << " flips, " << (moved && c.proxy != std::size_t(-1) ? std::to_string(c.proxy) : "no count (over " + std::to_string(cap) + ")")
                   << " crossings of the start triangulation" << std::endl;
       if(moved && c.proxy != std::size_t(-1)) out.push_back(std::move(c));
     }
@@ -824,12 +833,15 @@ public:
         {
           // under a time budget, a quarter of what is left: the tracings after it keep the rest (measured:
           // 100 random targets on a 17.5k-vertex disk, certified in 78 s of 120 without it, ran out with it)
-          const double kinetic_end = std::isfinite(remaining()) ? timer.time() + 0.25 * remaining() : remaining();
+          double kinetic_end = std::isfinite(remaining()) ? timer.time() + 0.25 * remaining() : remaining();
           work = before_tracing;
           wvpm = get(CGAL::vertex_point, work);
           std::vector<Kinetic_candidate> candidates;
           ec = kinetic_candidates(candidates, std::isfinite(kinetic_end) ? kinetic_end - timer.time() : kinetic_end);
           stats.kinetic_tracing = true;
+          // the tracing on the mesh gets its own quarter of what the simulations left (with 200 targets they take
+          // seconds of the first quarter)
+          if(std::isfinite(kinetic_end)) kinetic_end = timer.time() + 0.25 * remaining();
           for(std::size_t m = 0; m < (std::min)(candidates.size(), internal::kinetic_traced_motions); ++m)
           {
             const Kinetic_candidate& c = candidates[m];

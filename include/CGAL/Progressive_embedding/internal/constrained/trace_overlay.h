@@ -251,17 +251,17 @@ public:
   {
     if(curve < 0 || static_cast<std::size_t>(curve) >= curve_crossings_.size()) return;
     std::vector<int>& xs = curve_crossings_[static_cast<std::size_t>(curve)];
-    if(curve_edge_[static_cast<std::size_t>(curve)] >= 0)
-    {
-      const std::size_t e = static_cast<std::size_t>(curve_edge_[static_cast<std::size_t>(curve)]);
-      curve_edge_[static_cast<std::size_t>(curve)] = -1;
-      set_blocked(e, false);
-      const auto& ends = curve_ends_[static_cast<std::size_t>(curve)];
-      node_curves_.erase(std::make_pair(ends.first, curve));
-      node_curves_.erase(std::make_pair(ends.second, curve));
-      return;
-    }
-    if(xs.empty()) return;
+    int& along = curve_edge_[static_cast<std::size_t>(curve)];
+    if(along >= 0) { set_blocked(static_cast<std::size_t>(along), false); along = -1; } // a curve along an input edge
+    else if(xs.empty()) return; // not traced, or taken out already
+    else remove_crossings(xs);
+    const auto& ends = curve_ends_[static_cast<std::size_t>(curve)];
+    node_curves_.erase(std::make_pair(ends.first, curve));
+    node_curves_.erase(std::make_pair(ends.second, curve));
+  }
+  // remove()'s part for a curve that crosses edges: its crossings and chords
+  void remove_crossings(std::vector<int>& xs)
+  {
     removed_.resize(crossing_.size(), 0);
     for(int x : xs) removed_[static_cast<std::size_t>(x)] = 1;
     auto gone = [&](const End& e) { return !e.corner && removed_[static_cast<std::size_t>(e.crossing)]; };
@@ -283,9 +283,6 @@ public:
       cr.erase(std::remove_if(cr.begin(), cr.end(), [&](int x) { return removed_[static_cast<std::size_t>(x)] != 0; }), cr.end());
       for(std::size_t k = 0; k < cr.size(); ++k) cpos_[static_cast<std::size_t>(cr[k])] = static_cast<int>(k);
     }
-    const auto& ends = curve_ends_[static_cast<std::size_t>(curve)];
-    node_curves_.erase(std::make_pair(ends.first, curve));
-    node_curves_.erase(std::make_pair(ends.second, curve));
     live_ -= xs.size();
     xs.clear();
   }
@@ -480,11 +477,26 @@ private:
   // The angular key of the direction of out[j] around a node: after every gap of the face before it, before
   // every gap of face(out[j]) (gap i of face j has key j * W + 2i).
   static std::int64_t edge_key(std::size_t j) { return static_cast<std::int64_t>(j) * Sector::W - 1; }
-  void set_blocked(std::size_t e, bool b)
+  // the cached pieces of the faces on either side of input edge e are stale
+  void invalidate_faces(std::size_t e)
   {
-    blocked_[e] = b ? 1 : 0;
     for(halfedge_descriptor h : { eh_[e], opposite(eh_[e], tm_) })
       if(!is_border(h, tm_)) fdata_[static_cast<std::size_t>(get(fid_, face(h, tm_)))].valid = false;
+  }
+  void set_blocked(std::size_t e, bool b) { blocked_[e] = b ? 1 : 0; invalidate_faces(e); }
+  // the records of curve `curve` from u to v (along input edge `edge`, or -1), its crossings cleared
+  void record_curve(int curve, vertex_descriptor u, vertex_descriptor v, int edge)
+  {
+    const std::size_t c = static_cast<std::size_t>(curve);
+    if(curve_crossings_.size() <= c)
+    {
+      curve_crossings_.resize(c + 1);
+      curve_ends_.resize(c + 1);
+      curve_edge_.resize(c + 1, -1);
+    }
+    curve_ends_[c] = std::make_pair(u, v);
+    curve_crossings_[c].clear();
+    curve_edge_[c] = edge;
   }
   // A curve between two nodes joined by an interior input edge runs along that edge when no curve crosses
   // it and its direction lies in the curve's sectors at both ends: no crossing at all (the crossing
@@ -503,15 +515,7 @@ private:
     const std::size_t ju = su.index_of(g), jv = sv.index_of(opposite(g, tm_));
     if(ju == std::size_t(-1) || jv == std::size_t(-1)) return false;
     if(!secu.contains_key(edge_key(ju)) || !secv.contains_key(edge_key(jv))) return false;
-    if(curve_crossings_.size() <= static_cast<std::size_t>(curve))
-    {
-      curve_crossings_.resize(static_cast<std::size_t>(curve) + 1);
-      curve_ends_.resize(static_cast<std::size_t>(curve) + 1);
-      curve_edge_.resize(static_cast<std::size_t>(curve) + 1, -1);
-    }
-    curve_ends_[static_cast<std::size_t>(curve)] = std::make_pair(u, v);
-    curve_crossings_[static_cast<std::size_t>(curve)].clear();
-    curve_edge_[static_cast<std::size_t>(curve)] = static_cast<int>(e);
+    record_curve(curve, u, v, static_cast<int>(e));
     node_curves_[std::make_pair(u, curve)] = std::make_pair(g, -1);
     node_curves_[std::make_pair(v, curve)] = std::make_pair(opposite(g, tm_), -1);
     set_blocked(e, true);
@@ -722,8 +726,7 @@ private:
       }
       cr.swap(merged);
       for(std::size_t m = 0; m < cr.size(); ++m) cpos_[static_cast<std::size_t>(cr[m])] = static_cast<int>(m);
-      for(halfedge_descriptor h : { eh_[e], opposite(eh_[e], tm_) })
-        if(!is_border(h, tm_)) fdata_[static_cast<std::size_t>(get(fid_, face(h, tm_)))].valid = false;
+      invalidate_faces(e);
       a = b;
     }
     // chords: u to the first crossing (in the face before it), between consecutive crossings (in the
@@ -746,15 +749,7 @@ private:
       for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f1, tm_), tm_)) if(source(h, tm_) == v) g = h;
       node_curves_[std::make_pair(v, curve)] = std::make_pair(g, gs.back().id);
     }
-    if(curve_crossings_.size() <= static_cast<std::size_t>(curve))
-    {
-      curve_crossings_.resize(static_cast<std::size_t>(curve) + 1);
-      curve_ends_.resize(static_cast<std::size_t>(curve) + 1);
-      curve_edge_.resize(static_cast<std::size_t>(curve) + 1, -1);
-    }
-    curve_ends_[static_cast<std::size_t>(curve)] = std::make_pair(u, v);
-    curve_edge_[static_cast<std::size_t>(curve)] = -1;
-    curve_crossings_[static_cast<std::size_t>(curve)].clear();
+    record_curve(curve, u, v, -1);
     for(const G& g : gs) curve_crossings_[static_cast<std::size_t>(curve)].push_back(g.id);
     live_ += gs.size();
   }

@@ -1159,44 +1159,66 @@ struct Counting_solver : CGAL::Eigen_solver_traits<Eigen::SimplicialLLT<CGAL::Ei
 };
 
 #ifdef CGAL_PROGRESSIVE_EMBEDDING_CHOLMOD_ENABLED
-// How CHOLMOD runs (internal/cholmod_runtime.h), after a CHOLMOD solve: SuiteSparse's memory functions are the
-// package's; they map large blocks 2 MB-aligned (zeroed by calloc, kept by realloc) and pass small ones and
-// foreign pointers to the C library; the dynamic OpenMP threads are on inside the guard and restored after.
-int test_cholmod_runtime()
+// How CHOLMOD runs (internal/cholmod_runtime.h), after a CHOLMOD solve: huge pages only on request
+// (PE_HUGE_PAGES=1, which test_solvers() sets before its first solve when `requested`); then SuiteSparse's memory
+// functions are the package's; they map large blocks 2 MB-aligned (zeroed by calloc, kept by realloc) and pass
+// small ones and foreign pointers to the C library; the dynamic OpenMP threads are on inside the guard and
+// restored after.
+int test_cholmod_runtime(bool requested)
 {
   namespace I = PE::internal;
+  ::setenv("PE_HUGE_PAGES", "0", 1);
+  CHECK(!I::huge_pages_requested(), "PE_HUGE_PAGES=0: not requested");
+  ::setenv("PE_HUGE_PAGES", "yes", 1);
+  CHECK(!I::huge_pages_requested(), "PE_HUGE_PAGES=yes: not requested (1 only)");
+  ::unsetenv("PE_HUGE_PAGES");
+  CHECK(!I::huge_pages_requested(), "unset: not requested (the default)");
+  ::setenv("PE_HUGE_PAGES", "1", 1);
+  CHECK(I::huge_pages_requested(), "PE_HUGE_PAGES=1: requested");
+  ::unsetenv("PE_HUGE_PAGES");
+  if(!requested)
+  {
 #if SUITESPARSE_MAIN_VERSION >= 7
-  CHECK(SuiteSparse_config_malloc_func_get() == &I::pe_cholmod_malloc, "the package's memory functions are set");
+    CHECK(SuiteSparse_config_malloc_func_get() == &std::malloc, "not requested: the C library's memory functions");
 #else
-  CHECK(SuiteSparse_config.malloc_func == &I::pe_cholmod_malloc && SuiteSparse_config.free_func == &I::pe_cholmod_free,
-        "the package's memory functions are set");
+    CHECK(SuiteSparse_config.malloc_func == &std::malloc, "not requested: the C library's memory functions");
 #endif
-  const std::size_t big = I::huge_block_minimum + 12345;
-  char* a = static_cast<char*>(I::pe_cholmod_malloc(big));
-  CHECK(a != nullptr && I::huge_block_length(a, false) >= big, "a large block is mapped");
-  CHECK(reinterpret_cast<std::uintptr_t>(a) % I::huge_page_size == 0, "2 MB-aligned");
-  for(std::size_t i = 0; i < big; i += 4096) a[i] = char(i / 4096);
-  a = static_cast<char*>(I::pe_cholmod_realloc(a, 2 * big));
-  CHECK(a != nullptr && I::huge_block_length(a, false) >= 2 * big, "grown");
-  bool kept = true;
-  for(std::size_t i = 0; i < big; i += 4096) kept = kept && a[i] == char(i / 4096);
-  CHECK(kept, "realloc keeps the content");
-  CHECK(I::pe_cholmod_realloc(a, 100) == a, "shrinking keeps the mapped block");
-  I::pe_cholmod_free(a);
-  CHECK(I::huge_block_length(a, false) == 0, "freed and forgotten");
-  double* z = static_cast<double*>(I::pe_cholmod_calloc(big / sizeof(double), sizeof(double)));
-  bool zero = z != nullptr;
-  for(std::size_t i = 0; zero && i < big / sizeof(double); i += 97) zero = z[i] == 0;
-  CHECK(zero, "calloc: zeroed");
-  I::pe_cholmod_free(z);
-  char* small = static_cast<char*>(I::pe_cholmod_malloc(1000));
-  CHECK(small != nullptr && I::huge_block_length(small, false) == 0, "a small block comes from malloc");
-  small = static_cast<char*>(I::pe_cholmod_realloc(small, big));
-  CHECK(small != nullptr && I::huge_block_length(small, false) == 0, "a malloc block grows with realloc");
-  I::pe_cholmod_free(small);
-  void* foreign = std::malloc(64);
-  I::pe_cholmod_free(foreign); // a pointer of malloc's, allocated before or without the package: free()
-  I::pe_cholmod_free(nullptr); // as free(nullptr): nothing
+  }
+  else
+  {
+#if SUITESPARSE_MAIN_VERSION >= 7
+    CHECK(SuiteSparse_config_malloc_func_get() == &I::pe_cholmod_malloc, "the package's memory functions are set");
+#else
+    CHECK(SuiteSparse_config.malloc_func == &I::pe_cholmod_malloc && SuiteSparse_config.free_func == &I::pe_cholmod_free,
+          "the package's memory functions are set");
+#endif
+    const std::size_t big = I::huge_block_minimum + 12345;
+    char* a = static_cast<char*>(I::pe_cholmod_malloc(big));
+    CHECK(a != nullptr && I::huge_block_length(a, false) >= big, "a large block is mapped");
+    CHECK(reinterpret_cast<std::uintptr_t>(a) % I::huge_page_size == 0, "2 MB-aligned");
+    for(std::size_t i = 0; i < big; i += 4096) a[i] = char(i / 4096);
+    a = static_cast<char*>(I::pe_cholmod_realloc(a, 2 * big));
+    CHECK(a != nullptr && I::huge_block_length(a, false) >= 2 * big, "grown");
+    bool kept = true;
+    for(std::size_t i = 0; i < big; i += 4096) kept = kept && a[i] == char(i / 4096);
+    CHECK(kept, "realloc keeps the content");
+    CHECK(I::pe_cholmod_realloc(a, 100) == a, "shrinking keeps the mapped block");
+    I::pe_cholmod_free(a);
+    CHECK(I::huge_block_length(a, false) == 0, "freed and forgotten");
+    double* z = static_cast<double*>(I::pe_cholmod_calloc(big / sizeof(double), sizeof(double)));
+    bool zero = z != nullptr;
+    for(std::size_t i = 0; zero && i < big / sizeof(double); i += 97) zero = z[i] == 0;
+    CHECK(zero, "calloc: zeroed");
+    I::pe_cholmod_free(z);
+    char* small = static_cast<char*>(I::pe_cholmod_malloc(1000));
+    CHECK(small != nullptr && I::huge_block_length(small, false) == 0, "a small block comes from malloc");
+    small = static_cast<char*>(I::pe_cholmod_realloc(small, big));
+    CHECK(small != nullptr && I::huge_block_length(small, false) == 0, "a malloc block grows with realloc");
+    I::pe_cholmod_free(small);
+    void* foreign = std::malloc(64);
+    I::pe_cholmod_free(foreign); // a pointer of malloc's, allocated before or without the package: free()
+    I::pe_cholmod_free(nullptr); // as free(nullptr): nothing
+  }
   typedef int (*Get)();
   const Get get = reinterpret_cast<Get>(::dlsym(RTLD_DEFAULT, "omp_get_dynamic"));
   if(get != nullptr)
@@ -1208,8 +1230,8 @@ int test_cholmod_runtime()
     }
     CHECK(get() == before, "the former setting after");
   }
-  std::cout << "  CHOLMOD runtime: memory functions and threads checked (OpenMP " << (get != nullptr ? "found" : "absent")
-            << ")" << std::endl;
+  std::cout << "  CHOLMOD runtime: huge pages " << (requested ? "requested" : "not requested")
+            << ", memory functions and threads checked (OpenMP " << (get != nullptr ? "found" : "absent") << ")" << std::endl;
   return EXIT_SUCCESS;
 }
 #endif
@@ -1225,6 +1247,11 @@ int test_solvers()
   const bool cholmod = true;
 #else
   const bool cholmod = false;
+#endif
+#ifdef CGAL_PROGRESSIVE_EMBEDDING_CHOLMOD_ENABLED
+  // huge pages requested before the process's first CHOLMOD solve on Surface_mesh, not on the other mesh type
+  const bool huge_pages = std::is_same<Mesh, Surface_mesh>::value;
+  if(huge_pages) ::setenv("PE_HUGE_PAGES", "1", 1); else ::unsetenv("PE_HUGE_PAGES");
 #endif
   std::cout << "[" << mesh_name<Mesh>() << "] built " << (cholmod ? "with" : "without") << " CHOLMOD; threshold "
             << threshold << " unknowns" << std::endl;
@@ -1276,7 +1303,7 @@ int test_solvers()
   CHECK(PE::check_embedding(m, uv_default).is_valid(), "certified");
 
 #ifdef CGAL_PROGRESSIVE_EMBEDDING_CHOLMOD_ENABLED
-  if(std::is_same<Mesh, Surface_mesh>::value) RUN(test_cholmod_runtime());
+  RUN(test_cholmod_runtime(huge_pages));
 #endif
 
   // the drop-in parameterizer with the user's solver (CGAL's SolverTraits_ template parameter)

@@ -301,7 +301,14 @@ std::string usage_text()
     "     a mesh that is empty, not triangular, not manifold, not a disk (thingi: not a closed genus-0\n"
     "     mesh), with non-finite coordinates or degenerate borders; constraints outside the mesh; a\n"
     "     valid map whose distortion is not finite (3D coordinates that overflow, zero-area 3D faces)\n"
-    "  4  output error: a file cannot be written (no partial file is left)\n";
+    "  4  output error: a file cannot be written (no partial file is left)\n"
+    "\n"
+    "environment:\n"
+    "  PE_HUGE_PAGES=1\n"
+    "        run on 2 MB transparent huge pages (glibc's malloc and CHOLMOD's large blocks): fewer page\n"
+    "        faults on meshes of a million vertices, faster or slower depending on the host (default: off)\n"
+    "  CGAL_DATA_DIR\n"
+    "        demo: the data folder when none is given\n";
   return u;
 }
 
@@ -593,18 +600,19 @@ std::string seconds_string(double s)
 
 namespace {
 
-// Large meshes touch gigabytes of fresh memory, page by page: on a virtual machine each 4 KB page
-// fault is expensive (on the 2-core VM of the benchmarks, a 1M-vertex Tutte map spent a third of its
-// time in them). glibc's malloc asks for 2 MB transparent huge pages (under Linux's default policy,
-// transparent_hugepage=madvise) only when its tunable glibc.malloc.hugetlb is 1, and it reads its
-// tunables once, at start: pe therefore starts itself again, once, with the tunable added to
-// GLIBC_TUNABLES. Not when the tunable is already set either way, nor when PE_NO_HUGE_PAGES is set,
-// nor under valgrind (its tools follow no exec by default), nor where /proc/self/exe cannot be run:
-// pe then simply goes on.
+// On request (PE_HUGE_PAGES=1), the whole process on transparent huge pages. Large meshes touch
+// gigabytes of fresh memory page by page, and on a virtual machine a fault may be expensive. glibc's
+// malloc asks for 2 MB pages (under Linux's default policy, transparent_hugepage=madvise) only when its
+// tunable glibc.malloc.hugetlb is 1, and it reads its tunables once, at start: pe therefore starts
+// itself again, once, with the tunable added to GLIBC_TUNABLES. Not when the tunable is already set
+// either way, nor under valgrind (its tools follow no exec by default), nor where /proc/self/exe
+// cannot be run: pe then simply goes on. Not by default: whether 2 MB pages are cheaper than 4 KB ones
+// depends on the host (internal/cholmod_runtime.h, benchmark/results/large_meshes_pe.md).
 void restart_with_huge_pages(char** argv)
 {
 #if defined(__linux__) && defined(__GLIBC__)
-  if(std::getenv("PE_NO_HUGE_PAGES") != nullptr) return;
+  const char* requested = std::getenv("PE_HUGE_PAGES");
+  if(requested == nullptr || std::strcmp(requested, "1") != 0) return;
   const char* preload = std::getenv("LD_PRELOAD");
   if(preload != nullptr && std::strstr(preload, "vgpreload") != nullptr) return;
   const char* tunables = std::getenv("GLIBC_TUNABLES");

@@ -9,6 +9,8 @@
 
 #include <CGAL/Progressive_embedding/constrained_embedding.h>
 #include <CGAL/Progressive_embedding/internal/constrained/coarsen.h>
+#include <CGAL/Progressive_embedding/internal/constrained/refinement.h>
+#include <CGAL/Progressive_embedding/internal/disk_generators.h>
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
 #include <CGAL/Progressive_embedding/check_embedding.h>
 
@@ -181,6 +183,80 @@ int pipeline_case(const std::string& file, std::size_t n, unsigned seed, bool ex
   return EXIT_SUCCESS;
 }
 
+// remove_added_vertices() tests a vertex again only when a star it depends on changed: on a grid disk refined by
+// 600 random edge splits (edges between added vertices among them), the added vertices then moved off their
+// edges where their star stays positive (so that some removals wait for others, or never come), the same
+// removals in the same order and the same passes as testing every vertex in every pass; the map certified after.
+int tracked_passes_case()
+{
+  typedef Surface_mesh Mesh;
+  typedef boost::graph_traits<Mesh>::vertex_descriptor VD;
+  typedef boost::graph_traits<Mesh>::halfedge_descriptor HD;
+  struct Added { VD v, a, b; };
+  Mesh m;
+  PE::internal::make_grid_disk(12, m);
+  auto uv = m.add_property_map<VD, Point_2>("v:test_uv").first;
+  auto vpm = get(CGAL::vertex_point, m);
+  for(VD v : vertices(m)) put(uv, v, Point_2(get(vpm, v).x(), get(vpm, v).y()));
+  const auto orient = PE::Progressive_embedding_traits_2<Epick>().exact_orientation_2_object();
+  const auto star_positive = [&](VD v) {
+    for(HD h : CGAL::halfedges_around_target(v, m))
+      if(!CGAL::is_border(h, m) &&
+         orient(get(uv, source(h, m)), get(uv, target(h, m)), get(uv, target(next(h, m), m))) != CGAL::LEFT_TURN)
+        return false;
+    return true;
+  };
+  std::mt19937 rng(7);
+  std::vector<Added> added;
+  for(int i = 0; i < 600; ++i)
+  {
+    std::vector<HD> interior;
+    for(auto e : edges(m)) if(!CGAL::is_border_edge(halfedge(e, m), m)) interior.push_back(halfedge(e, m));
+    const HD h = interior[std::uniform_int_distribution<std::size_t>(0, interior.size() - 1)(rng)];
+    const VD a = source(h, m), b = target(h, m);
+    const double t = std::uniform_real_distribution<double>(0.3, 0.7)(rng);
+    const Point_2 p = get(uv, a) + t * (get(uv, b) - get(uv, a));
+    const HD hn = PE::internal::split_edge_and_faces(h, Epick::Point_3(p.x(), p.y(), 0), m, vpm);
+    put(uv, target(hn, m), p);
+    added.push_back({ target(hn, m), a, b });
+  }
+  std::size_t moved = 0;
+  std::normal_distribution<double> N(0., 0.01);
+  for(const Added& s : added)
+  {
+    const Point_2 old = get(uv, s.v);
+    put(uv, s.v, Point_2(old.x() + N(rng), old.y() + N(rng)));
+    if(star_positive(s.v)) ++moved; else put(uv, s.v, old);
+  }
+  CHECK(PE::check_embedding(m, uv).is_valid(), "the refined map is certified");
+  typedef PE::internal::Vertex_removal<VD> Removal;
+  std::vector<Removal> removals[2];
+  std::size_t passes[2] = { 0, 0 };
+  for(int retest = 0; retest < 2; ++retest)
+  {
+    Mesh c = m; // the same vertex indices, the uv map copied with the mesh
+    auto cuv = c.property_map<VD, Point_2>("v:test_uv").first;
+    const auto test = [&](VD v, VD a, std::vector<VD>& link) {
+      return !c.is_removed(v) && !c.is_removed(a) && PE::internal::can_remove_into(c, cuv, orient, CGAL::LEFT_TURN, v, a, link);
+    };
+    const auto remove = [&](VD v, VD a, const std::vector<VD>&) { return PE::internal::remove_into(c, v, a); };
+    std::vector<char> done;
+    CHECK(PE::internal::remove_added_vertices(added, c.number_of_vertices() + c.number_of_removed_vertices(), test, remove,
+                                              done, removals[retest], passes[retest], retest == 1) == PE::OK, "removals");
+    CHECK(PE::check_embedding(c, cuv).is_valid(), "certified after the removals");
+    CHECK(std::size_t(std::count(done.begin(), done.end(), 1)) == removals[retest].size(), "done marks the removed");
+  }
+  std::cout << "  600 splits, " << moved << " added vertices moved; " << removals[0].size() << " removed in " << passes[0]
+            << " passes (testing everything: " << removals[1].size() << " in " << passes[1] << ")" << std::endl;
+  CHECK(removals[0].size() == removals[1].size() && passes[0] == passes[1], "as many removals and passes");
+  for(std::size_t i = 0; i < removals[0].size() && i < removals[1].size(); ++i)
+    CHECK(removals[0][i].removed == removals[1][i].removed && removals[0][i].kept == removals[1][i].kept,
+          "the same removal at " << i);
+  CHECK(passes[0] >= 2 && !removals[0].empty() && removals[0].size() < added.size(),
+        "several passes, some vertices removed, some kept");
+  return EXIT_SUCCESS;
+}
+
 } // namespace
 
 PE_TEST_GROUP(coarsen_star)
@@ -188,6 +264,7 @@ PE_TEST_GROUP(coarsen_star)
   RUN(star_cases<Surface_mesh>());
   RUN(star_cases<Polyhedron>());
   RUN(replay_case());
+  RUN(tracked_passes_case());
   return EXIT_SUCCESS;
 }
 

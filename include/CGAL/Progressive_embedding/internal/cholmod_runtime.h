@@ -5,17 +5,20 @@
 #ifndef CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CHOLMOD_RUNTIME_H
 #define CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CHOLMOD_RUNTIME_H
 
-// How CHOLMOD runs inside the package: its large blocks on transparent huge pages, and its OpenMP
+// How CHOLMOD runs inside the package: its large blocks on transparent huge pages (on request), and its OpenMP
 // threads no more than the machine has free.
 //
-// Huge pages. Why: the supernodal factor of a 1M-unknown Tutte system is about a gigabyte that CHOLMOD allocates
-// and clears at once. Touched 4 KB page by 4 KB page, that memory costs a page fault per page, and on
-// a virtual machine a fault is expensive: on the 2-core VM of the benchmarks, the faults were a third
-// of the factorization's time (perf). Linux's default policy (transparent_hugepage=madvise) gives
-// 2 MB pages only to memory marked with madvise(MADV_HUGEPAGE), which glibc's malloc does not do by
-// default. SuiteSparse lets its user choose its memory functions (SuiteSparse_config); the package
+// Huge pages, on request only (PE_HUGE_PAGES=1 in the environment). Why they may help: the supernodal
+// factor of a 1M-unknown Tutte system is about a gigabyte that CHOLMOD allocates and clears at once.
+// Touched 4 KB page by 4 KB page, that memory costs a page fault per page, and on a virtual machine a
+// fault may be expensive. Linux's default policy (transparent_hugepage=madvise) gives 2 MB pages only
+// to memory marked with madvise(MADV_HUGEPAGE), which glibc's malloc does not do by default.
+// SuiteSparse lets its user choose its memory functions (SuiteSparse_config); on request the package
 // sets them, once, to functions that map blocks of `huge_block_minimum` bytes or more themselves,
 // 2 MB-aligned and marked, and pass every other request to malloc.
+// Why not by default: what they save depends on the host; the same virtual machine made the 1M-vertex
+// `pe embed` faster with them on one day and twice as slow on another (the manual's "The Linear Solver
+// and Large Meshes", benchmark/results/large_meshes_pe.md). Without them the worse case is the milder one.
 //
 // Only when the functions in place are still the C library's (a program that chose its own keeps
 // them). A block is freed by the function that allocated it: the mapped blocks are registered, and a
@@ -59,6 +62,13 @@ namespace Progressive_embedding {
 namespace internal {
 
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
+
+// PE_HUGE_PAGES=1: large blocks on transparent huge pages (see above); read at each call
+inline bool huge_pages_requested()
+{
+  const char* v = std::getenv("PE_HUGE_PAGES");
+  return v != nullptr && std::strcmp(v, "1") == 0;
+}
 
 constexpr std::size_t huge_page_size = std::size_t(2) << 20;
 constexpr std::size_t huge_block_minimum = std::size_t(8) << 20;
@@ -145,12 +155,13 @@ inline void* pe_cholmod_realloc(void* p, std::size_t n)
   return q;
 }
 
-// Sets SuiteSparse's memory functions to the ones above, once per process, if they are still the
-// C library's.
+// Sets SuiteSparse's memory functions to the ones above, once per process (the first call decides),
+// if huge pages are requested and the functions are still the C library's.
 inline void use_huge_pages_for_cholmod()
 {
   static std::once_flag once;
   std::call_once(once, []() {
+    if(!huge_pages_requested()) return;
 #if SUITESPARSE_MAIN_VERSION >= 7
     if(SuiteSparse_config_malloc_func_get() != &std::malloc || SuiteSparse_config_calloc_func_get() != &std::calloc ||
        SuiteSparse_config_realloc_func_get() != &std::realloc || SuiteSparse_config_free_func_get() != &std::free)
@@ -173,6 +184,7 @@ inline void use_huge_pages_for_cholmod()
 
 #else
 
+inline bool huge_pages_requested() { return false; }
 inline void use_huge_pages_for_cholmod() { }
 
 #endif

@@ -123,6 +123,59 @@ Error_code remove_into(TM& tm, typename boost::graph_traits<TM>::vertex_descript
   return OK;
 }
 
+// The removals of a coarsening: passes over the added vertices `added` (members v, a, b: the vertex and
+// the ends of the edge it split), latest first (they split edges between earlier vertices), repeated
+// while a pass removes something (a removal can free an earlier refusal). `test(v, a, link)`: whether v
+// can go into a (can_remove_into(), which fills v's link from a); `remove(v, a, link)`: removes it,
+// returning OK. Appends each removal to `removals` and sets done[k] for it.
+// A test of v into a reads the stars of v and a only (the link, the link condition, the fan faces;
+// nothing moves), and a removal changes the stars of the removed vertex's link, the kept end among them.
+// So a vertex is tested again only when the star of it or of an end of its edge changed since its last
+// test: the same removals in the same order as testing every vertex in every pass (`retest_all`, kept
+// for the tests), without the passes' repeated tests (diplodocus with 200 random targets: 688,500 added
+// vertices, 15.9 s of coarsening before). Vertex descriptors convert to indices below `vertex_slots`
+// (Surface_mesh). `passes`: the passes made.
+template <class Added, class Vertex, class Test, class Remove>
+Error_code remove_added_vertices(const std::vector<Added>& added, std::size_t vertex_slots, const Test& test,
+                                 const Remove& remove, std::vector<char>& done,
+                                 std::vector<Vertex_removal<Vertex> >& removals, std::size_t& passes,
+                                 bool retest_all = false)
+{
+  std::vector<Vertex> link;
+  std::vector<std::size_t> changed(vertex_slots, 0);               // per vertex: removals when its star last changed
+  std::vector<std::size_t> tested(added.size(), std::size_t(-1));  // per added vertex: removals at its last test
+  done.resize(added.size(), 0);
+  passes = 0;
+  for(std::size_t pass = 0; pass < added.size(); ++pass) // each pass but the last removes a vertex
+  {
+    ++passes;
+    std::size_t removed = 0;
+    for(std::size_t k = added.size(); k-- > 0;)
+    {
+      if(done[k]) continue;
+      const auto& sv = added[k];
+      const std::size_t last = tested[k];
+      if(!retest_all && last != std::size_t(-1) && changed[std::size_t(sv.v)] <= last &&
+         changed[std::size_t(sv.a)] <= last && changed[std::size_t(sv.b)] <= last)
+        continue;
+      tested[k] = removals.size();
+      for(const Vertex a : { sv.a, sv.b })
+      {
+        if(!test(sv.v, a, link)) continue;
+        const Error_code ec = remove(sv.v, a, link);
+        if(ec != OK) return ec;
+        removals.push_back({ sv.v, a });
+        for(const Vertex x : link) changed[std::size_t(x)] = removals.size(); // link[0] is a
+        done[k] = 1;
+        ++removed;
+        break;
+      }
+    }
+    if(removed == 0) break;
+  }
+  return OK;
+}
+
 // Replays removals recorded on a copy onto tm, through the vertex correspondence
 template <class TM, class CopyVertex, class VertexMap>
 Error_code replay_removals(const std::vector<Vertex_removal<CopyVertex> >& removals, TM& tm, const VertexMap& copy_to_mesh)

@@ -831,16 +831,15 @@ public:
         // would add as many vertices as the best so far (benchmark/results/constrained_design_measurements.md)
         if(!holes && !immersed && !non_convex && !targets.empty() && remaining() > 0 && kinetic)
         {
-          // under a time budget, the simulations get a quarter of what is left and the tracing on the mesh a
-          // quarter of what they leave: the tracings after it keep the rest (measured: 100 random targets on a
-          // 17.5k-vertex disk, certified in 78 s of 120 without it, ran out with all of it; with 200 targets the
-          // simulations take seconds)
+          // under a time budget, the simulations and then the tracing on the mesh get their shares of what
+          // is left (tracer_budgets.h): the tracings after it keep the rest
           work = before_tracing;
           wvpm = get(CGAL::vertex_point, work);
           std::vector<Kinetic_candidate> candidates;
-          ec = kinetic_candidates(candidates, 0.25 * remaining());
+          ec = kinetic_candidates(candidates, internal::kinetic_simulation_time_share * remaining());
           stats.kinetic_tracing = true;
-          const double kinetic_end = std::isfinite(remaining()) ? timer.time() + 0.25 * remaining() : remaining();
+          const double kinetic_end = std::isfinite(remaining())
+                                   ? timer.time() + internal::kinetic_tracing_time_share * remaining() : remaining();
           for(std::size_t m = 0; m < (std::min)(candidates.size(), internal::kinetic_traced_motions); ++m)
           {
             const Kinetic_candidate& c = candidates[m];
@@ -1268,37 +1267,27 @@ public:
         if(reoptimize && !(held[std::size_t(a)] && held[std::size_t(x)] && held[std::size_t(y)])) return true;
         return fan_energy.energy(a, x, y) <= worst;
       };
-      std::vector<wvertex> link;
-      std::vector<char> done(steiner.size(), 0);
-      // latest first (they split edges between earlier vertices); a removal can free an earlier
-      // refusal, so the passes repeat while they remove something (each removes at least one vertex)
-      for(std::size_t pass = 0; pass < steiner.size(); ++pass)
-      {
-        std::size_t removed = 0;
-        for(std::size_t k = steiner.size(); k-- > 0;)
-        {
-          const auto& sv = steiner[k];
-          if(done[k] || work.is_removed(sv.v) || CGAL::is_border(sv.v, work)) continue;
-          for(wvertex a : { sv.a, sv.b })
-          {
-            if(work.is_removed(a) || !internal::can_remove_into(work, wuv, orient, positive, sv.v, a, link, accept)) continue;
-            // each fan face (a, x, y) takes the patch of the face (s, x, y) it replaces
-            std::vector<std::size_t> fan_labels;
-            for(std::size_t j = 1; j + 1 < link.size(); ++j)
-              fan_labels.push_back(get(fpatch, face(halfedge(link[j], link[j + 1], work).first, work)));
-            if(internal::remove_into(work, sv.v, a) != OK) return ERROR_INVALID_EMBEDDING; // cannot happen
-            for(std::size_t j = 1; j + 1 < link.size(); ++j)
-              put(fpatch, face(halfedge(link[j], link[j + 1], work).first, work), fan_labels[j - 1]);
-            removals.push_back({ sv.v, a });
-            done[k] = 1;
-            ++removed;
-            break;
-          }
-        }
-        if(removed == 0) break;
-      }
+      std::vector<char> done;
+      std::size_t passes = 0;
+      const auto test = [&](wvertex v, wvertex a, std::vector<wvertex>& link) {
+        return !work.is_removed(v) && !CGAL::is_border(v, work) && !work.is_removed(a) &&
+               internal::can_remove_into(work, wuv, orient, positive, v, a, link, accept);
+      };
+      const auto remove = [&](wvertex v, wvertex a, const std::vector<wvertex>& link) {
+        // each fan face (a, x, y) takes the patch of the face (v, x, y) it replaces
+        std::vector<std::size_t> fan_labels;
+        for(std::size_t j = 1; j + 1 < link.size(); ++j)
+          fan_labels.push_back(get(fpatch, face(halfedge(link[j], link[j + 1], work).first, work)));
+        if(internal::remove_into(work, v, a) != OK) return ERROR_INVALID_EMBEDDING; // cannot happen
+        for(std::size_t j = 1; j + 1 < link.size(); ++j)
+          put(fpatch, face(halfedge(link[j], link[j + 1], work).first, work), fan_labels[j - 1]);
+        return OK;
+      };
+      const Error_code rec = internal::remove_added_vertices(steiner, held.size(), test, remove, done, removals, passes);
+      if(rec != OK) return rec;
       stats.steiner_vertices_removed = removals.size();
       // the vertices kept only by the distortion bound: removable with every fan face positive
+      std::vector<wvertex> link;
       for(std::size_t k = 0; k < steiner.size(); ++k)
       {
         const auto& sv = steiner[k];
@@ -1315,7 +1304,8 @@ public:
       stats.seconds_coarsening = timer.time() - t_coarsen;
       if(verbose)
         std::cerr << "[constrained_embedding] coarsening: " << removals.size() << " of " << steiner.size()
-                  << " added vertices removed, " << stats.seconds_coarsening << " s; " << stats.report.summary() << std::endl;
+                  << " added vertices removed in " << passes << " passes, " << stats.seconds_coarsening << " s; "
+                  << stats.report.summary() << std::endl;
       if(!stats.report.is_valid()) return ERROR_INVALID_EMBEDDING;
       // the fans are shaped by the removal only: the optimization runs again on the coarser mesh, with
       // what is left of its budget (it starts near its optimum: the faces away from the fans are optimized)

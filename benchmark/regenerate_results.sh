@@ -95,7 +95,7 @@ if [ "$constrained" = 1 ]; then
       --meshes man.off,diplodocus.off --seeds 2 --counts 100,200 --targets random --optimize-seeds 0 --budget 120 $k || true
   done
   # the default pe constrain command (optimization included) with 50 random constraints, as a user runs it
-  python3 "$repo/benchmark/constrained_default_command.py" "$build" --optimize-time 5 --out "$results/constrained_default_command"
+  python3 "$repo/benchmark/constrained_default_command.py" "$build" --optimize-time 30 --out "$results/constrained_default_command"
   "$build/bin/constrained_benchmark" "$build/cgal_data/data" "$results/constrained_embedding_optimized" \
     --meshes retinal.off,dino.off,homer.off,mushroom.off,lion-head.off --seeds 1 --counts 3,10 --targets layout \
     --optimize-seeds 1 --budget 120 || true

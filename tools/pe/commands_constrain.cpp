@@ -77,7 +77,7 @@ int cmd_constrain(const Arguments& a)
 
   const Budget budget(a);
   // the optimization of a heavily refined map can run for a long time: it gets a budget of its own
-  const double optimize_seconds = a.real("--optimize-time", 30.);
+  const double optimize_seconds = a.real("--optimize-time", default_constrain_optimize_seconds);
   PE::Constrained_embedding_statistics st;
   Picture picture;
   picture.has_patches = true;

@@ -87,6 +87,7 @@ struct Option_spec
 
 const double max_unsigned = double(std::numeric_limits<unsigned>::max());
 
+static_assert(default_constrain_optimize_seconds == 5., "--optimize-time's help gives the default");
 const Option_spec option_table[] = {
   { "--json", Kind::FLAG, "", "print one JSON object instead of the summary line" },
   { "--border", Kind::CHOICE, "fixed|circle|square|triangle",
@@ -117,7 +118,7 @@ const Option_spec option_table[] = {
     "each mesh (default 600), whose process is killed then (status timeout)",
     0, 1e9 },
   { "--optimize-time", Kind::REAL, "SECONDS",
-    "constrain: seconds the optimization may take; it stops there with its certified map (default 30)", 0, 1e9 },
+    "constrain: seconds the optimization may take; it stops there with its certified map (default 5)", 0, 1e9 },
   { "--no-progress", Kind::FLAG, "", "no progress bar (it is drawn on terminals only, for runs over a second)" },
   { "--no-optimize", Kind::FLAG, "", "repair only: skip the distortion optimization" },
   { "--optimize", Kind::FLAG, "", "optimize the distortion after repairing (the default)" },

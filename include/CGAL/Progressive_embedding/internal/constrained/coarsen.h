@@ -25,6 +25,7 @@
 
 #include <CGAL/Progressive_embedding/Error_code.h>
 
+#include <CGAL/assertions.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -127,7 +128,7 @@ Error_code remove_into(TM& tm, typename boost::graph_traits<TM>::vertex_descript
 // the ends of the edge it split), latest first (they split edges between earlier vertices), repeated
 // while a pass removes something (a removal can free an earlier refusal). `test(v, a, link)`: whether v
 // can go into a (can_remove_into(), which fills v's link from a); `remove(v, a, link)`: removes it,
-// returning OK. Appends each removal to `removals` and sets done[k] for it.
+// returning OK. Appends each removal to `removals`; done[k]: whether added[k] was removed.
 // A test of v into a reads the stars of v and a only (the link, the link condition, the fan faces;
 // nothing moves), and a removal changes the stars of the removed vertex's link, the kept end among them.
 // So a vertex is tested again only when the star of it or of an end of its edge changed since its last
@@ -144,7 +145,7 @@ Error_code remove_added_vertices(const std::vector<Added>& added, std::size_t ve
   std::vector<Vertex> link;
   std::vector<std::size_t> changed(vertex_slots, 0);               // per vertex: removals when its star last changed
   std::vector<std::size_t> tested(added.size(), std::size_t(-1));  // per added vertex: removals at its last test
-  done.resize(added.size(), 0);
+  done.assign(added.size(), 0);
   passes = 0;
   for(std::size_t pass = 0; pass < added.size(); ++pass) // each pass but the last removes a vertex
   {
@@ -154,6 +155,7 @@ Error_code remove_added_vertices(const std::vector<Added>& added, std::size_t ve
     {
       if(done[k]) continue;
       const auto& sv = added[k];
+      CGAL_assertion(std::size_t(sv.v) < vertex_slots && std::size_t(sv.a) < vertex_slots && std::size_t(sv.b) < vertex_slots);
       const std::size_t last = tested[k];
       if(!retest_all && last != std::size_t(-1) && changed[std::size_t(sv.v)] <= last &&
          changed[std::size_t(sv.a)] <= last && changed[std::size_t(sv.b)] <= last)

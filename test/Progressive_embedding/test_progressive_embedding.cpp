@@ -654,6 +654,23 @@ int test_scale()
   return EXIT_SUCCESS;
 }
 
+// the same certificate, field by field (bit for bit in the measures)
+inline bool same_report(const PE::Embedding_report& a, const PE::Embedding_report& b)
+{
+  const PE::Distortion_report& da = a.distortion, & db = b.distortion;
+  return a.summary() == b.summary() && a.status == b.status && a.faces == b.faces && a.vertices == b.vertices
+      && a.border_vertices == b.border_vertices && a.flipped == b.flipped && a.degenerate == b.degenerate
+      && a.border_simple == b.border_simple && a.overlap_checked == b.overlap_checked
+      && a.overlapping_pairs == b.overlapping_pairs && a.min_signed_area == b.min_signed_area
+      && a.max_signed_area == b.max_signed_area && a.border_area == b.border_area && a.max_energy_3d == b.max_energy_3d
+      && a.mean_energy_3d == b.mean_energy_3d && a.max_energy_equilateral == b.max_energy_equilateral
+      && a.mean_energy_equilateral == b.mean_energy_equilateral && a.high_energy_faces == b.high_energy_faces
+      && a.has_3d_energy == b.has_3d_energy && da.faces == db.faces
+      && da.mean_symmetric_dirichlet == db.mean_symmetric_dirichlet && da.max_symmetric_dirichlet == db.max_symmetric_dirichlet
+      && da.symmetric_dirichlet_quantiles == db.symmetric_dirichlet_quantiles && da.mean_conformal == db.mean_conformal
+      && da.max_conformal == db.max_conformal && da.mean_area == db.mean_area && da.max_area == db.max_area;
+}
+
 // repair_and_optimize() and parameterize_certified() on the broken double Tutte map of the stacked
 // triangulation (depth 40) and on a valid grid map: which stages run under each policy, the certificates,
 // the border kept, the statistics listed once each, the budget and the errors
@@ -683,7 +700,8 @@ int test_pipeline()
               << ", optimized " << ps.optimized << ", " << ps.report.summary() << std::endl;
     CHECK(ec == PE::OK && !ps.input_report.is_valid() && ps.repaired && ps.repair.collapses > 0, "the broken map is repaired");
     CHECK(ps.optimized == (policy != Policy::NEVER), "optimized as the policy says");
-    CHECK(ps.report.is_valid() && PE::check_embedding(m, uv).is_valid(), "certified, and the map left in uv is");
+    CHECK(ps.report.is_valid() && same_report(ps.report, PE::check_embedding(m, uv)),
+          "certified, and the report is the certificate of the map left in uv (pe writes the map with it)");
     for(auto v : vertices(m))
       if(CGAL::is_border(v, m)) CHECK(get(uv, v) == before[v], "border bit-exact");
     if(ps.optimized)
@@ -705,8 +723,8 @@ int test_pipeline()
     std::map<vertex_descriptor<Mesh>, Epick::Point_2> before;
     for(auto v : vertices(g)) before[v] = get(uvg, v);
     PE::Pipeline_statistics ps;
-    CHECK(PE::repair_and_optimize(g, uvg, PE::parameters::pipeline_statistics(&ps)) == PE::OK && !ps.repaired && !ps.optimized,
-          "a valid map is neither repaired nor optimized by default");
+    CHECK(PE::repair_and_optimize(g, uvg, PE::parameters::pipeline_statistics(&ps)) == PE::OK && !ps.repaired && !ps.optimized
+          && same_report(ps.report, PE::check_embedding(g, uvg)), "a valid map is neither repaired nor optimized by default");
     bool same = true;
     for(auto v : vertices(g)) same = same && get(uvg, v) == before[v];
     CHECK(same, "and left bit-exactly as it was");
@@ -728,6 +746,7 @@ int test_pipeline()
       CHECK(ec == PE::OK && !ps.input_report.is_valid() && ps.repaired && ps.optimized && ps.report.is_valid()
             && ps.seconds_tutte > 0 && ps.seconds_total >= ps.seconds_tutte, "parameterize_certified: Tutte, repair, optimization");
       CHECK(PE::internal::indexing_count() == 1, "parameterize_certified indexes the mesh once, not " << PE::internal::indexing_count());
+      CHECK(same_report(ps.report, PE::check_embedding(m, uv)), "parameterize_certified: the certificate of the map left in uv");
       auto uv2 = make_uv_map(m, Epick::Point_2());
       pin_corners<Epick>(uv2, c);
       CHECK(PE::tutte_embedding(m, bh, uv2, PE::parameters::border_shape(PE::Border_shape::FIXED)) == PE::OK

@@ -26,6 +26,14 @@ Map_certificate certify(const Input& in)
   return c;
 }
 
+Map_certificate certified_in_place(const Input& in, const PE::Embedding_report& report)
+{
+  Map_certificate c;
+  c.report = report;
+  c.of = &in;
+  return c;
+}
+
 void add_report(Result& r, const PE::Embedding_report& rep, const std::string& prefix)
 {
   r.add(prefix + "valid", rep.is_valid());

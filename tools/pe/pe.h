@@ -102,6 +102,9 @@ struct Map_certificate
   const Input* of = nullptr; // the input certified
 };
 Map_certificate certify(const Input& in);
+// The certificate a library call took of the map it leaves in in.uv, on in.mesh itself (documented so:
+// Pipeline_statistics::report), taken over instead of checking the same map twice.
+Map_certificate certified_in_place(const Input& in, const PE::Embedding_report& report);
 // the certificate's fields into the result; `prefix` distinguishes several maps ("tutte_")
 void add_report(Result& r, const PE::Embedding_report& rep, const std::string& prefix = std::string());
 // one line: `valid: faces 10, flipped 0, ...`; non-finite measures printed as inf or nan

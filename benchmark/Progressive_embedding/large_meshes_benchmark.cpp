@@ -5,7 +5,8 @@
 // Benchmark driver (not run by ctest): the stages of `pe embed --no-optimize` on large disks, with the
 // sparse solver of the Tutte map chosen among
 //   default      what tutte_embedding() does without a solver: Eigen's LDLT below internal::cholmod_minimum_unknowns
-//                unknowns, CHOLMOD from there on when built with it, both on a matrix built in place
+//                unknowns, from internal::multigrid_minimum_unknowns on conjugate gradients with the multigrid
+//                preconditioner (the direct solvers if they do not converge), on a matrix built in place
 //   ldlt_amd     Eigen::SimplicialLDLT, approximate minimum degree ordering, given as CGAL solver traits (through
 //                CGAL::Eigen_sparse_matrix: the package's default path before the solver was chosen by size)
 //   llt_amd      Eigen::SimplicialLLT, approximate minimum degree ordering
@@ -15,6 +16,8 @@
 //                best of AMD, METIS and CHOLMOD's nested dissection
 //   cg_ichol     conjugate gradients, incomplete Cholesky preconditioner, relative residual 1e-10
 //   cg_jacobi    conjugate gradients, diagonal preconditioner, relative residual 1e-10
+//   cg_amg       conjugate gradients, Smoothed_aggregation_preconditioner (algebraic multigrid V-cycle),
+//                relative residual 1e-10
 // Cases: `grid:N` (the N x N grid disk of `pe generate grid`) or a mesh file. Stages, each timed alone
 // (wall clock): make (generate or read), tutte (tutte_embedding() with the solver, circle border, uniform
 // weights), certificate (check_embedding()), repair (progressive_embedding() when the map is not valid),
@@ -34,6 +37,7 @@
 #include <CGAL/Progressive_embedding/IO/OBJ_with_uv.h>
 #include <CGAL/Progressive_embedding/IO/read_polygon_mesh.h>
 #include <CGAL/Progressive_embedding/internal/disk_generators.h>
+#include <CGAL/Progressive_embedding/Smoothed_aggregation_preconditioner.h>
 #include "process_memory.h"
 #include "table_util.h"
 
@@ -128,6 +132,9 @@ PE::Error_code run_solver(const std::string& solver, Mesh& m, Mesh::Property_map
     return tutte_with(m, uv, limit, cg_traits<Eigen::ConjugateGradient<Sparse, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double> > >());
   if(solver == "cg_jacobi")
     return tutte_with(m, uv, limit, cg_traits<Eigen::ConjugateGradient<Sparse, Eigen::Lower | Eigen::Upper> >());
+  if(solver == "cg_amg")
+    return tutte_with(m, uv, limit,
+                      cg_traits<Eigen::ConjugateGradient<Sparse, Eigen::Lower | Eigen::Upper, PE::Smoothed_aggregation_preconditioner<double> > >());
   return PE::ERROR_WRONG_PARAMETER;
 }
 
@@ -226,7 +233,7 @@ int main(int argc, char** argv)
     return 1;
   }
   const std::string prefix = argv[1];
-  std::string cases = "grid:128,grid:256,grid:512,grid:1024", solvers = "default,ldlt_amd,llt_amd,cg_ichol,cg_jacobi", write_dir;
+  std::string cases = "grid:128,grid:256,grid:512,grid:1024", solvers = "default,ldlt_amd,llt_amd,cg_ichol,cg_jacobi,cg_amg", write_dir;
 #ifdef PE_HAS_METIS
   solvers += ",ldlt_metis";
 #endif

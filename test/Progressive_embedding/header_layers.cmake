@@ -1,13 +1,15 @@
 # The package's headers in layers: a public algorithm header may include anything; a header of
 # internal/ (the building blocks and the bodies of the algorithms) and a leaf (the public types:
-# error codes, named parameters, traits, reports and statistics) include only leaves and internal/.
+# error codes, named parameters, traits, reports and statistics, the multigrid preconditioner) include only
+# leaves and internal/.
 # So a pipeline inside internal/ calls the bodies (internal::check_embedding_impl(), ...) and never climbs
 # back to a public algorithm header. Fails on every include that goes up, naming it.
 #   cmake -DHEADER_ROOT=.../include -P header_layers.cmake
 set(pe ${HEADER_ROOT}/CGAL/Progressive_embedding)
 set(leaves Error_code.h parameters.h Progressive_embedding_traits_2.h Distortion_report.h Embedding_report.h
            Immersion_report.h Polygon_triangulation_report.h Optimization_statistics.h
-           Progressive_embedding_statistics.h Constrained_embedding_statistics.h)
+           Progressive_embedding_statistics.h Constrained_embedding_statistics.h
+           Smoothed_aggregation_preconditioner.h)
 file(GLOB_RECURSE internal_headers ${pe}/internal/*.h)
 set(leaf_headers "")
 foreach(l ${leaves})

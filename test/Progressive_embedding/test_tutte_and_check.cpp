@@ -18,6 +18,7 @@
 #include <CGAL/Progressive_embedding/internal/disk_generators.h>
 #include <CGAL/Progressive_embedding/internal/tutte_failure_protocol.h>
 #include <CGAL/Progressive_embedding/Progressive_embedding_parameterizer_3.h>
+#include <CGAL/Progressive_embedding/Smoothed_aggregation_preconditioner.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
 #include "test_util.h"
@@ -1251,9 +1252,71 @@ int test_cholmod_runtime(bool requested)
 }
 #endif
 
-// The solvers of the double Tutte system: the default one by size (CHOLMOD's supernodal Cholesky from
-// cholmod_minimum_unknowns unknowns when built with it, Eigen's LDLT otherwise), the same map as the LDLT's up
-// to rounding; a user's solver through `sparse_linear_solver` and through the parameterizer's SolverTraits_.
+// Smoothed_aggregation_preconditioner on the 5-point Laplacian of a 150 x 150 grid (Dirichlet border): its levels,
+// a symmetric positive definite V-cycle (the conjugate gradients need one), the same bits from two setups, far
+// fewer iterations than the diagonal preconditioner, and a matrix it refuses
+int test_multigrid_preconditioner()
+{
+  typedef Eigen::SparseMatrix<double> Sparse;
+  const int k = 150, n = k * k;
+  std::vector<Eigen::Triplet<double> > t;
+  for(int i = 0; i < k; ++i)
+    for(int j = 0; j < k; ++j)
+    {
+      const int r = i * k + j;
+      t.emplace_back(r, r, 4.);
+      if(i > 0) t.emplace_back(r, r - k, -1.);
+      if(i + 1 < k) t.emplace_back(r, r + k, -1.);
+      if(j > 0) t.emplace_back(r, r - 1, -1.);
+      if(j + 1 < k) t.emplace_back(r, r + 1, -1.);
+    }
+  Sparse A(n, n);
+  A.setFromTriplets(t.begin(), t.end());
+  PE::Smoothed_aggregation_preconditioner<double> M;
+  M.set_coarse_size(200);
+  M.compute(A);
+  std::cout << "[multigrid] " << n << " unknowns, " << M.number_of_levels() << " levels:";
+  for(std::size_t l = 0; l < M.number_of_levels(); ++l) std::cout << " " << M.level_size(l);
+  std::cout << std::endl;
+  CHECK(M.info() == Eigen::Success && M.number_of_levels() >= 3 && M.level_size(0) == n
+        && M.level_size(M.number_of_levels() - 1) <= 200, "levels down to the coarse size");
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unif(-1, 1);
+  auto random_vector = [&]() { Eigen::VectorXd x(n); for(int i = 0; i < n; ++i) x[i] = unif(rng); return x; };
+  for(int trial = 0; trial < 3; ++trial)
+  {
+    const Eigen::VectorXd x = random_vector(), y = random_vector();
+    const Eigen::VectorXd Mx = M.solve(x), My = M.solve(y);
+    const double xMy = x.dot(My), yMx = y.dot(Mx);
+    CHECK(std::abs(xMy - yMx) <= 1e-10 * (std::abs(xMy) + std::abs(yMx)) && x.dot(Mx) > 0, "symmetric positive definite: "
+          << xMy << " " << yMx << " " << x.dot(Mx));
+  }
+  PE::Smoothed_aggregation_preconditioner<double> again(A);
+  again.set_coarse_size(200);
+  again.compute(A);
+  const Eigen::VectorXd b = random_vector();
+  CHECK(M.solve(b) == again.solve(b), "two setups, the same bits");
+  Eigen::ConjugateGradient<Sparse, Eigen::Lower | Eigen::Upper, PE::Smoothed_aggregation_preconditioner<double> > amg;
+  Eigen::ConjugateGradient<Sparse, Eigen::Lower | Eigen::Upper> jacobi;
+  amg.setTolerance(1e-10);
+  jacobi.setTolerance(1e-10);
+  amg.compute(A);
+  jacobi.compute(A);
+  const Eigen::VectorXd xa = amg.solve(b), xj = jacobi.solve(b);
+  std::cout << "  CG iterations to 1e-10: " << amg.iterations() << " (multigrid), " << jacobi.iterations() << " (diagonal)"
+            << std::endl;
+  CHECK(amg.info() == Eigen::Success && (A * xa - b).norm() <= 1e-9 * b.norm(), "converged");
+  CHECK(amg.iterations() * 5 < jacobi.iterations(), "far fewer iterations than the diagonal preconditioner");
+  Sparse Z = A;
+  Z.coeffRef(17, 17) = 0;
+  PE::Smoothed_aggregation_preconditioner<double> refused(Z);
+  CHECK(refused.info() == Eigen::NumericalIssue, "a zero diagonal entry: NumericalIssue");
+  return EXIT_SUCCESS;
+}
+
+// The solvers of the double Tutte system: the default one by size (Eigen's LDLT below cholmod_minimum_unknowns
+// unknowns; above, the multigrid solve for a whole mesh's map, CHOLMOD's supernodal Cholesky for a patch's when
+// built with it), the same map as the LDLT's up to rounding; a user's solver through `sparse_linear_solver` and through the parameterizer's SolverTraits_.
 template <class Mesh>
 int test_solvers()
 {
@@ -1271,8 +1334,12 @@ int test_solvers()
 #endif
   std::cout << "[" << mesh_name<Mesh>() << "] built " << (cholmod ? "with" : "without") << " CHOLMOD; threshold "
             << threshold << " unknowns" << std::endl;
-  CHECK(!PE::internal::default_tutte_solver_is_cholmod(threshold - 1), "small systems: Eigen's LDLT");
-  CHECK(PE::internal::default_tutte_solver_is_cholmod(threshold) == cholmod, "large systems: CHOLMOD when built with it");
+  const std::size_t multigrid = PE::internal::multigrid_minimum_unknowns;
+  CHECK(!PE::internal::default_tutte_solver_is_cholmod(threshold - 1) && !PE::internal::default_tutte_solver_is_multigrid(threshold - 1)
+        && multigrid >= threshold, "small systems: Eigen's LDLT");
+  CHECK(PE::internal::default_tutte_solver_is_multigrid(multigrid) && !PE::internal::default_tutte_solver_is_cholmod(multigrid),
+        "a whole mesh's large system: the multigrid solve");
+  CHECK(PE::internal::default_tutte_solver_is_cholmod(threshold, false) == cholmod, "a patch's large system: CHOLMOD when built with it");
 
   // below the threshold: Eigen's LDLT on the matrix built in place, bit for bit the map of the same LDLT given as
   // CGAL solver traits (through CGAL::Eigen_sparse_matrix)
@@ -1292,7 +1359,7 @@ int test_solvers()
   Mesh m;
   PE::internal::make_grid_disk(320, m);
   const std::size_t unknowns = 318 * 318;
-  CHECK(unknowns >= threshold && PE::internal::default_tutte_solver_is_cholmod(unknowns) == cholmod, unknowns);
+  CHECK(unknowns >= multigrid && PE::internal::default_tutte_solver_is_multigrid(unknowns), unknowns);
   auto uv_default = make_uv_map(m, Epick::Point_2());
   auto uv_ldlt = make_uv_map(m, Epick::Point_2());
   auto uv_user = make_uv_map(m, Epick::Point_2());
@@ -1314,9 +1381,49 @@ int test_solvers()
   }
   std::cout << "  " << unknowns << " unknowns: default " << t_default << " s, LDLT " << t_ldlt << " s; largest distance "
             << std::sqrt(diff) << " (default), " << std::sqrt(diff_user) << " (LLT)" << std::endl;
-  CHECK(std::sqrt(diff) < 1e-9 && std::sqrt(diff_user) < 1e-9, "the same map up to rounding");
-  CHECK(cholmod || diff == 0, "without CHOLMOD the default is the LDLT, bit for bit");
+  CHECK(std::sqrt(diff) < 1e-9 && std::sqrt(diff_user) < 1e-9, "the same map up to rounding (the multigrid solve's tolerance)");
+  CHECK(diff > 0, "the multigrid solve, not the LDLT's bits");
   CHECK(PE::check_embedding(m, uv_default).is_valid(), "certified");
+
+  // the same system solved as a patch's (directly at every size): CHOLMOD when built with it, the LDLT's map up to
+  // rounding, bit for bit without CHOLMOD
+  {
+    PE::internal::Indexed_disk<Mesh> disk;
+    CHECK(PE::internal::make_indexed_disk(m, null_h<Mesh>(), disk) == PE::OK, "indexed");
+    std::vector<std::vector<std::pair<std::size_t, double> > > adj;
+    CHECK(PE::internal::tutte_weights(disk, get(CGAL::vertex_point, m), PE::Weights::UNIFORM, adj) == PE::OK, "weights");
+    std::vector<Epick::Point_2> pos(disk.number_of_vertices(), Epick::Point_2(0, 0));
+    for(std::size_t i = 0; i < pos.size(); ++i) if(disk.on_border[i]) pos[i] = get(uv_ldlt, disk.vertices[i]);
+    PE::internal::Tutte_system<double> S;
+    PE::internal::assemble_tutte_system(disk, adj, pos, S);
+    const std::vector<long> row = S.row;
+    PE::internal::Progress_budget budget;
+    std::vector<double> xu, xv;
+    CHECK(PE::internal::solve_symmetric_default(S, budget, xu, xv, false) == PE::OK, "solved as a patch's system");
+    double d = 0;
+    for(std::size_t i = 0; i < pos.size(); ++i)
+      if(row[i] >= 0)
+      {
+        const Epick::Point_2 q = get(uv_ldlt, disk.vertices[i]);
+        d = (std::max)(d, std::abs(xu[std::size_t(row[i])] - q.x()) + std::abs(xv[std::size_t(row[i])] - q.y()));
+      }
+    CHECK(d < 1e-9 && (cholmod || d == 0), "a patch's system: solved directly, " << d);
+  }
+
+  // conjugate gradients with the multigrid preconditioner as the user's solver: the LDLT's map up to the tolerance
+  {
+    typedef Eigen::ConjugateGradient<CGAL::Eigen_sparse_matrix<double>::EigenType, Eigen::Lower | Eigen::Upper,
+                                     PE::Smoothed_aggregation_preconditioner<double> > CG;
+    CGAL::Eigen_solver_traits<CG> amg;
+    amg.solver().setTolerance(1e-12);
+    auto uv_amg = make_uv_map(m, Epick::Point_2());
+    t.reset();
+    CHECK(PE::tutte_embedding(m, null_h<Mesh>(), uv_amg, circle.sparse_linear_solver(amg)) == PE::OK, "CG with multigrid");
+    double d = 0;
+    for(auto v : vertices(m)) d = (std::max)(d, CGAL::to_double(CGAL::squared_distance(get(uv_amg, v), get(uv_ldlt, v))));
+    std::cout << "  CG with multigrid, tolerance 1e-12: " << t.time() << " s, largest distance to the LDLT's map " << std::sqrt(d) << std::endl;
+    CHECK(std::sqrt(d) < 1e-9 && PE::check_embedding(m, uv_amg).is_valid(), "the LDLT's map up to the tolerance, certified");
+  }
 
 #ifdef CGAL_PROGRESSIVE_EMBEDDING_CHOLMOD_ENABLED
   RUN(test_cholmod_runtime(huge_pages));
@@ -1353,7 +1460,7 @@ int run_group(const std::string& group, const std::string& data)
   if(group == "traits") return test_traits<Mesh>();
   if(group == "helpers") return test_helpers<Mesh>();
   if(group == "named_parameters") return test_named_parameters<Mesh>();
-  if(group == "solvers") return test_solvers<Mesh>();
+  if(group == "solvers") { RUN(test_multigrid_preconditioner()); return test_solvers<Mesh>(); }
   if(group == "bad_inputs")
   {
     RUN(test_bad_inputs<Mesh>());

@@ -133,8 +133,8 @@ namespace Progressive_embedding {
 ///     \cgalParamType{a class model of `SparseLinearAlgebraWithFactorTraits_d`}
 ///     \cgalParamDefault{`CGAL::Eigen_solver_traits` over `Eigen::SimplicialLDLT` (double, uniform weights) or
 ///                      `Eigen::SparseLU` with COLAMD ordering (double, mean value weights); with uniform weights in
-///                      double and 100,000 interior vertices or more, CHOLMOD's supernodal Cholesky
-///                      (`Eigen::CholmodSupernodalLLT`) when the package is built with CHOLMOD (see the manual's
+///                      double and 100,000 interior vertices or more, conjugate gradients preconditioned by
+///                      `Smoothed_aggregation_preconditioner` to a relative residual of \f$10^{-10}\f$ (see the manual's
 ///                      section "The Linear Solver and Large Meshes"); with `CGAL::Gmpq`, the package's p-adic solve; with
 ///                      `CGAL::Gmpfr`, the package's iterative refinement; in other number types, the package's sparse
 ///                      elimination}

@@ -65,9 +65,11 @@ Error_code place_border(const Indexed_disk<TriangleMesh>& disk, VertexUVMap uvm,
 // Solves the system with the solver the named parameters give, or the default one for FT:
 // Eigen (LDLT or LU) in floating point, p-adic lifting for Gmpq, iterative refinement from a double
 // factorization for MPFR, the elimination in FT otherwise (and when those cannot conclude).
+// `multigrid`: the default double solver may be the multigrid one for a large system (see
+// default_tutte_solver_is_multigrid()); the patches of constrained maps always solve directly.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class FT, class NamedParameters>
 Error_code solve_tutte_system(Tutte_system<FT>& S, bool symmetric, const NamedParameters& np,
-                              Progress_budget& budget, std::vector<FT>& xu, std::vector<FT>& xv)
+                              Progress_budget& budget, std::vector<FT>& xu, std::vector<FT>& xv, bool multigrid = false)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -78,8 +80,8 @@ Error_code solve_tutte_system(Tutte_system<FT>& S, bool symmetric, const NamedPa
     return solve_with_solver_traits(S, choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver),
                                                         Default_solver()), budget, xu, xv);
   else if constexpr(std::is_same<FT, double>::value)
-    // symmetric: Eigen's LDLT, or CHOLMOD for large systems, on a matrix built in place
-    return symmetric ? solve_symmetric_default(S, budget, xu, xv) : solve_with_solver_traits(S, LU_solver(), budget, xu, xv);
+    // symmetric: Eigen's LDLT, or for large systems the multigrid solve or CHOLMOD, on a matrix built in place
+    return symmetric ? solve_symmetric_default(S, budget, xu, xv, multigrid) : solve_with_solver_traits(S, LU_solver(), budget, xu, xv);
   else if constexpr(std::is_floating_point<FT>::value)
     return symmetric ? solve_with_solver_traits(S, Default_solver(), budget, xu, xv)
                      : solve_with_solver_traits(S, LU_solver(), budget, xu, xv);
@@ -104,11 +106,11 @@ Error_code solve_tutte_system(Tutte_system<FT>& S, bool symmetric, const NamedPa
 // index); `pos` is written on the interior vertices only (the solution; on failure, (0, 0) or part
 // of the solution). `faces_to_release`: the faces of a disk that only this solve needs (those of
 // `disk` itself, at the caller's choice), released once the system is assembled, before the
-// factorization, whose peak they would add to (50 MB at 1M vertices).
+// factorization, whose peak they would add to (50 MB at 1M vertices). `multigrid`: as in solve_tutte_system().
 template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class VPM, class Point_2, class NamedParameters>
 Error_code tutte_interior(const Indexed_disk<TriangleMesh>& disk, VPM vpm, const NamedParameters& np,
                           Progress_budget& budget, std::vector<Point_2>& pos,
-                          std::vector<std::array<std::size_t, 3> >* faces_to_release = nullptr)
+                          std::vector<std::array<std::size_t, 3> >* faces_to_release = nullptr, bool multigrid = false)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -134,7 +136,7 @@ Error_code tutte_interior(const Indexed_disk<TriangleMesh>& disk, VPM vpm, const
     if(disk.on_border[i]) fixed.emplace_back(i, pos[i]);
   std::vector<Point_2>().swap(pos);
   std::vector<FT> xu, xv;
-  const Error_code status = solve_tutte_system<ConcurrencyTag>(S, wts == Weights::UNIFORM, np, budget, xu, xv);
+  const Error_code status = solve_tutte_system<ConcurrencyTag>(S, wts == Weights::UNIFORM, np, budget, xu, xv, multigrid);
   pos.assign(nv, Point_2(0, 0));
   for(const auto& f : fixed) pos[f.first] = f.second;
   if(status != OK) return status;
@@ -200,7 +202,8 @@ Error_code tutte_embedding_impl(const TriangleMesh& tm,
 
   internal::Progress_budget budget(callback, max_seconds);
   // the disk indexed here is not needed after the solve but for its vertices: its faces go before the factorization
-  status = internal::tutte_interior<ConcurrencyTag>(disk, vpm, np, budget, pos, given ? nullptr : &own.faces);
+  // a whole mesh's map, certified (and repaired) after: a large system may be solved by the multigrid solve
+  status = internal::tutte_interior<ConcurrencyTag>(disk, vpm, np, budget, pos, given ? nullptr : &own.faces, true);
   if(status != OK) return status;
 
   // written only now: on every error the uv map is left as it was

@@ -17,14 +17,15 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 "$build/bin/pe" generate grid 1024 "$work/grid1024.obj" > /dev/null
+available() { "$bench" --list-solvers | tr , '\n' | grep -qx "$1"; }
 solvers=default,ldlt_amd,llt_amd
 for s in cholmod ldlt_metis; do
-  if "$bench" --list-solvers | tr , '\n' | grep -qx $s; then solvers=$solvers,$s; fi
+  if available $s; then solvers=$solvers,$s; fi
 done
 "$bench" "$work/a" --cases grid:128,grid:256,grid:512,grid:1024 --solvers "$solvers" --repeat 3
 "$bench" "$work/b" --cases grid:128,grid:256,grid:512 --solvers cg_jacobi,cg_ichol,cg_amg --repeat 1
 big=default
-if "$bench" --list-solvers | tr , '\n' | grep -qx cholmod; then big=default,cholmod; fi
+if available cholmod; then big=default,cholmod; fi
 "$bench" "$work/c" --cases grid:2048 --solvers $big --repeat 1 --memory-limit-mb 20000
 mkdir -p "$work/out"
 # the file case as `pe` runs it by default (4 KB pages; huge pages only with PE_HUGE_PAGES=1)
@@ -33,7 +34,7 @@ unset PE_HUGE_PAGES
   --write-dir "$work/out"
 # CHOLMOD on Debian's reference BLAS and LAPACK (the alternatives that libsuitesparse-dev alone installs)
 ref=/usr/lib/x86_64-linux-gnu
-if [ -e $ref/blas/libblas.so.3 ] && [ -e $ref/lapack/liblapack.so.3 ] && [ "$big" = default,cholmod ]; then
+if [ -e $ref/blas/libblas.so.3 ] && [ -e $ref/lapack/liblapack.so.3 ] && available cholmod; then
   LD_LIBRARY_PATH=$ref/blas:$ref/lapack "$bench" "$work/e" --cases grid:512,grid:1024 --solvers cholmod --repeat 3
 fi
 

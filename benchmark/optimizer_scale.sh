@@ -14,6 +14,8 @@
 #
 # --time-limit: passed to `pe optimize` (a budget: the optimization stops there with its certified map, status
 # ERROR_BUDGET_EXHAUSTED); benchmark/results/optimizer_scale_budget.{csv,md} is the 1024 grid with 60 s.
+# pe's default budget for the optimization (--optimize-time, 60 s) stops the 1024 grid before the stopping rule;
+# the table of 2026-12-02 was measured before that default existed (no budget).
 # --table-only: runs nothing, writes OUT.md again from OUT.csv.
 #
 # BUILD_DIR holds bin/pe. Each size N: `pe generate grid N`, `pe random-init --seed 1`, `pe untangle

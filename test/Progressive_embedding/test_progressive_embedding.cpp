@@ -730,6 +730,13 @@ int test_pipeline()
     CHECK(same, "and left bit-exactly as it was");
     CHECK(PE::repair_and_optimize(g, uvg, PE::parameters::pipeline_statistics(&ps).optimization_policy(Policy::ALWAYS)) == PE::OK
           && !ps.repaired && ps.optimized && ps.report.is_valid(), "ALWAYS optimizes a valid map");
+    // the optimization's own budget: it stops at once with the certified map, and the call still succeeds
+    for(auto v : vertices(g)) put(uvg, v, before[v]);
+    CHECK(PE::repair_and_optimize(g, uvg, PE::parameters::pipeline_statistics(&ps).optimization_policy(Policy::ALWAYS)
+                                            .optimization_time_limit(0.)) == PE::OK
+          && ps.optimized && ps.optimization_status == PE::ERROR_BUDGET_EXHAUSTED && !ps.optimization.converged
+          && ps.optimization.iterations <= 1 && ps.report.is_valid() && same_report(ps.report, PE::check_embedding(g, uvg)),
+          "optimization_time_limit(0): OK, the optimization stopped by its budget (ERROR_BUDGET_EXHAUSTED), a certified map");
   }
   // parameterize_certified: Tutte, then the policy, on one indexing of the mesh; from every border halfedge the
   // map of the stages run one by one (each indexing the mesh itself), bit for bit
@@ -780,6 +787,9 @@ int test_pipeline()
           "no time: ERROR_BUDGET_EXHAUSTED");
     CHECK(PE::repair_and_optimize(m, uv, CGAL::parameters::maximum_running_time(-1.)) == PE::ERROR_WRONG_PARAMETER,
           "a negative budget: ERROR_WRONG_PARAMETER");
+    CHECK(PE::repair_and_optimize(m, uv, PE::parameters::optimization_time_limit(-1.)) == PE::ERROR_WRONG_PARAMETER
+          && PE::repair_and_optimize(m, uv, PE::parameters::optimization_time_limit(std::nan(""))) == PE::ERROR_WRONG_PARAMETER,
+          "a negative or NaN optimization budget: ERROR_WRONG_PARAMETER");
     bool same = true;
     for(auto v : vertices(m)) same = same && get(uv, v) == before[v];
     CHECK(same, "the uv map unchanged on error");

@@ -44,6 +44,13 @@ namespace pe_tool {
 // 0.39-3.3 s); maps refined around many random targets never converge, and 30 s instead of 5 lowered their
 // energy only 1.1 to 4 times (constrained_default_command.csv), far above the few-constraint maps' either way.
 constexpr double default_constrain_optimize_seconds = 5.;
+// The default optimization budget (--optimize-time) of pe embed, untangle and optimize, in seconds: a user who
+// runs the default command on a large map gets a certified, improved map in bounded time, and the output says
+// when the budget stopped the optimization (JSON: ERROR_BUDGET_EXHAUSTED). Maps of up to a few hundred thousand
+// vertices reach the stopping rule well within it (a 262k-vertex grid disk in 17 s,
+// benchmark/results/optimizer_scale.md); a 1M-vertex map needs about twice as long, and stops after some 20
+// iterations 0.25% above the converged energy (optimizer_scale_budget.md).
+constexpr double default_optimize_seconds = 60.;
 
 namespace PE = CGAL::Progressive_embedding;
 

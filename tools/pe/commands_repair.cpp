@@ -30,6 +30,7 @@ Optimize_settings optimize_settings(const Arguments& a, std::size_t default_iter
   s.free_border = a.has("--free-border");
   s.iterations = static_cast<std::size_t>(a.count("--iterations", default_iterations));
   s.tolerance = a.real("--tolerance", default_tolerance);
+  s.seconds = a.real("--optimize-time", default_optimize_seconds);
   return s;
 }
 
@@ -51,7 +52,7 @@ PE::Error_code run_optimize(Input& in, const Optimize_settings& s, const Budget&
     PE::parameters::convergence_tolerance(s.tolerance,
     PE::parameters::optimization_statistics(&os,
     CGAL::parameters::callback(bar.callback()).number_of_iterations(s.iterations)
-                     .maximum_running_time(budget.remaining()))))));
+                     .maximum_running_time((std::min)(budget.remaining(), s.seconds)))))));
 }
 
 namespace {
@@ -76,9 +77,10 @@ std::string statistics_summary(const PE::Progressive_embedding_statistics& st)
 
 void add_optimization(Result& r, const PE::Optimization_statistics& os) { PE::for_each_statistic(os, Add_to_result{ r }); }
 
-std::string optimization_summary(const PE::Optimization_statistics& os)
+std::string optimization_summary(const PE::Optimization_statistics& os, PE::Error_code status)
 {
-  return std::to_string(os.iterations) + " iterations" + (os.converged ? " (converged)" : "") +
+  const char* end = os.converged ? " (converged)" : status == PE::ERROR_BUDGET_EXHAUSTED ? " (stopped at its time budget)" : "";
+  return std::to_string(os.iterations) + " iterations" + end +
          ", mean sym. Dirichlet " + format_number(os.energy_before) + " -> " + format_number(os.energy_after);
 }
 
@@ -106,7 +108,8 @@ int repair_optimize_and_finish(Run& run, Input& in, const Arguments& a, const Bu
     PE::parameters::pipeline_statistics(&ps,
     PE::parameters::stage_callback(stage,
     PE::parameters::convergence_tolerance(o.tolerance,
-    CGAL::parameters::number_of_iterations(o.iterations).maximum_running_time(budget.remaining()))))));
+    PE::parameters::optimization_time_limit(o.seconds,
+    CGAL::parameters::number_of_iterations(o.iterations).maximum_running_time(budget.remaining())))))));
   bar.finish();
   if(tutte)
   {
@@ -129,7 +132,9 @@ int repair_optimize_and_finish(Run& run, Input& in, const Arguments& a, const Bu
               << PE::get_error_name(ps.optimization_status) << ")" << std::endl;
   // a map the optimizer could not touch keeps its repaired map: optimized says whether it improved it
   run.result.add("optimized", ps.optimized && (ps.optimization_status == PE::OK || ps.optimization_status == PE::ERROR_BUDGET_EXHAUSTED));
-  if(ps.optimized && ps.optimization.iterations) run.summary << ", optimization: " << optimization_summary(ps.optimization);
+  if(optimize) run.result.add("optimization_budget", o.seconds);
+  if(ps.optimized && ps.optimization.iterations)
+    run.summary << ", optimization: " << optimization_summary(ps.optimization, ps.optimization_status);
   run.result.add("status", "OK");
   run.result.add("seconds", run.timer.seconds());
   run.summary << ", " << seconds_string(run.timer.seconds()) << "; ";
@@ -188,7 +193,8 @@ int cmd_optimize(const Arguments& a)
   PE::Optimization_statistics os;
   const PE::Error_code ec = run_optimize(in, s, budget, os);
   add_optimization(run.result, os);
-  run.summary << "faces " << count_faces(in.mesh) << ", " << optimization_summary(os) << ", "
+  run.result.add("optimization_budget", s.seconds);
+  run.summary << "faces " << count_faces(in.mesh) << ", " << optimization_summary(os, ec) << ", "
               << seconds_string(run.timer.seconds()) << "; ";
   if(ec == PE::ERROR_INVALID_EMBEDDING)
   {

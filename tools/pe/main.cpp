@@ -87,7 +87,8 @@ struct Option_spec
 
 const double max_unsigned = double(std::numeric_limits<unsigned>::max());
 
-static_assert(default_constrain_optimize_seconds == 5., "--optimize-time's help gives the default");
+static_assert(default_constrain_optimize_seconds == 5. && default_optimize_seconds == 60.,
+              "--optimize-time's help gives the defaults");
 const Option_spec option_table[] = {
   { "--json", Kind::FLAG, "", "print one JSON object instead of the summary line" },
   { "--border", Kind::CHOICE, "fixed|circle|square|triangle",
@@ -118,7 +119,8 @@ const Option_spec option_table[] = {
     "each mesh (default 600), whose process is killed then (status timeout)",
     0, 1e9 },
   { "--optimize-time", Kind::REAL, "SECONDS",
-    "constrain: seconds the optimization may take; it stops there with its certified map (default 5)", 0, 1e9 },
+    "seconds the optimization may take; it stops there with its certified map, and says so (JSON\n"
+    "ERROR_BUDGET_EXHAUSTED); default 60 (embed, untangle, optimize), 5 (constrain)", 0, 1e9 },
   { "--no-progress", Kind::FLAG, "", "no progress bar (it is drawn on terminals only, for runs over a second)" },
   { "--no-optimize", Kind::FLAG, "", "repair only: skip the distortion optimization" },
   { "--optimize", Kind::FLAG, "", "optimize the distortion after repairing (the default)" },
@@ -168,15 +170,17 @@ const std::vector<Command_spec>& command_table()
     { "svg", "IN.obj OUT.svg", 2, 2, 1, {},
       "picture of the uv map of IN (faces coloured by distortion, flipped and degenerate faces highlighted)",
       cmd_svg },
-    { "untangle", "IN.obj OUT.obj", 2, 2, 1, { "--no-optimize", "--iterations", "--tolerance", "--time-limit", "--no-progress" },
+    { "untangle", "IN.obj OUT.obj", 2, 2, 1, { "--no-optimize", "--iterations", "--tolerance", "--optimize-time", "--time-limit",
+                                           "--no-progress" },
       "progressive embedding of the uv map of IN, border kept bit-exactly, then the distortion\n"
       "optimization (unless --no-optimize)", cmd_untangle },
     { "embed", "IN OUT.obj", 2, 2, 1,
-      { "--border", "--weights", "--optimize", "--no-optimize", "--iterations", "--tolerance", "--time-limit", "--no-progress" },
+      { "--border", "--weights", "--optimize", "--no-optimize", "--iterations", "--tolerance", "--optimize-time",
+        "--time-limit", "--no-progress" },
       "Tutte, then progressive embedding if the Tutte map is not valid, then the distortion\n"
       "optimization (unless --no-optimize)", cmd_embed },
     { "optimize", "IN.obj OUT.obj", 2, 2, 1,
-      { "--free-border", "--fix", "--iterations", "--tolerance", "--time-limit", "--no-progress" },
+      { "--free-border", "--fix", "--iterations", "--tolerance", "--optimize-time", "--time-limit", "--no-progress" },
       "lower the symmetric Dirichlet distortion of the valid uv map of IN without leaving the valid maps;\n"
       "the border (unless --free-border) and the vertices of --fix are kept bit-exactly", cmd_optimize },
     { "constrain", "IN OUT.obj", 2, 2, 1,
@@ -209,7 +213,7 @@ const std::vector<Command_spec>& command_table()
       "progressive embedding and the optimized map, with pictures", cmd_demo },
     { "batch", "PIPELINE LIST_OR_FOLDER OUTDIR", 3, 3, -1,
       { "--shard", "--jobs", "--resume", "--time-limit", "--memory-limit", "--no-progress",
-        "--no-optimize", "--iterations", "--tolerance", "--border", "--weights", "--free-border" },
+        "--no-optimize", "--iterations", "--tolerance", "--optimize-time", "--border", "--weights", "--free-border" },
       "PIPELINE (untangle, embed, optimize or constrain) on every mesh of LIST_OR_FOLDER (a folder: its\n"
       ".obj, .off, .ply, .stl files; a list: one path per line, relative to the list's folder, blank lines\n"
       "and # comments skipped), sorted by path, each in its own process: `pe PIPELINE IN OUTDIR/NAME.obj\n"

@@ -150,6 +150,7 @@ struct Optimize_settings
   std::vector<vertex_descriptor> fixed;
   std::size_t iterations = 200;
   double tolerance = 1e-4;
+  double seconds = default_optimize_seconds; // --optimize-time
 };
 
 // the optimization settings of --free-border, --iterations and --tolerance (checked by the parser)
@@ -162,7 +163,8 @@ void add_statistics(Result& r, const PE::Progressive_embedding_statistics& st);
 void add_statistics(Result& r, const PE::Pipeline_statistics& s);
 std::string statistics_summary(const PE::Progressive_embedding_statistics& st);
 void add_optimization(Result& r, const PE::Optimization_statistics& os);
-std::string optimization_summary(const PE::Optimization_statistics& os);
+// "N iterations (converged)", or "(stopped at its time budget)" when `status` says the budget ran out
+std::string optimization_summary(const PE::Optimization_statistics& os, PE::Error_code status = PE::OK);
 
 } // namespace pe_tool
 

@@ -161,7 +161,9 @@ Error_code repair_and_optimize_impl(const TriangleMesh& tm, VertexUVMap uvm, con
   const Stage_callback callback = choose_parameter(get_parameter(np, internal_np::stage_callback), Stage_callback());
   const double max_seconds = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
                                               std::numeric_limits<double>::infinity());
-  if(!(max_seconds >= 0)) return finish(ERROR_WRONG_PARAMETER);
+  const double optimization_seconds = choose_parameter(get_parameter(np, internal_np::optimization_time_limit),
+                                                       std::numeric_limits<double>::infinity());
+  if(!(max_seconds >= 0) || !(optimization_seconds >= 0)) return finish(ERROR_WRONG_PARAMETER);
   auto remaining = [&]() { const double r = max_seconds - timer.time(); return r > 0 ? r : 0.; };
   auto stage = [&](Pipeline_stage st) {
     return std::function<bool(double)>(callback ? [callback, st](double x) { return callback(st, x); }
@@ -206,7 +208,7 @@ Error_code repair_and_optimize_impl(const TriangleMesh& tm, VertexUVMap uvm, con
       parameters::convergence_tolerance(tolerance,
       parameters::optimization_statistics(&s.optimization,
       common.callback(stage(Pipeline_stage::OPTIMIZATION)).number_of_iterations(iterations)
-            .maximum_running_time(remaining()))), disk);
+            .maximum_running_time((std::min)(remaining(), optimization_seconds)))), disk);
     // the optimizer certifies the map it writes, and writes nothing otherwise: no second certificate
     if(s.optimization_status == OK || s.optimization_status == ERROR_BUDGET_EXHAUSTED) s.report = s.optimization.report;
     if(!tolerated_optimization_status(s.optimization_status)) return finish(s.optimization_status);
@@ -273,6 +275,13 @@ Error_code repair_and_optimize_impl(const TriangleMesh& tm, VertexUVMap uvm, con
 ///     \cgalParamDescription{the optimization's convergence criterion}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{`optimize_distortion()`'s default}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{optimization_time_limit}
+///     \cgalParamDescription{seconds (wall clock) for the optimization: it stops there with its certified, improved map
+///                           (`Pipeline_statistics::optimization_status` is then `ERROR_BUDGET_EXHAUSTED`, and
+///                           `Pipeline_statistics::optimization` says how far it went); the call still returns `OK`}
+///     \cgalParamType{`double` (negative or NaN: `ERROR_WRONG_PARAMETER`)}
+///     \cgalParamDefault{what is left of `maximum_running_time`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{geom_traits}
 ///     \cgalParamDescription{the traits class whose exact predicates decide every sign, in every stage}

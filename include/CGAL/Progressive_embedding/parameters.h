@@ -282,8 +282,8 @@ template <typename T> unspecified_type optimize(const T& t);
 /// do without (`bool`; default `true`)
 template <typename T> unspecified_type coarsen(const T& t);
 /// \ingroup PkgProgressiveEmbeddingNamedParameters
-/// seconds that the optimization of `constrained_embedding()` may take (`double`; default: what is left of
-/// `maximum_running_time`)
+/// seconds that the optimization of `constrained_embedding()`, `repair_and_optimize()` and `parameterize_certified()`
+/// may take (`double`; default: what is left of `maximum_running_time`)
 template <typename T> unspecified_type optimization_time_limit(const T& t);
 /// \ingroup PkgProgressiveEmbeddingNamedParameters
 /// when `repair_and_optimize()` and `parameterize_certified()` run the optimization (an `Optimization_policy`;

@@ -121,7 +121,7 @@ with open(path[:-4] + ".md", "w") as md:
     md.write("`benchmark/optimizer_scale.sh`, %s to %s, host %s (2 cores). Each grid disk N x N: `pe generate grid N`, "
              "`pe random-init --seed 1`, `pe untangle --no-optimize`%s, then `pe optimize IN OUT --json` (the defaults: at most "
              "1000 iterations, stopping when two consecutive iterations lower the mean symmetric Dirichlet energy by less "
-             "than a relative 1e-5; the command: `%s`). Medians of the runs (the 1024 grid: one run per program); programs alternated; "
+             "than a relative 1e-5, and from commit d268197 on a budget of 60 s, `--optimize-time`; the command: `%s`). Medians of the runs (the 1024 grid: one run per program); programs alternated; "
              "s/it: optimization seconds per iteration; growth: s/it over the smallest grid's s/it of the same program; "
              "load1: the 1-minute load average after each run.\n\n" % (rows[0]["date"], rows[-1]["date"], rows[0]["machine"],
              "; each `thingi:MESH:SEED`: `pe thingi` (the Tutte-failure protocol) on libcgal-demo's MESH.off, then `pe untangle "

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""check_constrain_svg.py PE MESH FIX : runs `pe constrain MESH OUT.obj --fix FIX` with and without
+"""check_constrain_svg.py PE MESH FIX : runs `pe constrain MESH OUT.obj --fix FIX --no-optimize` with and without
 `--svg` (in the current folder) and checks that
   - both runs exit 0, their JSON objects are equal but for the times, their OBJ files are identical
     and their summary lines are equal but for the times: the picture changes nothing else;
@@ -39,7 +39,9 @@ def main():
         if not cond:
             failures.append(what)
 
-    base = ["constrain", mesh]
+    # without the optimization: it stops at its time budget, so where it stops depends on the machine's speed (under
+    # sanitizers the two runs stopped after 91 and 99 iterations, two different maps)
+    base = ["constrain", mesh, "--no-optimize"]
     rc_a, out_a = run([pe] + base + ["constrain_plain.obj", "--fix", fix, "--json"])
     rc_b, out_b = run([pe] + base + ["constrain_svg.obj", "--fix", fix, "--json", "--svg", "constrain_patches.svg"])
     check(rc_a == 0 and rc_b == 0, "both runs exit 0")

@@ -21,7 +21,8 @@
 #              cross_parameterization_pairs.{csv,md}: two resolutions of one surface, 0, 5, 20 and 50 landmarks,
 #              from the OBJ files of OptCuts' inputs (its input/benchmark and input/scalability/lucy_o folders)
 #              that DIR holds: cat, cat_f1500, bishop_part, bishop_part_f1000, lucy_o_f12067, _f24136, _f48275
-#              (about 5 minutes).
+#              (about 5 minutes), and cross_protocol_floor.{csv,md} on the same pairs (what the landmarks and the
+#              border rule allow before any map; NumPy).
 # --build DIR  the CMake build directory (default: build); the drivers are built there.
 # --out DIR    the results folder (default: benchmark/results), e.g. a copy to compare with.
 #
@@ -117,6 +118,9 @@ if [ "$cross" = 1 ]; then
     d=$cross_pairs
     "$build/bin/cross_benchmark" "$build/cgal_data/data" "$results/cross_parameterization_pairs" --counts 0,5,20,50 \
       --pairs "$d/cat_f1500.obj:$d/cat.obj,$d/bishop_part_f1000.obj:$d/bishop_part.obj,$d/lucy_o_f24136.obj:$d/lucy_o_f12067.obj,$d/lucy_o_f48275.obj:$d/lucy_o_f24136.obj"
+    python3 "$repo/benchmark/Progressive_embedding/cross_protocol_floor.py" "$d/cat_f1500.obj:$d/cat.obj" \
+      "$d/bishop_part_f1000.obj:$d/bishop_part.obj" "$d/lucy_o_f24136.obj:$d/lucy_o_f12067.obj" \
+      "$d/lucy_o_f48275.obj:$d/lucy_o_f24136.obj" --out "$results/cross_protocol_floor"
   fi
 fi
 echo "$results regenerated"

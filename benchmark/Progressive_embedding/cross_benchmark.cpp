@@ -7,7 +7,8 @@
 // times the mean), K landmarks (interior vertices of A spread out by farthest-point sampling, each
 // matched to the nearest interior vertex of B). Per run: vertices of A and B, vertices added to A's
 // copy, seconds (B's map, A's map, location, total), both certificates, landmarks exact, mean and max
-// 3D distance between a vertex of A and its image on B relative to A's bounding-box diagonal; the compatible
+// 3D distance between a vertex of A and its image on B relative to A's bounding-box diagonal (also split: at the
+// landmarks, on the border, inside); the compatible
 // meshes (the certified overlay of the two maps): their vertices, certificate and seconds (in the total).
 //
 //   cross_benchmark DATA_DIR OUT_PREFIX [--meshes a.off,b.off] [--counts 5,20,50] [--pairs A1:B1,A2:B2]
@@ -49,6 +50,10 @@ struct Row
   std::size_t count = 0, landmarks = 0, va = 0, vb = 0, added = 0, vc = 0;
   std::string status;
   bool valid_a = false, valid_b = false, exact = false, valid_c = false;
+  // the mean error split: at A's landmark vertices, at A's border vertices, at the other vertices (what the
+  // landmarks and the border rule cannot fix: a landmark pair of two discretizations is apart by the distance between
+  // the two vertices, and the border is matched by relative arc length, not by position)
+  double error_landmarks = -1, error_border = 0, error_inside = 0;
   double mean_error = 0, max_error = 0, t_b = 0, t_a = 0, t_location = 0, t_compatible = 0, t_total = 0;
 };
 
@@ -109,7 +114,23 @@ Row run(const std::string& file_a, const std::string& file_b, const std::string&
   r.valid_c = st.report_compatible.is_valid();
   r.t_compatible = st.seconds_compatible;
   r.t_total = st.seconds_total;
-  if(ec == PE::OK) std::tie(r.mean_error, r.max_error) = PE::internal::correspondence_error(a, b, loc);
+  if(ec != PE::OK) return r;
+  std::tie(r.mean_error, r.max_error) = PE::internal::correspondence_error(a, b, loc);
+  const std::vector<double> errors = PE::internal::correspondence_errors(a, b, loc);
+  std::vector<char> landmark(a.num_vertices(), 0);
+  for(const auto& p : landmarks) landmark[std::size_t(p.first)] = 1;
+  std::array<double, 3> sum = {{ 0, 0, 0 }};
+  std::array<std::size_t, 3> n = {{ 0, 0, 0 }};
+  std::size_t i = 0;
+  for(SM::Vertex_index v : vertices(a))
+  {
+    const int c = landmark[std::size_t(v)] ? 0 : CGAL::is_border(v, a) ? 1 : 2;
+    sum[c] += errors[i++];
+    ++n[c];
+  }
+  if(n[0] != 0) r.error_landmarks = sum[0] / double(n[0]);
+  if(n[1] != 0) r.error_border = sum[1] / double(n[1]);
+  if(n[2] != 0) r.error_inside = sum[2] / double(n[2]);
   return r;
 }
 
@@ -160,13 +181,14 @@ int main(int argc, char** argv)
 
   std::ofstream csv(out + ".csv");
   csv << "mesh,landmarks_requested,landmarks,vertices_a,vertices_b,vertices_added_a,status,valid_a,valid_b,"
-         "landmarks_exact,mean_error,max_error,seconds_map_b,seconds_map_a,seconds_location,"
+         "landmarks_exact,mean_error,max_error,mean_error_landmarks,mean_error_border,mean_error_inside,seconds_map_b,seconds_map_a,seconds_location,"
          "compatible_vertices,compatible_certified,seconds_compatible,seconds_total\n";
   csv << std::setprecision(6);
   for(const Row& r : rows)
     csv << r.mesh << ',' << r.count << ',' << r.landmarks << ',' << r.va << ',' << r.vb << ',' << r.added << ','
         << r.status << ',' << r.valid_a << ',' << r.valid_b << ',' << r.exact << ',' << r.mean_error << ','
-        << r.max_error << ',' << r.t_b << ',' << r.t_a << ',' << r.t_location << ',' << r.vc << ',' << r.valid_c << ','
+        << r.max_error << ',' << r.error_landmarks << ',' << r.error_border << ',' << r.error_inside << ','
+        << r.t_b << ',' << r.t_a << ',' << r.t_location << ',' << r.vc << ',' << r.valid_c << ','
         << r.t_compatible << ',' << r.t_total << '\n';
 
   char host[256] = {0};
@@ -188,16 +210,26 @@ int main(int argc, char** argv)
         "A's bounding box. Vertices added: Steiner vertices of A's "
         "refined copy (A itself is not changed). Compatible meshes: the overlay of the two maps triangulated "
         "(`compatible_meshes`), certified by `check_embedding()` in exact coordinates; its seconds are part of the "
-        "total. K = 0: no landmark, the borders matched by relative arc length only.\n\n"
+        "total. K = 0: no landmark, the borders matched by relative arc length only. The mean error is also given "
+        "at A's landmark vertices (each lands on its partner, a vertex of the other discretization, so its error is "
+        "about the distance between the two: the landmarks cannot bring the error below it), at A's other border "
+        "vertices (placed by relative arc length, not by position) and at the other vertices.\n\n"
      << "| mesh | K | vertices A | vertices B | status | both maps certified | landmarks exact | vertices added to A "
-        "| mean error | max error | B's map s | A's map s | location s | compatible vertices | compatible certified "
+        "| mean error | max error | mean error at landmarks | mean error on the border | mean error inside | B's map s "
+        "| A's map s | location s | compatible vertices | compatible certified "
         "| compatible s | total s |\n"
-     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for(const Row& r : rows)
+  {
     md << "| " << r.mesh << " | " << r.landmarks << " | " << r.va << " | " << r.vb << " | " << r.status << " | "
        << (r.valid_a && r.valid_b ? "yes" : "no") << " | " << (r.exact ? "yes" : "no") << " | " << r.added << " | "
-       << r.mean_error << " | " << r.max_error << " | " << r.t_b << " | " << r.t_a << " | " << r.t_location << " | "
+       << r.mean_error << " | " << r.max_error << " | ";
+    if(r.error_landmarks < 0) md << "-";
+    else md << r.error_landmarks;
+    md << " | " << r.error_border << " | " << r.error_inside << " | " << r.t_b << " | " << r.t_a << " | " << r.t_location
+       << " | "
        << r.vc << " | " << (r.valid_c ? "yes" : "no") << " | " << r.t_compatible << " | " << r.t_total << " |\n";
+  }
   std::string command = "cross_benchmark";
   for(int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
   md << "\nMachine: " << host << ". Command: `" << command << "`.\n";

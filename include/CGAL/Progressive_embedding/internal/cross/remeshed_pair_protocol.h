@@ -102,12 +102,12 @@ double bbox_diagonal(const Mesh& m)
   return std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) + CGAL::square(b.zmax() - b.zmin()));
 }
 
-// mean and largest distance between the point of `b` at the location of each vertex of `a` and the true
-// image of that vertex, the point of `b` nearest to it (an AABB tree of `b`'s faces), relative to the
+// the distance between the point of `b` at the location of each vertex of `a` (in `vertices(a)` order) and the
+// true image of that vertex, the point of `b` nearest to it (an AABB tree of `b`'s faces), relative to the
 // diagonal of `a`'s bounding box: for two meshes of one surface, the error of the correspondence alone,
 // not the distance between the two discretizations
 template <class MeshA, class MeshB, class LocationMap>
-std::pair<double, double> correspondence_error(const MeshA& a, const MeshB& b, LocationMap locations)
+std::vector<double> correspondence_errors(const MeshA& a, const MeshB& b, LocationMap locations)
 {
   typedef typename boost::property_traits<typename boost::property_map<MeshB, CGAL::vertex_point_t>::const_type>::value_type Point_3;
   typedef typename CGAL::Kernel_traits<Point_3>::Kernel K;
@@ -116,19 +116,25 @@ std::pair<double, double> correspondence_error(const MeshA& a, const MeshB& b, L
   Tree tree(faces(b).first, faces(b).second, b);
   tree.accelerate_distance_queries();
   const double diag = bbox_diagonal(a);
-  double sum = 0, worst = 0;
-  std::size_t n = 0;
+  std::vector<double> errors;
   for(auto v : vertices(a))
   {
     const auto p = CGAL::Polygon_mesh_processing::construct_point(get(locations, v), b);
     const auto q = get(CGAL::vertex_point, a, v);
     const Point_3 truth = tree.closest_point(Point_3(q.x(), q.y(), q.z()));
-    const double e = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, truth))) / diag;
-    sum += e;
-    worst = (std::max)(worst, e);
-    ++n;
+    errors.push_back(std::sqrt(CGAL::to_double(CGAL::squared_distance(p, truth))) / diag);
   }
-  return std::make_pair(n ? sum / double(n) : 0., worst);
+  return errors;
+}
+
+// the mean and the largest of `correspondence_errors()`
+template <class MeshA, class MeshB, class LocationMap>
+std::pair<double, double> correspondence_error(const MeshA& a, const MeshB& b, LocationMap locations)
+{
+  const std::vector<double> errors = correspondence_errors(a, b, locations);
+  double sum = 0, worst = 0;
+  for(double e : errors) { sum += e; worst = (std::max)(worst, e); }
+  return std::make_pair(errors.empty() ? 0. : sum / double(errors.size()), worst);
 }
 
 } // namespace internal

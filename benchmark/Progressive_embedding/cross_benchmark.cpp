@@ -115,7 +115,7 @@ Row run(const std::string& file_a, const std::string& file_b, const std::string&
   r.t_compatible = st.seconds_compatible;
   r.t_total = st.seconds_total;
   if(ec != PE::OK) return r;
-  std::tie(r.mean_error, r.max_error) = PE::internal::correspondence_error(a, b, loc);
+  // one pass of the AABB tree: the mean and max are taken from the same per-vertex errors as the split
   const std::vector<double> errors = PE::internal::correspondence_errors(a, b, loc);
   std::vector<char> landmark(a.num_vertices(), 0);
   for(const auto& p : landmarks) landmark[std::size_t(p.first)] = 1;
@@ -124,10 +124,13 @@ Row run(const std::string& file_a, const std::string& file_b, const std::string&
   std::size_t i = 0;
   for(SM::Vertex_index v : vertices(a))
   {
+    const double e = errors[i++];
     const int c = landmark[std::size_t(v)] ? 0 : CGAL::is_border(v, a) ? 1 : 2;
-    sum[c] += errors[i++];
+    sum[c] += e;
     ++n[c];
+    r.max_error = (std::max)(r.max_error, e);
   }
+  if(!errors.empty()) r.mean_error = (sum[0] + sum[1] + sum[2]) / double(errors.size());
   if(n[0] != 0) r.error_landmarks = sum[0] / double(n[0]);
   if(n[1] != 0) r.error_border = sum[1] / double(n[1]);
   if(n[2] != 0) r.error_inside = sum[2] / double(n[2]);
@@ -185,11 +188,15 @@ int main(int argc, char** argv)
          "compatible_vertices,compatible_certified,seconds_compatible,seconds_total\n";
   csv << std::setprecision(6);
   for(const Row& r : rows)
+  {
     csv << r.mesh << ',' << r.count << ',' << r.landmarks << ',' << r.va << ',' << r.vb << ',' << r.added << ','
         << r.status << ',' << r.valid_a << ',' << r.valid_b << ',' << r.exact << ',' << r.mean_error << ','
-        << r.max_error << ',' << r.error_landmarks << ',' << r.error_border << ',' << r.error_inside << ','
+        << r.max_error << ',';
+    if(r.error_landmarks >= 0) csv << r.error_landmarks; // empty without landmarks
+    csv << ',' << r.error_border << ',' << r.error_inside << ','
         << r.t_b << ',' << r.t_a << ',' << r.t_location << ',' << r.vc << ',' << r.valid_c << ','
         << r.t_compatible << ',' << r.t_total << '\n';
+  }
 
   char host[256] = {0};
   gethostname(host, sizeof host - 1);

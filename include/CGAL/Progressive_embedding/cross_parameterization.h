@@ -25,6 +25,7 @@
 #include <CGAL/Progressive_embedding/certified_pipeline.h>
 #include <CGAL/Progressive_embedding/constrained_embedding.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
+#include <CGAL/Progressive_embedding/internal/cross/certify_overlay.h>
 #include <CGAL/Progressive_embedding/internal/cross/common_border.h>
 #include <CGAL/Progressive_embedding/internal/cross/cut_closed.h>
 #include <CGAL/Progressive_embedding/internal/cross/locate_in_map.h>
@@ -172,8 +173,10 @@ struct Cross_parameterization_statistics
   /// closed meshes: edges of B's cut disk joining two of its border vertices (where two paths of the cut run side by
   /// side) split at their midpoints, when B's map had failed with `ERROR_DEGENERATE_CHORD` (0 otherwise)
   std::size_t chords_split_b = 0;
-  /// with `compatible_meshes`: the certificate of the triangulated overlay in exact coordinates (`check_embedding()`
-  /// with `CGAL::Epeck` points)
+  /// with `compatible_meshes`: the certificate of the triangulated overlay in exact coordinates (`CGAL::Epeck`
+  /// points): a triangulated disk, every triangle counterclockwise, the border simple and counterclockwise, decided
+  /// by filtered exact predicates; its areas are those of the points rounded to double and its energies are not
+  /// computed. Should any of these fail, it is the report of `check_embedding()` on those points.
   Embedding_report report_compatible;
   /// seconds in all
   double seconds_total = 0;
@@ -280,14 +283,7 @@ Error_code compatible_soups(const Work& work, UVMap uv, const TriangleMeshB& tm_
   stats.overlay_centers = overlay.centers;
 
   // the certificate of the triangulated overlay, in its exact coordinates
-  CGAL::Surface_mesh<CGAL::Epick::Point_3> soup;
-  typedef CGAL::Surface_mesh<CGAL::Epick::Point_3>::Vertex_index svertex;
-  for(std::size_t i = 0; i < overlay.points.size(); ++i) soup.add_vertex();
-  for(const auto& t : overlay.triangles)
-    if(soup.add_face(svertex(t[0]), svertex(t[1]), svertex(t[2])) == soup.null_face()) return ERROR_INVALID_EMBEDDING;
-  auto exact_uv = soup.add_property_map<svertex, EK::Point_2>("v:pe_overlay_uv").first;
-  for(std::size_t i = 0; i < overlay.points.size(); ++i) exact_uv[svertex(i)] = overlay.points[i];
-  stats.report_compatible = check_embedding(soup, exact_uv);
+  stats.report_compatible = certify_overlay(overlay.points, overlay.triangles);
   if(!stats.report_compatible.is_valid()) return ERROR_INVALID_EMBEDDING;
 
   // Each vertex on both surfaces, from where it lies in each map: a map vertex gets its own point bit for bit;

@@ -5,27 +5,30 @@
 #ifndef CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CROSS_OVERLAY_MAPS_H
 #define CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CROSS_OVERLAY_MAPS_H
 
-// The common refinement of two valid planar maps of one domain, triangulated. Each map's edges make
-// a CGAL arrangement whose faces carry the index of the map's triangle; CGAL's overlay (a sweep in
-// exact arithmetic: Epeck) gives the cells, each the intersection of one triangle of each map and
-// so a convex polygon, with every overlay vertex on its border listed (no T-junction). A cell is
-// fanned from a corner whose two neighbours are corners too (then no fan triangle is flat); a cell
-// without one gets a vertex at the mean of its corners and is fanned from it. The overlay traits
-// record where each overlay vertex lies in each map (a vertex, an edge, a face): a caller places the
-// vertices on the surfaces from that, without evaluating the constructed points exactly.
+// The common refinement of two valid planar maps A and B of one domain, triangulated. Each cell is the
+// intersection of a triangle of A and a triangle of B, a convex polygon: every triangle of A is clipped
+// by the triangles of B it overlaps (found by a walk to its centroid, then across the edges of B from
+// cell to cell), with exact predicates (CGAL::Epeck: filtered, exact only where the interval sign is
+// uncertain). Each point of a cell is named by what it is, a vertex of A, a vertex of B (one point where
+// both have the same coordinates) or the crossing of an edge of A and an edge of B, so that the cells
+// share their points and every point on a cell's border is listed (no T-junction); a crossing is
+// constructed once. This is linear in the size of the overlay, where a general overlay of two
+// arrangements (CGAL's, internal/cross/overlay_by_arrangement.h, the reference of the tests) sweeps.
+// A cell is fanned from a corner whose two neighbours are corners too (then no fan triangle is flat); a
+// cell without one gets a vertex at the mean of its corners and is fanned from it. Every point records
+// where it lies in each map (a vertex, an edge, a face): a caller places the points on the surfaces from
+// that, without evaluating the constructed points exactly.
 
 #include <CGAL/Progressive_embedding/Error_code.h>
 
-#include <CGAL/Arr_default_overlay_traits.h>
-#include <CGAL/Arr_extended_dcel.h>
-#include <CGAL/Arr_overlay_2.h>
-#include <CGAL/Arr_segment_traits_2.h>
-#include <CGAL/Arrangement_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/intersections.h>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <deque>
 #include <map>
 #include <unordered_map>
 #include <utility>
@@ -53,102 +56,103 @@ struct Map_overlay
   std::size_t centers = 0;   // vertices added at the mean of a cell's corners
 };
 
+// The convex cell `cell` (points of `out`, counterclockwise, `corner[i]` when point i is a strict left
+// turn) triangulated into `out`, its triangles tagged with the map faces `faces`.
+inline void triangulate_cell(const std::vector<std::size_t>& cell, const std::vector<bool>& corner,
+                             const std::array<std::size_t, 2>& faces, Map_overlay& out)
+{
+  const std::size_t m = cell.size(), none = std::size_t(-1);
+  std::size_t apex = none;
+  for(std::size_t i = 0; i < m && apex == none; ++i)
+    if(corner[i] && corner[(i + m - 1) % m] && corner[(i + 1) % m]) apex = i;
+  if(apex != none)
+  {
+    for(std::size_t k = 1; k + 1 < m; ++k)
+    {
+      out.triangles.push_back({{ cell[apex], cell[(apex + k) % m], cell[(apex + k + 1) % m] }});
+      out.cell_faces.push_back(faces);
+    }
+    return;
+  }
+  CGAL::Epeck::FT x(0), y(0);
+  int corners = 0;
+  for(std::size_t i = 0; i < m; ++i)
+    if(corner[i]) { x += out.points[cell[i]].x(); y += out.points[cell[i]].y(); ++corners; }
+  const std::size_t center = out.points.size();
+  out.points.emplace_back(x / corners, y / corners);
+  out.features.push_back({{ Map_feature{{ none, none }}, Map_feature{{ none, none }} }});
+  ++out.centers;
+  for(std::size_t i = 0; i < m; ++i)
+  {
+    out.triangles.push_back({{ center, cell[i], cell[(i + 1) % m] }});
+    out.cell_faces.push_back(faces);
+  }
+}
+
 namespace overlay_detail {
 
-constexpr std::size_t no_face = std::size_t(-1);
+constexpr std::size_t none = std::size_t(-1);
 typedef CGAL::Epeck K;
-typedef CGAL::Arr_segment_traits_2<K> Traits;
-// vertices carry their map vertex, faces their map triangle
-typedef CGAL::Arrangement_2<Traits, CGAL::Arr_extended_dcel<Traits, std::size_t, char, std::size_t> > Map_arrangement;
-typedef CGAL::Arrangement_2<Traits, CGAL::Arr_extended_dcel<Traits, std::array<Map_feature, 2>, char,
-                                                            std::array<std::size_t, 2> > > Overlay_arrangement;
 
-// records, for every cell, the triangle of each map, and for every vertex, the feature of each map it is on
-class Origin_overlay_traits
-  : public CGAL::_Arr_default_overlay_traits_base<Map_arrangement, Map_arrangement, Overlay_arrangement>
+// One triangulated map: its points, faces, the edge ids of each face (edge k from corner k to k + 1) and
+// the face across each of them (none on the border).
+struct Indexed_map
 {
-  typedef CGAL::_Arr_default_overlay_traits_base<Map_arrangement, Map_arrangement, Overlay_arrangement> Base;
-  static Map_feature at(Map_arrangement::Vertex_const_handle v) { return {{ v->data(), no_face }}; }
-  static Map_feature at(Map_arrangement::Halfedge_const_handle e) { return {{ e->source()->data(), e->target()->data() }}; }
-  static Map_feature at(Map_arrangement::Face_const_handle) { return {{ no_face, no_face }}; }
-  template <class X, class Y>
-  static void set(X x, Y y, Base::Vertex_handle_R v) { v->set_data({{ at(x), at(y) }}); }
+  std::vector<K::Point_2> p;
+  const std::vector<std::array<std::size_t, 3> >* faces = nullptr;
+  std::vector<std::array<std::size_t, 3> > edge, across;
+  std::vector<std::array<std::size_t, 2> > ends; // per edge id
 
-public:
-  void create_vertex(Base::Vertex_handle_A x, Base::Vertex_handle_B y, Base::Vertex_handle_R v) const override { set(x, y, v); }
-  void create_vertex(Base::Vertex_handle_A x, Base::Halfedge_handle_B y, Base::Vertex_handle_R v) const override { set(x, y, v); }
-  void create_vertex(Base::Vertex_handle_A x, Base::Face_handle_B y, Base::Vertex_handle_R v) const override { set(x, y, v); }
-  void create_vertex(Base::Halfedge_handle_A x, Base::Vertex_handle_B y, Base::Vertex_handle_R v) const override { set(x, y, v); }
-  void create_vertex(Base::Face_handle_A x, Base::Vertex_handle_B y, Base::Vertex_handle_R v) const override { set(x, y, v); }
-  void create_vertex(Base::Halfedge_handle_A x, Base::Halfedge_handle_B y, Base::Vertex_handle_R v) const override { set(x, y, v); }
-  void create_face(Base::Face_handle_A x, Base::Face_handle_B y, Base::Face_handle_R f) const override
+  Error_code build(const std::vector<std::array<std::size_t, 3> >& f)
   {
-    f->set_data({{ x->data(), y->data() }});
+    faces = &f;
+    edge.assign(f.size(), {{ none, none, none }});
+    across.assign(f.size(), {{ none, none, none }});
+    std::unordered_map<std::uint64_t, std::pair<std::size_t, std::size_t> > first; // edge -> (face, k)
+    first.reserve(2 * f.size());
+    for(std::size_t t = 0; t < f.size(); ++t)
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t u = f[t][k], v = f[t][(k + 1) % 3];
+        const std::uint64_t key = std::uint64_t((std::min)(u, v)) << 32 | std::uint64_t((std::max)(u, v));
+        const auto it = first.find(key);
+        if(it == first.end())
+        {
+          first.emplace(key, std::make_pair(t, std::size_t(k)));
+          edge[t][k] = ends.size();
+          ends.push_back({{ u, v }});
+          continue;
+        }
+        const std::size_t s = it->second.first, j = it->second.second;
+        if(across[s][j] != none || (*faces)[s][j] != v) return ERROR_INVALID_EMBEDDING; // not a consistent surface
+        edge[t][k] = edge[s][j];
+        across[t][k] = s;
+        across[s][j] = t;
+      }
+    return OK;
   }
+  const K::Point_2& corner(std::size_t t, int k) const { return p[(*faces)[t][k]]; }
 };
 
-// The arrangement of a map's edges, each bounded face tagged with its triangle. Fails if a triangle
-// is not a face of the arrangement on its left (a map that is not valid).
-template <class Point_2>
-Error_code map_arrangement(const std::vector<Point_2>& uv, const std::vector<std::array<std::size_t, 3> >& faces,
-                           Map_arrangement& arr)
+// A point of a clipped polygon: what it is (a vertex of A or of B, or the crossing of an edge of A with
+// the line of an edge of B), its point, and the support of the polygon's edge that leaves it: an edge of
+// A (`support_a`) or of B, by its edge id. A point becomes a point of the overlay only once it is in a
+// cell: a crossing with the line of an edge may lie beyond the edge, and a later line removes it.
+struct Clip_point
 {
-  std::vector<std::pair<std::size_t, std::size_t> > edges;
-  edges.reserve(3 * faces.size());
-  for(const auto& f : faces)
-    for(int i = 0; i < 3; ++i) edges.emplace_back((std::min)(f[i], f[(i + 1) % 3]), (std::max)(f[i], f[(i + 1) % 3]));
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  std::vector<K::Point_2> p;
-  p.reserve(uv.size());
-  for(const Point_2& q : uv) p.emplace_back(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
-  std::vector<Traits::X_monotone_curve_2> segments;
-  segments.reserve(edges.size());
-  for(const auto& e : edges)
-  {
-    if(p[e.first] == p[e.second]) return ERROR_INVALID_EMBEDDING; // a collapsed edge
-    segments.emplace_back(p[e.first], p[e.second]);
-  }
-  // the edges of a valid map meet only at common end points
-  CGAL::insert_non_intersecting_curves(arr, segments.begin(), segments.end());
-  for(auto f = arr.faces_begin(); f != arr.faces_end(); ++f) f->set_data(no_face);
-  // the arrangement's vertex at each map vertex (the points are doubles: their conversion is exact)
-  std::map<std::pair<double, double>, Map_arrangement::Vertex_handle> at;
-  for(auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v)
-  {
-    v->set_data(no_face);
-    at.emplace(std::make_pair(CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y())), v);
-  }
-  std::vector<Map_arrangement::Vertex_handle> vh(uv.size());
-  for(std::size_t i = 0; i < uv.size(); ++i)
-  {
-    const auto it = at.find(std::make_pair(CGAL::to_double(p[i].x()), CGAL::to_double(p[i].y())));
-    if(it == at.end()) return ERROR_INVALID_EMBEDDING; // a vertex in no edge
-    vh[i] = it->second;
-    vh[i]->set_data(i);
-  }
-  for(std::size_t t = 0; t < faces.size(); ++t)
-  {
-    // the halfedge from f[0] to f[1]: its face, on its left, is the triangle if the map is valid
-    const auto from = vh[faces[t][0]], to = vh[faces[t][1]];
-    auto c = to->incident_halfedges(), done = c;
-    Map_arrangement::Face_handle face;
-    bool found = false;
-    do
-    {
-      if(c->source() == from) { face = c->face(); found = true; break; }
-    } while(++c != done);
-    if(!found || face->is_unbounded() || face->data() != no_face) return ERROR_INVALID_EMBEDDING;
-    face->set_data(t);
-  }
-  return OK;
-}
+  enum Kind { A_VERTEX, B_VERTEX, CROSSING } kind;
+  std::size_t id;     // the vertex (A_VERTEX, B_VERTEX) or the edge of A (CROSSING)
+  std::size_t edge_b; // CROSSING: the edge of B
+  K::Point_2 point;
+  bool support_a;
+  std::size_t support;
+};
 
 } // namespace overlay_detail
 
 // `uv_a`/`faces_a` and `uv_b`/`faces_b`: two valid maps (counterclockwise triangles, coordinates in
 // double) of one domain. Returns ERROR_INVALID_EMBEDDING if either is not a valid map or if they do
-// not cover the same domain.
+// not cover the same domain (a face or a vertex of one map outside the other's, a walk that leaves B).
 template <class Point_2>
 Error_code overlay_maps(const std::vector<Point_2>& uv_a, const std::vector<std::array<std::size_t, 3> >& faces_a,
                         const std::vector<Point_2>& uv_b, const std::vector<std::array<std::size_t, 3> >& faces_b,
@@ -156,79 +160,261 @@ Error_code overlay_maps(const std::vector<Point_2>& uv_a, const std::vector<std:
 {
   using namespace overlay_detail;
   out = Map_overlay();
-  Map_arrangement arr_a, arr_b;
-  Error_code ec = map_arrangement(uv_a, faces_a, arr_a);
-  if(ec != OK) return ec;
-  ec = map_arrangement(uv_b, faces_b, arr_b);
-  if(ec != OK) return ec;
-  Overlay_arrangement arr;
-  Origin_overlay_traits traits;
-  CGAL::overlay(arr_a, arr_b, arr, traits);
+  if(faces_a.empty() || faces_b.empty()) return ERROR_INVALID_EMBEDDING;
+  Indexed_map A, B;
+  if(A.build(faces_a) != OK || B.build(faces_b) != OK) return ERROR_INVALID_EMBEDDING;
+  for(const Point_2& q : uv_a) A.p.emplace_back(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
+  for(const Point_2& q : uv_b) B.p.emplace_back(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
+  const K::Orientation_2 orientation = K().orientation_2_object();
 
-  std::unordered_map<const void*, std::size_t> index;
-  out.points.reserve(arr.number_of_vertices());
-  out.features.reserve(arr.number_of_vertices());
-  for(auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v)
+  // the overlay's point of each vertex of A and of B; a vertex of A at the coordinates of a vertex of B is the same
+  std::vector<std::size_t> of_a(uv_a.size(), none), of_b(uv_b.size(), none), same_b(uv_a.size(), none);
   {
-    index.emplace(&*v, out.points.size());
-    out.points.push_back(v->point());
-    out.features.push_back(v->data());
-    // inside an edge of each map
-    if(v->data()[0][1] != no_face && v->data()[1][1] != no_face) ++out.crossings;
+    std::map<std::pair<double, double>, std::size_t> at;
+    for(std::size_t j = 0; j < uv_b.size(); ++j)
+      if(!at.emplace(std::make_pair(CGAL::to_double(uv_b[j].x()), CGAL::to_double(uv_b[j].y())), j).second)
+        return ERROR_INVALID_EMBEDDING; // two vertices of B at one point
+    std::vector<char> taken(uv_b.size(), 0);
+    for(std::size_t i = 0; i < uv_a.size(); ++i)
+    {
+      const auto it = at.find(std::make_pair(CGAL::to_double(uv_a[i].x()), CGAL::to_double(uv_a[i].y())));
+      if(it == at.end()) continue;
+      if(taken[it->second]) return ERROR_INVALID_EMBEDDING; // two vertices of A at one point
+      taken[it->second] = 1;
+      same_b[i] = it->second;
+    }
   }
+  std::unordered_map<std::uint64_t, std::size_t> crossing; // edge of A * edges of B + edge of B -> point
+  const std::uint64_t nb_edges = B.ends.size();
+
+  // where point q lies in triangle t of map M (a vertex, on an edge, inside), q known to be in the closed triangle
+  auto feature_in = [&](const Indexed_map& M, std::size_t t, const K::Point_2& q) -> Map_feature {
+    std::size_t on = none;
+    int zeros = 0;
+    for(int k = 0; k < 3; ++k)
+      if(orientation(M.corner(t, k), M.corner(t, (k + 1) % 3), q) == CGAL::COLLINEAR) { on = std::size_t(k); ++zeros; }
+    if(zeros == 0) return {{ none, none }};
+    if(zeros == 1) return {{ (*M.faces)[t][on], (*M.faces)[t][(on + 1) % 3] }};
+    // on two edge lines: their common corner (a vertex of the other map at a vertex of M was merged before)
+    for(int k = 0; k < 3; ++k) if(M.corner(t, k) == q) return {{ (*M.faces)[t][k], none }};
+    return {{ none, none }};
+  };
+  auto add_point = [&](const K::Point_2& q, const Map_feature& fa, const Map_feature& fb) {
+    out.points.push_back(q);
+    out.features.push_back({{ fa, fb }});
+    return out.points.size() - 1;
+  };
+  // the overlay point of vertex i of A, in the closed triangle tb of B
+  auto point_of_a = [&](std::size_t i, std::size_t tb) {
+    if(of_a[i] != none) return of_a[i];
+    const std::size_t j = same_b[i];
+    if(j != none) of_a[i] = of_b[j] = add_point(A.p[i], {{ i, none }}, {{ j, none }});
+    else of_a[i] = add_point(A.p[i], {{ i, none }}, feature_in(B, tb, A.p[i]));
+    return of_a[i];
+  };
+  std::vector<std::size_t> a_of_b(uv_b.size(), none);
+  for(std::size_t i = 0; i < uv_a.size(); ++i) if(same_b[i] != none) a_of_b[same_b[i]] = i;
+  auto point_of_b = [&](std::size_t j, std::size_t ta) {
+    if(of_b[j] != none) return of_b[j];
+    const std::size_t i = a_of_b[j];
+    if(i != none) of_a[i] = of_b[j] = add_point(B.p[j], {{ i, none }}, {{ j, none }});
+    else of_b[j] = add_point(B.p[j], feature_in(A, ta, B.p[j]), {{ j, none }});
+    return of_b[j];
+  };
+  // the point where edge ea of A (between the two sides of the line of edge eb of B) meets that line
+  auto cross = [&](std::size_t ea, std::size_t eb) -> Clip_point {
+    const auto& a = A.ends[ea];
+    const auto& b = B.ends[eb];
+    for(std::size_t j : b)
+      if(orientation(A.p[a[0]], A.p[a[1]], B.p[j]) == CGAL::COLLINEAR) return { Clip_point::B_VERTEX, j, none, B.p[j], true, none };
+    const auto it = crossing.find(std::uint64_t(ea) * nb_edges + eb);
+    if(it != crossing.end()) return { Clip_point::CROSSING, ea, eb, out.points[it->second], true, none };
+    const auto x = CGAL::intersection(K::Line_2(A.p[a[0]], A.p[a[1]]), K::Line_2(B.p[b[0]], B.p[b[1]]));
+    const K::Point_2* q = x ? boost::get<K::Point_2>(&*x) : nullptr;
+    if(q == nullptr) return { Clip_point::CROSSING, none, none, K::Point_2(), true, none }; // parallel: cannot happen
+    return { Clip_point::CROSSING, ea, eb, *q, true, none };
+  };
+  // the overlay point of a point of the cell (ta, tb)
+  auto materialize = [&](const Clip_point& c, std::size_t ta, std::size_t tb) {
+    if(c.kind == Clip_point::A_VERTEX) return point_of_a(c.id, tb);
+    if(c.kind == Clip_point::B_VERTEX) return point_of_b(c.id, ta);
+    const std::uint64_t key = std::uint64_t(c.id) * nb_edges + c.edge_b;
+    const auto it = crossing.find(key);
+    if(it != crossing.end()) return it->second;
+    const auto& a = A.ends[c.id];
+    const auto& b = B.ends[c.edge_b];
+    const std::size_t id = add_point(c.point, {{ a[0], a[1] }}, {{ b[0], b[1] }});
+    ++out.crossings;
+    crossing.emplace(key, id);
+    return id;
+  };
+  auto common_vertex = [&](std::size_t e, std::size_t g) {
+    for(std::size_t u : B.ends[e]) for(std::size_t v : B.ends[g]) if(u == v) return u;
+    return none;
+  };
+
+  std::vector<Clip_point> poly, next;
+  std::vector<CGAL::Orientation> side;
   std::vector<std::size_t> cell;
-  for(auto f = arr.faces_begin(); f != arr.faces_end(); ++f)
-  {
-    const std::array<std::size_t, 2> d = f->data();
-    if(f->is_unbounded())
+  std::vector<bool> corner;
+  // the cell of ta and tb, appended to `out`; false if the two triangles overlap in no area
+  bool failed = false;
+  auto clip = [&](std::size_t ta, std::size_t tb) {
+    poly.clear();
+    for(int k = 0; k < 3; ++k)
+      poly.push_back({ Clip_point::A_VERTEX, faces_a[ta][k], none, A.corner(ta, k), true, A.edge[ta][k] });
+    for(int k = 0; k < 3 && !poly.empty(); ++k)
     {
-      if(f->number_of_inner_ccbs() != 1) return ERROR_INVALID_EMBEDDING; // two domains side by side
-      continue;
+      const K::Point_2 &b0 = B.corner(tb, k), &b1 = B.corner(tb, (k + 1) % 3);
+      const std::size_t g = B.edge[tb][k];
+      side.clear();
+      bool any_out = false;
+      for(const Clip_point& c : poly)
+      {
+        side.push_back(orientation(b0, b1, c.point));
+        if(side.back() == CGAL::RIGHT_TURN) any_out = true;
+      }
+      if(!any_out) continue;
+      // where the polygon's edge from p crosses the line of g: on an edge of A, a crossing; on an edge of B
+      // (the line of an earlier edge of tb), the corner of tb the two share
+      auto meet = [&](const Clip_point& p) -> Clip_point {
+        if(p.support_a) return cross(p.support, g);
+        const std::size_t j = common_vertex(p.support, g);
+        return { Clip_point::B_VERTEX, j, none, B.p[j], true, none };
+      };
+      next.clear();
+      const std::size_t m = poly.size();
+      for(std::size_t i = 0; i < m; ++i)
+      {
+        const Clip_point& p = poly[i];
+        const CGAL::Orientation sp = side[i], sq = side[(i + 1) % m];
+        if(sp != CGAL::RIGHT_TURN)
+        {
+          next.push_back(p);
+          if(sq == CGAL::RIGHT_TURN)
+          {
+            // leaving: along the line of g from p (on it) or from the crossing
+            if(sp == CGAL::COLLINEAR) { next.back().support_a = false; next.back().support = g; }
+            else
+            {
+              next.push_back(meet(p));
+              next.back().support_a = false;
+              next.back().support = g;
+            }
+          }
+        }
+        else if(sq == CGAL::LEFT_TURN)
+        {
+          // entering: from the crossing along the edge p was on
+          next.push_back(meet(p));
+          next.back().support_a = p.support_a;
+          next.back().support = p.support;
+        }
+      }
+      for(const Clip_point& c : next)
+        if(c.kind == Clip_point::CROSSING && c.id == none) { failed = true; return false; }
+      poly.swap(next);
     }
-    // a bounded cell outside either domain, or a cell with a hole: the maps do not cover one domain
-    if(d[0] == no_face || d[1] == no_face || f->number_of_inner_ccbs() != 0) return ERROR_INVALID_EMBEDDING;
-    ++out.cells;
-    cell.clear();
-    auto c = f->outer_ccb(), done = c;
-    do cell.push_back(index.at(&*c->target())); while(++c != done);
-    const std::size_t m = cell.size();
-    // corners: left turns; a right turn means the cell is not convex (not an intersection of triangles)
-    std::vector<bool> corner(m);
-    for(std::size_t i = 0; i < m; ++i)
+    if(poly.size() < 3) return false;
+    // no area unless some point is a strict left turn (two pieces of one edge make no corner)
+    const std::size_t n = poly.size();
+    corner.assign(n, false);
+    bool any = false;
+    for(std::size_t i = 0; i < n; ++i)
     {
-      const CGAL::Orientation o = CGAL::orientation(out.points[cell[(i + m - 1) % m]], out.points[cell[i]],
-                                                    out.points[cell[(i + 1) % m]]);
-      if(o == CGAL::RIGHT_TURN) return ERROR_INVALID_EMBEDDING;
+      const Clip_point &p = poly[(i + n - 1) % n], &c = poly[i], &q = poly[(i + 1) % n];
+      if(p.support_a == c.support_a && p.support == c.support) continue;
+      const CGAL::Orientation o = orientation(p.point, c.point, q.point);
+      if(o == CGAL::RIGHT_TURN) { failed = true; return false; } // not convex: cannot happen
       corner[i] = (o == CGAL::LEFT_TURN);
+      any = any || corner[i];
     }
-    std::size_t apex = no_face;
-    for(std::size_t i = 0; i < m && apex == no_face; ++i)
-      if(corner[i] && corner[(i + m - 1) % m] && corner[(i + 1) % m]) apex = i;
-    if(apex != no_face)
+    if(!any) return false;
+    // the points of the overlay, the same point twice in a row (a crossing at a point already listed) once
+    cell.clear();
+    std::vector<bool> cell_corner;
+    for(std::size_t i = 0; i < n; ++i)
     {
-      for(std::size_t k = 1; k + 1 < m; ++k)
+      const std::size_t id = materialize(poly[i], ta, tb);
+      if(!cell.empty() && cell.back() == id) { cell_corner.back() = cell_corner.back() || corner[i]; continue; }
+      cell.push_back(id);
+      cell_corner.push_back(corner[i]);
+    }
+    while(cell.size() > 1 && cell.front() == cell.back())
+    {
+      cell_corner.front() = cell_corner.front() || cell_corner.back();
+      cell.pop_back();
+      cell_corner.pop_back();
+    }
+    if(cell.size() < 3) { failed = true; return false; } // a corner lost: cannot happen
+    ++out.cells;
+    triangulate_cell(cell, cell_corner, {{ ta, tb }}, out);
+    return true;
+  };
+
+  // the faces of A in breadth-first order, each started from the face of B found for the one before it
+  std::vector<std::size_t> seed(faces_a.size(), none), stamp(faces_b.size(), none), cells_of_b(faces_b.size(), 0);
+  std::vector<char> queued_a(faces_a.size(), 0);
+  std::deque<std::size_t> order{ 0 };
+  queued_a[0] = 1;
+  seed[0] = 0;
+  std::deque<std::size_t> queue;
+  std::size_t walk_state = 0;
+  while(!order.empty())
+  {
+    const std::size_t ta = order.front();
+    order.pop_front();
+    // the face of B holding the centroid of ta (strictly inside ta): a walk towards it, bounded
+    const K::Point_2 c = CGAL::centroid(A.corner(ta, 0), A.corner(ta, 1), A.corner(ta, 2));
+    std::size_t tb = seed[ta];
+    for(std::size_t steps = 0;; ++steps)
+    {
+      if(steps > 2 * faces_b.size() + 8) return ERROR_INVALID_EMBEDDING;
+      // the edges tried from a varying first one: a walk that cannot cycle for ever
+      walk_state = walk_state * 1103515245u + 12345u;
+      const int first = int((walk_state >> 16) % 3);
+      std::size_t to = none;
+      bool outside = false;
+      for(int d = 0; d < 3 && to == none && !outside; ++d)
       {
-        out.triangles.push_back({{ cell[apex], cell[(apex + k) % m], cell[(apex + k + 1) % m] }});
-        out.cell_faces.push_back(d);
+        const int k = (first + d) % 3;
+        if(orientation(B.corner(tb, k), B.corner(tb, (k + 1) % 3), c) != CGAL::RIGHT_TURN) continue;
+        if(B.across[tb][k] == none) outside = true;
+        else to = B.across[tb][k];
+      }
+      if(outside) return ERROR_INVALID_EMBEDDING; // a point of A outside B's domain
+      if(to == none) break;
+      tb = to;
+    }
+    // the faces of B overlapping ta: from tb, across the edges of B from cell to cell
+    std::size_t found = 0;
+    queue.assign(1, tb);
+    stamp[tb] = ta;
+    while(!queue.empty())
+    {
+      const std::size_t t = queue.front();
+      queue.pop_front();
+      if(!clip(ta, t)) { if(failed) return ERROR_INVALID_EMBEDDING; continue; }
+      ++found;
+      ++cells_of_b[t];
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t u = B.across[t][k];
+        if(u != none && stamp[u] != ta) { stamp[u] = ta; queue.push_back(u); }
       }
     }
-    else
+    if(found == 0) return ERROR_INVALID_EMBEDDING;
+    for(int k = 0; k < 3; ++k)
     {
-      K::FT x(0), y(0);
-      int corners = 0;
-      for(std::size_t i = 0; i < m; ++i)
-        if(corner[i]) { x += out.points[cell[i]].x(); y += out.points[cell[i]].y(); ++corners; }
-      const std::size_t center = out.points.size();
-      out.points.emplace_back(x / corners, y / corners);
-      out.features.push_back({{ Map_feature{{ no_face, no_face }}, Map_feature{{ no_face, no_face }} }});
-      ++out.centers;
-      for(std::size_t i = 0; i < m; ++i)
-      {
-        out.triangles.push_back({{ center, cell[i], cell[(i + 1) % m] }});
-        out.cell_faces.push_back(d);
-      }
+      const std::size_t u = A.across[ta][k];
+      if(u != none && !queued_a[u]) { queued_a[u] = 1; seed[u] = tb; order.push_back(u); }
     }
   }
+  // every face of A reached (A connected), every face of B and every vertex of either map in the overlay
+  for(char q : queued_a) if(!q) return ERROR_INVALID_EMBEDDING;
+  for(std::size_t n : cells_of_b) if(n == 0) return ERROR_INVALID_EMBEDDING;
+  for(std::size_t i : of_a) if(i == none) return ERROR_INVALID_EMBEDDING;
+  for(std::size_t j : of_b) if(j == none) return ERROR_INVALID_EMBEDDING;
   return OK;
 }
 

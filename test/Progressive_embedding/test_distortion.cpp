@@ -23,7 +23,10 @@
 #include <CGAL/Progressive_embedding/internal/disk_generators.h>
 #include <CGAL/Progressive_embedding/internal/tutte_failure_protocol.h>
 #include <CGAL/Progressive_embedding/internal/block_cg.h>
+#include <CGAL/Progressive_embedding/internal/rotation_svd_2x2.h>
 #include <Eigen/SparseCholesky>
+#include <Eigen/SVD>
+#include <Eigen/LU>
 
 #include <algorithm>
 #include <cmath>
@@ -584,8 +587,45 @@ void test_large_map_iterative_steps()
   CHECK(e2 == e1 && s2.report.is_valid() && same, "230x230 disk: the parallel optimization gives the same map bit for bit");
 }
 
+// The optimizer's closed-form SVD of a 2x2 Jacobian (det > 0) against Eigen's JacobiSVD: two rotations, the
+// product back to J, the same singular values; near-similarities, thin and huge Jacobians included.
+static void test_rotation_svd_2x2()
+{
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> d(-1, 1);
+  double worst_product = 0, worst_values = 0, worst_det = 0, worst_rotation = 0;
+  std::size_t n = 0, refused = 0;
+  for(int i = 0; i < 200000; ++i)
+  {
+    Eigen::Matrix2d J;
+    J << d(rng), d(rng), d(rng), d(rng);
+    if(i % 3 == 0) J *= std::pow(10., 8 * d(rng));                       // scales from 1e-8 to 1e8
+    if(i % 5 == 0) { J(1, 1) = J(0, 0); J(1, 0) = -J(0, 1); }             // a similarity: s1 == s2
+    if(i % 7 == 0) J(1, 0) = J(0, 0) * J(1, 1) / J(0, 1) * (1 + 1e-9 * d(rng)); // thin: s2 << s1
+    if(!(J.determinant() > 0)) { Eigen::Matrix2d U, V; Eigen::Vector2d s; if(!PE::internal::rotation_svd_2x2(J, U, s, V)) ++refused; continue; }
+    ++n;
+    Eigen::Matrix2d U, V;
+    Eigen::Vector2d s;
+    if(!PE::internal::rotation_svd_2x2(J, U, s, V)) { CHECK(false, "closed-form SVD of a matrix with det > 0"); return; }
+    worst_product = (std::max)(worst_product, (U * s.asDiagonal() * V.transpose() - J).norm() / J.norm());
+    const Eigen::JacobiSVD<Eigen::Matrix2d> svd(J);
+    worst_values = (std::max)(worst_values, (svd.singularValues() - s).norm() / s(0));
+    worst_det = (std::max)(worst_det, std::abs(s(0) * s(1) - J.determinant()) / J.determinant());
+    worst_rotation = (std::max)({ worst_rotation, std::abs(U.determinant() - 1), std::abs(V.determinant() - 1),
+                                  (U.transpose() * U - Eigen::Matrix2d::Identity()).norm(),
+                                  (V.transpose() * V - Eigen::Matrix2d::Identity()).norm() });
+    if(!(s(0) >= s(1) && s(1) > 0)) { CHECK(false, "s1 >= s2 > 0"); return; }
+  }
+  std::cout << "closed-form 2x2 SVD: " << n << " matrices, worst |U S V^T - J| / |J| " << worst_product
+            << ", singular values against JacobiSVD " << worst_values << ", s1 s2 against det " << worst_det
+            << ", rotations " << worst_rotation << "; " << refused << " with det <= 0 refused\n";
+  CHECK(worst_product < 1e-14 && worst_values < 1e-14 && worst_det < 1e-14 && worst_rotation < 1e-14,
+        "closed-form 2x2 SVD: rotations, J recovered, JacobiSVD's singular values, s1 s2 == det J");
+}
+
 int main(int argc, char** argv)
 {
+  test_rotation_svd_2x2();
   test_block_cg();
   test_large_map_iterative_steps();
   test_hand_computed();

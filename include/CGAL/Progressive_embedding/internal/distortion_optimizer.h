@@ -40,6 +40,7 @@
 #include <CGAL/Progressive_embedding/internal/holes_domain.h>
 #include <CGAL/Progressive_embedding/internal/symmetric_dirichlet.h>
 #include <CGAL/Progressive_embedding/internal/block_cg.h>
+#include <CGAL/Progressive_embedding/internal/rotation_svd_2x2.h>
 
 #include <CGAL/Real_timer.h>
 #include <CGAL/tags.h>
@@ -53,7 +54,6 @@
 #include <Eigen/Core>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
-#include <Eigen/SVD>
 #include <Eigen/LU>
 
 #include <algorithm>
@@ -756,10 +756,9 @@ private:
       Eigen::Matrix2d J;
       jacobian(f, X_, Y_, J);
       if(!(J.determinant() > 0)) return false;
-      Eigen::JacobiSVD<Eigen::Matrix2d> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
-      Eigen::Matrix2d U = svd.matrixU(), V = svd.matrixV();
-      Eigen::Vector2d s = svd.singularValues();
-      if(U.determinant() < 0) { U.col(1) *= -1; V.col(1) *= -1; } // both rotations (det J > 0)
+      Eigen::Matrix2d U, V;
+      Eigen::Vector2d s;
+      if(!rotation_svd_2x2(J, U, s, V)) return false;
       Isotropic_terms it;
       if(!isotropic_terms(s_.energy, s(0), s(1), it)) return false;
       const double w = frames_[f].weight;

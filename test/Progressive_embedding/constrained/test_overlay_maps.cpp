@@ -7,8 +7,9 @@
 // (internal/cross/overlay_by_arrangement.h): the same cells (the same pairs of triangles), crossings, points
 // and triangles, and the triangulated overlay certified (internal/cross/certify_overlay.h, and
 // check_embedding() in exact rationals). The cases: two random triangulations (every crossing in general
-// position), two grids whose vertices and edges partly coincide (vertices of one on the other's vertices and
-// edges, edges along edges), a map against itself; two maps of different domains refused by both.
+// position), grids whose vertices and edges partly coincide (vertices of one on the other's vertices and
+// edges, edges along edges, borders that interleave), each both ways, a map against itself; faces that are not
+// triangles of the points and two maps of different domains refused.
 
 #include <CGAL/Progressive_embedding/internal/cross/overlay_maps.h>
 #include <CGAL/Progressive_embedding/internal/cross/overlay_by_arrangement.h>
@@ -141,12 +142,35 @@ PE_TEST_GROUP(cross_overlay)
   RUN(compare_overlays(delaunay_map(square_points(0, 5, rng)), delaunay_map(square_points(0, 9, rng)), "grids 5 and 9"));
   // grids of 4 and 7 with random points: vertices on edges, crossings at vertices
   RUN(compare_overlays(delaunay_map(square_points(40, 4, rng)), delaunay_map(square_points(60, 7, rng)), "grids 4 and 7 with random points"));
+  // the other way: every other vertex of A inside an edge of B (on the border, along the axes, on diagonals)
+  RUN(compare_overlays(delaunay_map(square_points(0, 9, rng)), delaunay_map(square_points(0, 5, rng)), "grids 9 and 5"));
+  {
+    // borders that interleave (border edges overlapping in part), a vertex of B inside an edge of A and one of A
+    // inside an edge of B, A's centre on a diagonal of B collinear with edges of A
+    const std::vector<Overlay_point> quarters{ { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0.25, 0 }, { 0.75, 0 },
+      { 0.25, 1 }, { 0.75, 1 }, { 0, 0.25 }, { 0, 0.75 }, { 1, 0.25 }, { 1, 0.75 }, { 0.5, 0.25 }, { 0.5, 0.75 },
+      { 0.25, 0.5 }, { 0.75, 0.5 } };
+    const Planar_map halves = delaunay_map(square_points(0, 3, rng));
+    RUN(compare_overlays(halves, delaunay_map(quarters), "grid 3 and interleaved quarters"));
+    RUN(compare_overlays(delaunay_map(quarters), halves, "interleaved quarters and grid 3"));
+  }
   RUN(compare_overlays(random_a, random_a, "a map and itself"));
   {
     PE::internal::Map_overlay o;
     const PE::Error_code ec = PE::internal::overlay_maps(random_a.uv, random_a.faces, random_a.uv, random_a.faces, o);
     CHECK(ec == PE::OK && o.crossings == 0 && o.cells == random_a.faces.size() && o.points.size() == random_a.uv.size(),
           "a map and itself: the overlay is the map");
+  }
+  // a face with a vertex out of range, a face with a repeated vertex: refused
+  {
+    Planar_map bad = random_b;
+    PE::internal::Map_overlay o;
+    bad.faces[3][1] = bad.uv.size();
+    CHECK(PE::internal::overlay_maps(random_a.uv, random_a.faces, bad.uv, bad.faces, o) == PE::ERROR_INVALID_EMBEDDING,
+          "a vertex index out of range: refused");
+    bad.faces[3][1] = bad.faces[3][0];
+    CHECK(PE::internal::overlay_maps(random_a.uv, random_a.faces, bad.uv, bad.faces, o) == PE::ERROR_INVALID_EMBEDDING,
+          "a face with a repeated vertex: refused");
   }
   // B on a smaller square: refused by both
   {

@@ -17,7 +17,7 @@
 // and the energies are not computed.
 
 #include <CGAL/Progressive_embedding/Embedding_report.h>
-#include <CGAL/Progressive_embedding/check_embedding.h>
+#include <CGAL/Progressive_embedding/internal/check_embedding_impl.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -53,7 +53,7 @@ inline Embedding_report certify_overlay(const std::vector<CGAL::Epeck::Point_2>&
   auto full = [&]() {
     auto exact_uv = soup.add_property_map<svertex, EK::Point_2>("v:pe_overlay_uv").first;
     for(std::size_t i = 0; i < points.size(); ++i) exact_uv[svertex(i)] = points[i];
-    return check_embedding(soup, exact_uv);
+    return check_embedding_impl(soup, exact_uv);
   };
   Indexed_disk<Soup> disk;
   if(make_indexed_disk(soup, boost::graph_traits<Soup>::null_halfedge(), disk) != OK) return full();

@@ -23,6 +23,7 @@
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/intersections.h>
+#include <CGAL/version.h>
 
 #include <algorithm>
 #include <array>
@@ -103,9 +104,12 @@ struct Indexed_map
   std::vector<std::array<std::size_t, 3> > edge, across;
   std::vector<std::array<std::size_t, 2> > ends; // per edge id
 
-  Error_code build(const std::vector<std::array<std::size_t, 3> >& f)
+  Error_code build(const std::vector<std::array<std::size_t, 3> >& f, std::size_t vertices)
   {
     faces = &f;
+    for(const auto& t : f)
+      for(int k = 0; k < 3; ++k)
+        if(t[k] >= vertices || t[k] == t[(k + 1) % 3]) return ERROR_INVALID_EMBEDDING; // not a triangle of the points
     edge.assign(f.size(), {{ none, none, none }});
     across.assign(f.size(), {{ none, none, none }});
     std::unordered_map<std::uint64_t, std::pair<std::size_t, std::size_t> > first; // edge -> (face, k)
@@ -151,8 +155,9 @@ struct Clip_point
 } // namespace overlay_detail
 
 // `uv_a`/`faces_a` and `uv_b`/`faces_b`: two valid maps (counterclockwise triangles, coordinates in
-// double) of one domain. Returns ERROR_INVALID_EMBEDDING if either is not a valid map or if they do
-// not cover the same domain (a face or a vertex of one map outside the other's, a walk that leaves B).
+// double, every vertex in a face) of one convex domain, each certified by the caller. Returns
+// ERROR_INVALID_EMBEDDING if a face is not a triangle of the points, if the faces do not make a consistent
+// surface, or if the maps do not cover the same domain (a face or a vertex of one outside the other's).
 template <class Point_2>
 Error_code overlay_maps(const std::vector<Point_2>& uv_a, const std::vector<std::array<std::size_t, 3> >& faces_a,
                         const std::vector<Point_2>& uv_b, const std::vector<std::array<std::size_t, 3> >& faces_b,
@@ -162,7 +167,7 @@ Error_code overlay_maps(const std::vector<Point_2>& uv_a, const std::vector<std:
   out = Map_overlay();
   if(faces_a.empty() || faces_b.empty()) return ERROR_INVALID_EMBEDDING;
   Indexed_map A, B;
-  if(A.build(faces_a) != OK || B.build(faces_b) != OK) return ERROR_INVALID_EMBEDDING;
+  if(A.build(faces_a, uv_a.size()) != OK || B.build(faces_b, uv_b.size()) != OK) return ERROR_INVALID_EMBEDDING;
   for(const Point_2& q : uv_a) A.p.emplace_back(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
   for(const Point_2& q : uv_b) B.p.emplace_back(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
   const K::Orientation_2 orientation = K().orientation_2_object();
@@ -230,7 +235,11 @@ Error_code overlay_maps(const std::vector<Point_2>& uv_a, const std::vector<std:
     const auto it = crossing.find(std::uint64_t(ea) * nb_edges + eb);
     if(it != crossing.end()) return { Clip_point::CROSSING, ea, eb, out.points[it->second], true, none };
     const auto x = CGAL::intersection(K::Line_2(A.p[a[0]], A.p[a[1]]), K::Line_2(B.p[b[0]], B.p[b[1]]));
+#if CGAL_VERSION_NR >= 1060000000
+    const K::Point_2* q = x ? std::get_if<K::Point_2>(&*x) : nullptr;
+#else
     const K::Point_2* q = x ? boost::get<K::Point_2>(&*x) : nullptr;
+#endif
     if(q == nullptr) return { Clip_point::CROSSING, none, none, K::Point_2(), true, none }; // parallel: cannot happen
     return { Clip_point::CROSSING, ea, eb, *q, true, none };
   };
@@ -367,9 +376,21 @@ Error_code overlay_maps(const std::vector<Point_2>& uv_a, const std::vector<std:
     // the face of B holding the centroid of ta (strictly inside ta): a walk towards it, bounded
     const K::Point_2 c = CGAL::centroid(A.corner(ta, 0), A.corner(ta, 1), A.corner(ta, 2));
     std::size_t tb = seed[ta];
+    auto holds = [&](std::size_t t) {
+      for(int k = 0; k < 3; ++k)
+        if(orientation(B.corner(t, k), B.corner(t, (k + 1) % 3), c) == CGAL::RIGHT_TURN) return false;
+      return true;
+    };
     for(std::size_t steps = 0;; ++steps)
     {
-      if(steps > 2 * faces_b.size() + 8) return ERROR_INVALID_EMBEDDING;
+      if(steps > 2 * faces_b.size() + 8)
+      {
+        // a visibility walk in a triangulation that is not Delaunay may take long: the faces of B in turn
+        tb = none;
+        for(std::size_t t = 0; t < faces_b.size() && tb == none; ++t) if(holds(t)) tb = t;
+        if(tb == none) return ERROR_INVALID_EMBEDDING; // a point of A outside B's domain
+        break;
+      }
       // the edges tried from a varying first one: a walk that cannot cycle for ever
       walk_state = walk_state * 1103515245u + 12345u;
       const int first = int((walk_state >> 16) % 3);

@@ -265,7 +265,7 @@ Error_code overlay_maps(const std::vector<Point_2>& uv_a, const std::vector<std:
   std::vector<Clip_point> poly, next;
   std::vector<CGAL::Orientation> side;
   std::vector<std::size_t> cell;
-  std::vector<bool> corner;
+  std::vector<bool> corner, cell_corner; // kept across cells: no allocation per cell
   // the cell of ta and tb, appended to `out`; false if the two triangles overlap in no area
   bool failed = false;
   auto clip = [&](std::size_t ta, std::size_t tb) {
@@ -341,7 +341,7 @@ Error_code overlay_maps(const std::vector<Point_2>& uv_a, const std::vector<std:
     if(!any) return false;
     // the points of the overlay, the same point twice in a row (a crossing at a point already listed) once
     cell.clear();
-    std::vector<bool> cell_corner;
+    cell_corner.clear();
     for(std::size_t i = 0; i < n; ++i)
     {
       const std::size_t id = materialize(poly[i], ta, tb);

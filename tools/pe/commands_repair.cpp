@@ -79,7 +79,10 @@ void add_optimization(Result& r, const PE::Optimization_statistics& os) { PE::fo
 
 std::string optimization_summary(const PE::Optimization_statistics& os, PE::Error_code status)
 {
-  const char* end = os.converged ? " (converged)" : status == PE::ERROR_BUDGET_EXHAUSTED ? " (stopped at its time budget)" : "";
+  // the tool's callback never cancels: unconverged and out of budget, either the time or the iteration limit stopped it
+  const char* end = os.converged ? " (converged)"
+                  : status != PE::ERROR_BUDGET_EXHAUSTED ? ""
+                  : os.time_budget_reached ? " (stopped at its time budget)" : " (stopped at its iteration limit)";
   return std::to_string(os.iterations) + " iterations" + end +
          ", mean sym. Dirichlet " + format_number(os.energy_before) + " -> " + format_number(os.energy_after);
 }

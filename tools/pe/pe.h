@@ -163,7 +163,8 @@ void add_statistics(Result& r, const PE::Progressive_embedding_statistics& st);
 void add_statistics(Result& r, const PE::Pipeline_statistics& s);
 std::string statistics_summary(const PE::Progressive_embedding_statistics& st);
 void add_optimization(Result& r, const PE::Optimization_statistics& os);
-// "N iterations (converged)", or "(stopped at its time budget)" when `status` says the budget ran out
+// "N iterations (converged)", or "(stopped at its time budget)" / "(stopped at its iteration limit)" when `status`
+// says a budget ran out
 std::string optimization_summary(const PE::Optimization_statistics& os, PE::Error_code status = PE::OK);
 
 } // namespace pe_tool

@@ -32,6 +32,9 @@ struct Optimization_statistics
   std::size_t iterations = 0;
   /// `true` if the convergence criterion was met
   bool converged = false;
+  /// `true` if the optimization stopped because its time budget (`maximum_running_time`) ran out; when it stopped
+  /// unconverged with this `false`, its iteration limit (`number_of_iterations`) or the `callback` stopped it
+  bool time_budget_reached = false;
   /// area-weighted mean symmetric Dirichlet energy of the input, as `check_embedding()` reports it (`mean_energy_3d`)
   double energy_before = 0;
   /// the same for the output (with a free border both are measured against the 3D triangles scaled to the current border area)

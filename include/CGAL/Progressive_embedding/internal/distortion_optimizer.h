@@ -244,7 +244,7 @@ public:
     std::size_t quiet = 0; // consecutive iterations below the tolerance
     for(std::size_t it = 0; it < s_.max_iterations; ++it)
     {
-      if(timer.time() > s_.time_budget) break;
+      if(timer.time() > s_.time_budget) { stats.time_budget_reached = true; break; }
       const double E0 = E;
       // A global step, then a sweep of per-vertex steps if the global step was held back by the
       // first face to degenerate (far from smooth: tiny faces), where each vertex fixes its own

@@ -17,11 +17,12 @@
 #              polygon_map_benchmark (polygon_maps.{csv,md}: maps onto Hilbert, star and spiral borders,
 #              about 15 minutes); --polygon-obj adds an OBJ disk with texture coordinates (repeatable).
 # --cross      also runs cross_benchmark (cross_parameterization.{csv,md}: mushroom and lion-head against
-#              their remeshed copies, 5, 20 and 50 landmarks, about a minute); with --cross-pairs DIR also
+#              their remeshed copies, 5, 20 and 50 landmarks, each without and with the composed distortion,
+#              about two minutes); with --cross-pairs DIR also
 #              cross_parameterization_pairs.{csv,md}: two resolutions of one surface, 0, 5, 20 and 50 landmarks,
 #              from the OBJ files of OptCuts' inputs (its input/benchmark and input/scalability/lucy_o folders)
 #              that DIR holds: cat, cat_f1500, bishop_part, bishop_part_f1000, lucy_o_f12067, _f24136, _f48275
-#              (about 5 minutes), and cross_protocol_floor.{csv,md} on the same pairs (what the landmarks and the
+#              (about 10 minutes), and cross_protocol_floor.{csv,md} on the same pairs (what the landmarks and the
 #              border rule allow before any map; NumPy).
 # --build DIR  the CMake build directory (default: build); the drivers are built there.
 # --out DIR    the results folder (default: benchmark/results), e.g. a copy to compare with.
@@ -113,10 +114,10 @@ if [ "$polygons" = 1 ]; then
 fi
 if [ "$cross" = 1 ]; then
   cmake --build "$build" --target cross_benchmark
-  "$build/bin/cross_benchmark" "$build/cgal_data/data" "$results/cross_parameterization"
+  "$build/bin/cross_benchmark" "$build/cgal_data/data" "$results/cross_parameterization" --composed both
   if [ -n "$cross_pairs" ]; then
     d=$cross_pairs
-    "$build/bin/cross_benchmark" "$build/cgal_data/data" "$results/cross_parameterization_pairs" --counts 0,5,20,50 \
+    "$build/bin/cross_benchmark" "$build/cgal_data/data" "$results/cross_parameterization_pairs" --counts 0,5,20,50 --composed both \
       --pairs "$d/cat_f1500.obj:$d/cat.obj,$d/bishop_part_f1000.obj:$d/bishop_part.obj,$d/lucy_o_f24136.obj:$d/lucy_o_f12067.obj,$d/lucy_o_f48275.obj:$d/lucy_o_f24136.obj"
     python3 "$repo/benchmark/Progressive_embedding/cross_protocol_floor.py" "$d/cat_f1500.obj:$d/cat.obj" \
       "$d/bishop_part_f1000.obj:$d/bishop_part.obj" "$d/lucy_o_f24136.obj:$d/lucy_o_f12067.obj" \

@@ -12,6 +12,10 @@
 // meshes (the certified overlay of the two maps): their vertices, certificate and seconds (in the total).
 //
 //   cross_benchmark DATA_DIR OUT_PREFIX [--meshes a.off,b.off] [--counts 5,20,50] [--pairs A1:B1,A2:B2]
+//                   [--composed on|off|both]
+//
+// --composed: A's map optimized for the composed map's distortion (named parameter composed_distortion; on by
+// default) or not; `both` runs every case without it, then with it (side by side in the tables).
 //
 // With --pairs, A and B are two given files (e.g. two resolutions of one surface: the true image of a vertex of
 // A is then its own position, up to the distance between the two discretizations) instead of a mesh and its
@@ -47,6 +51,7 @@ namespace {
 struct Row
 {
   std::string mesh;
+  bool composed = true;
   std::size_t count = 0, landmarks = 0, va = 0, vb = 0, added = 0, vc = 0;
   std::string status;
   bool valid_a = false, valid_b = false, exact = false, valid_c = false;
@@ -54,7 +59,7 @@ struct Row
   // landmarks and the border rule cannot fix: a landmark pair of two discretizations is apart by the distance between
   // the two vertices, and the border is matched by relative arc length, not by position)
   double error_landmarks = -1, error_border = 0, error_inside = 0;
-  double mean_error = 0, max_error = 0, t_b = 0, t_a = 0, t_location = 0, t_compatible = 0, t_total = 0;
+  double mean_error = 0, max_error = 0, t_b = 0, t_a = 0, t_composed = 0, t_location = 0, t_compatible = 0, t_total = 0;
 };
 
 std::vector<std::string> split(const std::string& s, char separator = ',')
@@ -68,11 +73,12 @@ std::vector<std::string> split(const std::string& s, char separator = ',')
 std::string base_name(const std::string& path) { return path.substr(path.find_last_of('/') + 1); }
 
 // `file_b` empty: B is A remeshed
-Row run(const std::string& file_a, const std::string& file_b, const std::string& name, std::size_t count)
+Row run(const std::string& file_a, const std::string& file_b, const std::string& name, std::size_t count, bool composed)
 {
   Row r;
   r.mesh = name;
   r.count = count;
+  r.composed = composed;
   SM a, b;
   if(!CGAL::IO::read_polygon_mesh(file_a, a) || !CGAL::IO::read_polygon_mesh(file_b.empty() ? file_a : file_b, b))
   {
@@ -99,7 +105,8 @@ Row run(const std::string& file_a, const std::string& file_b, const std::string&
   PE::Cross_parameterization_statistics st;
   SM compatible_a, compatible_b;
   const PE::Error_code ec = PE::cross_parameterization(a, b, landmarks, loc,
-    PE::parameters::compatible_meshes(std::make_pair(&compatible_a, &compatible_b), PE::parameters::statistics(&st)));
+    PE::parameters::compatible_meshes(std::make_pair(&compatible_a, &compatible_b),
+      PE::parameters::composed_distortion(composed, PE::parameters::statistics(&st))));
   r.status = PE::get_error_name(ec);
   r.va = st.vertices_a;
   r.vb = st.vertices_b;
@@ -109,6 +116,7 @@ Row run(const std::string& file_a, const std::string& file_b, const std::string&
   r.exact = st.landmarks_exact;
   r.t_b = st.seconds_map_b;
   r.t_a = st.seconds_map_a;
+  r.t_composed = st.seconds_composed;
   r.t_location = st.seconds_location;
   r.vc = st.compatible_vertices;
   r.valid_c = st.report_compatible.is_valid();
@@ -143,13 +151,15 @@ int main(int argc, char** argv)
 {
   if(argc < 3)
   {
-    std::cerr << "usage: cross_benchmark DATA_DIR OUT_PREFIX [--meshes a.off,b.off] [--counts 5,20,50]\n";
+    std::cerr << "usage: cross_benchmark DATA_DIR OUT_PREFIX [--meshes a.off,b.off] [--counts 5,20,50] [--pairs A:B,...]"
+                 " [--composed on|off|both]\n";
     return 2;
   }
   const std::string dir = argv[1], out = argv[2];
   std::vector<std::string> meshes = { "mushroom.off", "lion-head.off" };
   std::vector<std::size_t> counts = { 5, 20, 50 };
   std::vector<std::pair<std::string, std::string> > pairs;
+  std::vector<bool> composed = { true };
   for(int i = 3; i + 1 < argc; i += 2)
   {
     const std::string o = argv[i], v = argv[i + 1];
@@ -165,6 +175,13 @@ int main(int argc, char** argv)
       }
       meshes.clear();
     }
+    else if(o == "--composed")
+    {
+      if(v == "on") composed = { true };
+      else if(v == "off") composed = { false };
+      else if(v == "both") composed = { false, true };
+      else { std::cerr << "--composed: expected on, off or both, got " << v << "\n"; return 2; }
+    }
     else { std::cerr << "unknown option " << o << "\n"; return 2; }
   }
   std::vector<std::array<std::string, 3> > jobs; // A file, B file (empty: A remeshed), name
@@ -173,28 +190,29 @@ int main(int argc, char** argv)
   std::vector<Row> rows;
   for(const auto& job : jobs)
     for(std::size_t k : counts)
-    {
-      const std::string& m = job[2];
-      rows.push_back(run(job[0], job[1], m, k));
-      const Row& r = rows.back();
-      std::cout << m << " K=" << k << ": " << r.status << ", mean error " << r.mean_error << ", max " << r.max_error
-                << ", added " << r.added << ", compatible " << r.vc
-                << " vertices (" << r.t_compatible << " s), " << r.t_total << " s" << std::endl;
-    }
+      for(bool c : composed)
+      {
+        const std::string& m = job[2];
+        rows.push_back(run(job[0], job[1], m, k, c));
+        const Row& r = rows.back();
+        std::cout << m << " K=" << k << (c ? " composed" : "") << ": " << r.status << ", mean error " << r.mean_error
+                  << ", max " << r.max_error << ", added " << r.added << ", compatible " << r.vc
+                  << " vertices (" << r.t_compatible << " s), " << r.t_total << " s" << std::endl;
+      }
 
   std::ofstream csv(out + ".csv");
-  csv << "mesh,landmarks_requested,landmarks,vertices_a,vertices_b,vertices_added_a,status,valid_a,valid_b,"
-         "landmarks_exact,mean_error,max_error,mean_error_landmarks,mean_error_border,mean_error_inside,seconds_map_b,seconds_map_a,seconds_location,"
+  csv << "mesh,landmarks_requested,landmarks,composed_distortion,vertices_a,vertices_b,vertices_added_a,status,valid_a,valid_b,"
+         "landmarks_exact,mean_error,max_error,mean_error_landmarks,mean_error_border,mean_error_inside,seconds_map_b,seconds_map_a,seconds_composed,seconds_location,"
          "compatible_vertices,compatible_certified,seconds_compatible,seconds_total\n";
   csv << std::setprecision(6);
   for(const Row& r : rows)
   {
-    csv << r.mesh << ',' << r.count << ',' << r.landmarks << ',' << r.va << ',' << r.vb << ',' << r.added << ','
+    csv << r.mesh << ',' << r.count << ',' << r.landmarks << ',' << r.composed << ',' << r.va << ',' << r.vb << ',' << r.added << ','
         << r.status << ',' << r.valid_a << ',' << r.valid_b << ',' << r.exact << ',' << r.mean_error << ','
         << r.max_error << ',';
     if(r.error_landmarks >= 0) csv << r.error_landmarks; // empty without landmarks
     csv << ',' << r.error_border << ',' << r.error_inside << ','
-        << r.t_b << ',' << r.t_a << ',' << r.t_location << ',' << r.vc << ',' << r.valid_c << ','
+        << r.t_b << ',' << r.t_a << ',' << r.t_composed << ',' << r.t_location << ',' << r.vc << ',' << r.valid_c << ','
         << r.t_compatible << ',' << r.t_total << '\n';
   }
 
@@ -218,23 +236,25 @@ int main(int argc, char** argv)
         "refined copy (A itself is not changed). Compatible meshes: the overlay of the two maps triangulated "
         "(`compatible_meshes`), certified in exact coordinates (filtered exact predicates: a triangulated disk, every "
         "triangle and the border counterclockwise, the border simple); its seconds are part of the total. K = 0: no landmark, the borders matched by "
-        "relative arc length only. The mean error is also given "
+        "relative arc length only. Composed: A's map optimized once more for the distortion of the composed map "
+        "(`composed_distortion`, the default); its seconds (composed s) are part of A's map's. "
+        "The mean error is also given "
         "at A's landmark vertices (each lands on its partner, a vertex of the other discretization, so its error is "
         "about the distance between the two: the landmarks cannot bring the error below it), at A's other border "
         "vertices (placed by relative arc length, not by position) and at the other vertices.\n\n"
-     << "| mesh | K | vertices A | vertices B | status | both maps certified | landmarks exact | vertices added to A "
+     << "| mesh | K | composed | vertices A | vertices B | status | both maps certified | landmarks exact | vertices added to A "
         "| mean error | max error | mean error at landmarks | mean error on the border | mean error inside | B's map s "
-        "| A's map s | location s | compatible vertices | compatible certified "
+        "| A's map s | composed s | location s | compatible vertices | compatible certified "
         "| compatible s | total s |\n"
-     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for(const Row& r : rows)
   {
-    md << "| " << r.mesh << " | " << r.landmarks << " | " << r.va << " | " << r.vb << " | " << r.status << " | "
+    md << "| " << r.mesh << " | " << r.landmarks << " | " << (r.composed ? "yes" : "no") << " | " << r.va << " | " << r.vb << " | " << r.status << " | "
        << (r.valid_a && r.valid_b ? "yes" : "no") << " | " << (r.exact ? "yes" : "no") << " | " << r.added << " | "
        << r.mean_error << " | " << r.max_error << " | ";
     if(r.error_landmarks < 0) md << "-";
     else md << r.error_landmarks;
-    md << " | " << r.error_border << " | " << r.error_inside << " | " << r.t_b << " | " << r.t_a << " | " << r.t_location
+    md << " | " << r.error_border << " | " << r.error_inside << " | " << r.t_b << " | " << r.t_a << " | " << r.t_composed << " | " << r.t_location
        << " | "
        << r.vc << " | " << (r.valid_c ? "yes" : "no") << " | " << r.t_compatible << " | " << r.t_total << " |\n";
   }

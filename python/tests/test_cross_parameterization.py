@@ -104,6 +104,11 @@ def test_identical_mushroom():
     # the other vertices near themselves (the bound of the C++ test: 2e-3 of the diagonal on average)
     error = np.linalg.norm(images(faces, barycentric, V, F) - V, axis=1) / np.linalg.norm(np.ptp(V, axis=0))
     assert error.mean() < 2e-3
+    # the composed distortion ran (the default) and measured a near-isometry; composed=False skips it
+    assert info['composed'] and info['composed_iterations'] > 0 and 4 <= info['composed_energy'] < 4.5
+    faces, barycentric, info = pe.cross_parameterization(V, F, V, F, np.c_[chosen, chosen], composed=False)
+    assert_result(faces, barycentric, info, len(V), F)
+    assert not info['composed'] and 'composed_iterations' not in info
 
 
 # ---- two different meshes --------------------------------------------------------------------

@@ -84,7 +84,8 @@ int cmd_cross(const Arguments& a)
   PE::Cross_parameterization_statistics st;
   const bool compatible = a.has("--compatible");
   Mesh compatible_a, compatible_b;
-  const auto np = PE::parameters::statistics(&st, CGAL::parameters::maximum_running_time(budget.remaining()));
+  const auto np = PE::parameters::composed_distortion(!a.has("--no-composed"),
+                    PE::parameters::statistics(&st, CGAL::parameters::maximum_running_time(budget.remaining())));
   const PE::Error_code ec = compatible
     ? PE::cross_parameterization(in_a.mesh, in_b.mesh, landmarks, out,
                                  PE::parameters::compatible_meshes(std::make_pair(&compatible_a, &compatible_b), np))
@@ -132,6 +133,14 @@ int cmd_cross(const Arguments& a)
   run.result.add("in_face", st.located_in_face);
   run.result.add("seconds_map_b", st.seconds_map_b);
   run.result.add("seconds_map_a", st.seconds_map_a);
+  run.result.add("composed", !a.has("--no-composed"));
+  if(!a.has("--no-composed"))
+  {
+    run.result.add("composed_status", PE::get_error_name(st.composed_status));
+    run.result.add("composed_iterations", st.composed.iterations);
+    run.result.add("composed_energy", st.composed.energy_current);
+    run.result.add("seconds_composed", st.seconds_composed);
+  }
   run.result.add("seconds_location", st.seconds_location);
 
   // B's faces in file order (the reader adds them in order, no face removed), the coordinates in the

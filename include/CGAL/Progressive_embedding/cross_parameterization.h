@@ -27,6 +27,7 @@
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 #include <CGAL/Progressive_embedding/internal/cross/certify_overlay.h>
 #include <CGAL/Progressive_embedding/internal/cross/common_border.h>
+#include <CGAL/Progressive_embedding/internal/cross/composed_distortion.h>
 #include <CGAL/Progressive_embedding/internal/cross/cut_closed.h>
 #include <CGAL/Progressive_embedding/internal/cross/locate_in_map.h>
 #include <CGAL/Progressive_embedding/internal/cross/overlay_maps.h>
@@ -65,6 +66,7 @@ namespace internal_np {
 enum border_vertex_pair_t { border_vertex_pair };
 enum b_to_a_locations_t { b_to_a_locations };
 enum compatible_meshes_t { compatible_meshes };
+enum composed_distortion_t { composed_distortion };
 } // namespace internal_np
 
 namespace parameters {
@@ -85,6 +87,12 @@ template <typename T> Named_function_parameters<T, internal_np::compatible_meshe
 template <typename T, typename P, typename G, typename B>
 Named_function_parameters<T, internal_np::compatible_meshes_t, CGAL::Named_function_parameters<P, G, B> >
 compatible_meshes(const T& t, const CGAL::Named_function_parameters<P, G, B>& np) { return { t, np }; }
+
+template <typename T> Named_function_parameters<T, internal_np::composed_distortion_t> composed_distortion(const T& t)
+{ return Named_function_parameters<T, internal_np::composed_distortion_t>(t); }
+template <typename T, typename P, typename G, typename B>
+Named_function_parameters<T, internal_np::composed_distortion_t, CGAL::Named_function_parameters<P, G, B> >
+composed_distortion(const T& t, const CGAL::Named_function_parameters<P, G, B>& np) { return { t, np }; }
 } // namespace parameters
 #else
 namespace parameters {
@@ -101,6 +109,10 @@ template <typename T> unspecified_type b_to_a_locations(const T& t);
 /// the named parameter `compatible_meshes` of `cross_parameterization()`: a `std::pair` of pointers to the two
 /// output meshes; `compatible_meshes(t, np)` appends it to the pack `np`
 template <typename T> unspecified_type compatible_meshes(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// the named parameter `composed_distortion` of `cross_parameterization()`: a `bool`, whether A's map is optimized
+/// once more for the distortion of the composed map; `composed_distortion(t, np)` appends it to the pack `np`
+template <typename T> unspecified_type composed_distortion(const T& t);
 } // namespace parameters
 #endif
 
@@ -188,6 +200,15 @@ struct Cross_parameterization_statistics
   Pipeline_statistics map_b;
   /// what `constrained_embedding()` did for A's map
   Constrained_embedding_statistics map_a;
+  /// with `composed_distortion` (the default): the optimization of A's map for the distortion of the composed map;
+  /// `energy_current` is that distortion (area-weighted mean symmetric Dirichlet energy of the composed map, 4 for an
+  /// isometry), `energy_before` and `energy_after` are A's map's own (`check_embedding()`'s `mean_energy_3d`)
+  Optimization_statistics composed;
+  /// the status of that optimization: `OK` (converged), `ERROR_BUDGET_EXHAUSTED` (stopped by its time or iteration
+  /// budget: A's map is the last certified one), another error (A's map is kept as `constrained_embedding()` left it)
+  Error_code composed_status = OK;
+  /// seconds spent on that optimization (part of `seconds_map_a`)
+  double seconds_composed = 0;
 };
 
 /// \ingroup PkgProgressiveEmbeddingMainFunctions
@@ -448,7 +469,14 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 /// valid in floating point, then optimized (`parameterize_certified()` with `Optimization_policy::ALWAYS`). The uv of
 /// B's landmarks are the targets of A's map: a `Surface_mesh` copy of A is mapped by `constrained_embedding()` with
 /// each landmark of A pinned bit-exactly at the uv of its partner; the copy is refined by Steiner vertices where the
-/// landmark paths need them (`Cross_parameterization_statistics::vertices_added_a`), A itself is not changed. Both
+/// landmark paths need them (`Cross_parameterization_statistics::vertices_added_a`), A itself is not changed. Then,
+/// unless `composed_distortion` is `false`, A's map is optimized once more (border and landmarks fixed) for the
+/// distortion of the composed map: each face of A's copy is measured against B's surface instead of the plane, through
+/// the inverse Jacobian of B's map on the face of B that holds the face's uv centroid, so that the energy is the
+/// symmetric Dirichlet energy of the map from A's surface to B's (4 for an isometry). Two maps that each minimize the
+/// planar energy agree only where that energy is stiff; where it is flat (parts of the surface squeezed in the plane,
+/// far from landmarks) they slide apart, and this step pulls A's map onto B's: on two meshes of one surface it lowers
+/// the correspondence error (see the user manual). Every step of it is certified like any step of the optimizer. Both
 /// maps are certified by `check_embedding()` (the reports are in the statistics). Each vertex of A is then located
 /// in B's map: the face is decided by exact orientations (a point on an edge or a vertex of B gets the incident face
 /// of B listed first in `faces(tm_b)`, with exact zero coordinates), the barycentric coordinates are computed in
@@ -494,9 +522,16 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///     \cgalParamDefault{no limit}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{optimization_time_limit}
-///     \cgalParamDescription{seconds for the optimization of A's map (see `constrained_embedding()`)}
+///     \cgalParamDescription{seconds for the optimization of A's map (see `constrained_embedding()`), and as many for
+///                           its optimization for the composed distortion (`composed_distortion`)}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{30}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{composed_distortion}
+///     \cgalParamDescription{whether A's map is optimized for the distortion of the composed map after
+///                           `constrained_embedding()` (see above), for at most `optimization_time_limit` seconds}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{b_to_a_locations}
 ///     \cgalParamDescription{receives, on success, the location on A of every vertex of B (the inverse map): each
@@ -512,17 +547,19 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///   \cgalParamNBegin{compatible_meshes}
 ///     \cgalParamDescription{receives, on success, two meshes with one connectivity, the first on A's surface and the
 ///                           second on B's, in correspondence through the map: the common refinement of the two maps.
-///                           The edges of A's refined map and of B's map are overlaid in exact arithmetic (CGAL's
-///                           arrangement overlay with `CGAL::Epeck`); each cell of the overlay, the intersection of
-///                           a face of each map, is a convex polygon, triangulated by a fan from a corner (or from
-///                           the mean of its corners when every fan from a corner would have a flat triangle). Each
+///                           Each face of A's refined map is clipped by the faces of B's map it overlaps, in exact
+///                           arithmetic (`CGAL::Epeck` points, filtered predicates); each cell of the overlay, the
+///                           intersection of a face of each map, is a convex polygon, triangulated by a fan from a
+///                           corner (or from the mean of its corners when every fan from a corner would have a flat
+///                           triangle). Each
 ///                           vertex is placed on A from where it lies in A's refined map: a vertex of the map at its
 ///                           own point, a point inside an edge at its parameter along it, a point inside a face at its
 ///                           barycentric coordinates (in double, from the interval approximation of the exact point);
 ///                           on B likewise; both meshes list their vertices and faces in the same order, so that
-///                           `(1-t) A' + t B'` is a morph. The triangulated overlay is certified by
-///                           `check_embedding()` in exact coordinates; since both maps are certified, the composed map
-///                           is affine and orientation-preserving on every triangle. Either pointer may be null}
+///                           `(1-t) A' + t B'` is a morph. The triangulated overlay is certified in exact
+///                           coordinates (`Cross_parameterization_statistics::report_compatible`); since both maps are
+///                           certified, the composed map is affine and orientation-preserving on every triangle.
+///                           Either pointer may be null}
 ///     \cgalParamType{`std::pair<OutputMeshA*, OutputMeshB*>`, each a model of `MutableFaceGraph` whose point type
 ///                    is constructible from three `double`; the meshes are cleared first}
 ///     \cgalParamDefault{none: no overlay is computed}
@@ -762,6 +799,25 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
           CGAL::parameters::maximum_running_time(remaining()))))));
   // no collect_garbage(): the descriptors of `steiner` stay valid (number_of_vertices() skips the removed ones)
   stats.vertices_added_a = work.number_of_vertices() - disk_a.number_of_vertices();
+  // A's map measured against B's surface rather than the plane (internal/cross/composed_distortion.h); on failure
+  // the map stays as constrained_embedding() left it
+  if(ec == OK && choose_parameter(get_parameter(np, internal_np::composed_distortion), true))
+  {
+    const double before_composed = timer.time();
+    std::vector<Point_2> uv_list(disk_b.number_of_vertices());
+    std::vector<typename boost::property_traits<decltype(vpm_b)>::value_type> points_b(disk_b.number_of_vertices());
+    for(std::size_t i = 0; i < uv_list.size(); ++i)
+    {
+      uv_list[i] = get(uv_b, disk_b.vertices[i]);
+      points_b[i] = get(vpm_b, disk_b.vertices[i]);
+    }
+    std::vector<wvertex> fixed;
+    for(const auto& c : constraints) fixed.push_back(c.first);
+    stats.composed_status = internal::optimize_composed_distortion(work, uv_a, fixed,
+                              internal::inverse_map_metric(uv_list, points_b, disk_b.faces),
+                              (std::min)(optimization_seconds, remaining()), stats.composed);
+    stats.seconds_composed = timer.time() - before_composed;
+  }
   if(ec == OK) stats.report_a = check_embedding(work, uv_a);
   stats.seconds_map_a = timer.time() - before_a;
   if(ec != OK) { stats.failed_mesh = 0; return finish(ec); }

@@ -155,6 +155,12 @@ public:
     std::function<bool(double)> callback;
     // reuse the last factorization of the Hessian while its steps gain enough (see run())
     bool reuse_factorization = true;
+    // Optional: a 2x2 matrix per face (indexed as the disk's faces) applied on the left of the face's Jacobian,
+    // computed from the positions (x, y) every time the energy or its derivatives are: the distortion is then that
+    // of M J, e.g. of the map composed with the inverse of another map (M the inverse Jacobian of the other map where
+    // the face lies). Its derivatives with respect to the positions are taken as zero (M piecewise constant);
+    // the line search still compares true energies. Counterclockwise maps only; no per-vertex sweeps.
+    std::function<void(const std::vector<double>&, const std::vector<double>&, std::vector<Eigen::Matrix2d>&)> face_metric;
   };
 
   Distortion_optimizer(const TriangleMesh& tm, VertexUVMap uvm, VertexPointMap vpm, const Settings& s,
@@ -168,6 +174,7 @@ public:
                         const Indexed_disk<TriangleMesh>* given = nullptr)
   {
     if(!(s_.tolerance >= 0) || !(s_.time_budget >= 0)) return ERROR_WRONG_PARAMETER;
+    if(s_.face_metric && s_.free_border) return ERROR_WRONG_PARAMETER;
     Error_code ec = OK;
     if(given) disk_ = *given;
     else ec = make_indexed_disk(tm_, GT::null_halfedge(), disk_);
@@ -217,6 +224,7 @@ public:
     }
     sgn_ = stats.report.clockwise ? -1. : 1.;   // work on the counterclockwise mirror image
     positive_ = stats.report.clockwise ? CGAL::RIGHT_TURN : CGAL::LEFT_TURN;
+    if(s_.face_metric && stats.report.clockwise) return ERROR_WRONG_PARAMETER;
 
     ec = mark_fixed_vertices(constrained);
     if(ec != OK) return ec;
@@ -252,7 +260,8 @@ public:
       const bool global_ok = global_step(E);
       if(global_ok) ++stats.global_steps;
       const bool reused = global_ok && step_reused_;
-      if(!global_ok || held_back_)
+      if(s_.face_metric && !global_ok) break; // the per-vertex steps know no face metric
+      if(!s_.face_metric && (!global_ok || held_back_))
       {
         vertex_sweep();
         ++stats.vertex_sweeps;
@@ -338,6 +347,7 @@ public:
   {
     double e = 0;
     Isotropic_terms it;
+    if(s_.face_metric) s_.face_metric(x, y, metric_);
     for(std::size_t f = 0; f < nf_; ++f)
     {
       double s1, s2;
@@ -668,6 +678,7 @@ private:
     J(0, 1) = g[1] * x[t[0]] + g[3] * x[t[1]] + g[5] * x[t[2]];
     J(1, 0) = g[0] * y[t[0]] + g[2] * y[t[1]] + g[4] * y[t[2]];
     J(1, 1) = g[1] * y[t[0]] + g[3] * y[t[1]] + g[5] * y[t[2]];
+    if(s_.face_metric) J = (metric_[f] * J).eval();
   }
 
   // singular values of the Jacobian of face f (s1 >= s2 > 0), false if the face is not positive
@@ -747,6 +758,7 @@ private:
     grad = Eigen::VectorXd::Zero(n2);
     if(face_slots_.empty()) build_pattern();
     if(hessian) std::fill(H_.valuePtr(), H_.valuePtr() + H_.nonZeros(), 0.);
+    if(s_.face_metric) s_.face_metric(X_, Y_, metric_);
     double* const values = H_.valuePtr();
     const int* const outer = H_.outerIndexPtr();
     for(std::size_t f = 0; f < nf_; ++f)
@@ -764,7 +776,9 @@ private:
       const double w = frames_[f].weight;
       const auto& g = frames_[f].G;
       // D^T vec(Q) for a 2x2 Q: per corner a, (g_a0 Q00 + g_a1 Q01, g_a0 Q10 + g_a1 Q11)
-      auto pull = [&](const Eigen::Matrix2d& Q, std::array<double, 6>& out) {
+      // with a face metric M, the derivative of psi(M J) with respect to J is M^T Q
+      auto pull = [&](const Eigen::Matrix2d& Q0, std::array<double, 6>& out) {
+        const Eigen::Matrix2d Q = s_.face_metric ? (metric_[f].transpose() * Q0).eval() : Q0;
         for(int a = 0; a < 3; ++a)
         {
           out[2 * a] = g[2 * a] * Q(0, 0) + g[2 * a + 1] * Q(0, 1);
@@ -1259,6 +1273,7 @@ private:
   std::vector<Point_2> P_;
   std::vector<double> X_, Y_;
   std::vector<Face_frame> frames_;
+  mutable std::vector<Eigen::Matrix2d> metric_;       // the face metric at the positions last evaluated
   double total_weight_ = 1;
   std::vector<std::vector<Face_corner> > star_;
   std::vector<std::vector<std::size_t> > colours_;

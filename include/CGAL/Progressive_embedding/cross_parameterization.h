@@ -204,8 +204,9 @@ struct Cross_parameterization_statistics
   /// `energy_current` is that distortion (area-weighted mean symmetric Dirichlet energy of the composed map, 4 for an
   /// isometry), `energy_before` and `energy_after` are A's map's own (`check_embedding()`'s `mean_energy_3d`)
   Optimization_statistics composed;
-  /// the status of that optimization: `OK` (converged), `ERROR_BUDGET_EXHAUSTED` (stopped by its time or iteration
-  /// budget: A's map is the last certified one), another error (A's map is kept as `constrained_embedding()` left it)
+  /// the status of that optimization: `OK` (converged, or no step lowers the energy), `ERROR_BUDGET_EXHAUSTED` (stopped
+  /// by its time or iteration budget: A's map is the last certified one), another error (A's map is kept as
+  /// `constrained_embedding()` left it). It is not run when `maximum_running_time` is already spent.
   Error_code composed_status = OK;
   /// seconds spent on that optimization (part of `seconds_map_a`)
   double seconds_composed = 0;
@@ -801,7 +802,7 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   stats.vertices_added_a = work.number_of_vertices() - disk_a.number_of_vertices();
   // A's map measured against B's surface rather than the plane (internal/cross/composed_distortion.h); on failure
   // the map stays as constrained_embedding() left it
-  if(ec == OK && choose_parameter(get_parameter(np, internal_np::composed_distortion), true))
+  if(ec == OK && choose_parameter(get_parameter(np, internal_np::composed_distortion), true) && remaining() > 0)
   {
     const double before_composed = timer.time();
     std::vector<Point_2> uv_list(disk_b.number_of_vertices());

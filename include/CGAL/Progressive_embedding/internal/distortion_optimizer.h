@@ -247,6 +247,7 @@ public:
     CGAL::Real_timer timer;
     timer.start();
     double E = objective(X_, Y_);
+    stats.energy_current = E;
     if(s_.verbose) std::cerr << "[optimize] energy " << E << ", " << nfree_ << " free vertices\n";
     Error_code result = ERROR_BUDGET_EXHAUSTED;
     std::size_t quiet = 0; // consecutive iterations below the tolerance
@@ -260,7 +261,8 @@ public:
       const bool global_ok = global_step(E);
       if(global_ok) ++stats.global_steps;
       const bool reused = global_ok && step_reused_;
-      if(s_.face_metric && !global_ok) break; // the per-vertex steps know no face metric
+      // the per-vertex steps know no face metric: no step lowers the energy, as far as the line search can tell
+      if(s_.face_metric && !global_ok) { result = OK; stats.converged = true; break; }
       if(!s_.face_metric && (!global_ok || held_back_))
       {
         vertex_sweep();

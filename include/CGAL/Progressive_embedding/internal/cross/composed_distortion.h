@@ -46,11 +46,13 @@ struct Inverse_map_metric
   std::vector<Eigen::Matrix2d> inverse_jacobian;
   std::vector<std::array<std::size_t, 3> > neighbour;
 
-  // the face holding (x, y), walking from `start`; the last face reached if the point is outside the domain
+  // the face holding (x, y), walking from `start`; the last face reached if the point is outside the domain. The walk
+  // never steps back into the face it came from: a point within rounding of an edge may test outside both faces of
+  // the edge (each computes the orientation from its own corner), and either face is then right.
   std::size_t locate(double x, double y, std::size_t start) const
   {
     const std::size_t bound = faces.size() + 1;
-    std::size_t g = start < faces.size() ? start : 0;
+    std::size_t g = start < faces.size() ? start : 0, from = none;
     for(std::size_t step = 0; step < bound; ++step)
     {
       int out = -1;
@@ -58,9 +60,11 @@ struct Inverse_map_metric
       {
         const auto& p = uv[faces[g][k]];
         const auto& q = uv[faces[g][(k + 1) % 3]];
-        if((q[0] - p[0]) * (y - p[1]) - (q[1] - p[1]) * (x - p[0]) < 0 && neighbour[g][k] != none) out = k;
+        const std::size_t n = neighbour[g][std::size_t(k)];
+        if((q[0] - p[0]) * (y - p[1]) - (q[1] - p[1]) * (x - p[0]) < 0 && n != none && n != from) out = k;
       }
       if(out < 0) return g;
+      from = g;
       g = neighbour[g][std::size_t(out)];
     }
     // a walk in a triangulation that is not Delaunay may cycle: the faces in turn
@@ -106,11 +110,16 @@ Inverse_map_metric inverse_map_metric(const std::vector<Point_2>& uv, const std:
     area2 += 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
   }
   const double k2 = area2 / area3;
+  // a degenerate 3D triangle of B: the reference the optimizer gave it when it optimized B's map (an equilateral
+  // triangle of the mean area)
+  std::size_t good = 0;
+  for(const auto& r : refs) if(r.area2 > 0 && std::isfinite(r.area2)) ++good;
+  const Reference_triangle<double> fallback = equilateral_reference(good > 0 ? area3 / double(good) : 1., std::sqrt(3.));
   m.inverse_jacobian.assign(faces.size(), Eigen::Matrix2d::Identity());
   for(std::size_t g = 0; g < faces.size(); ++g)
   {
-    Reference_triangle<double> r = refs[g];
-    if(!(r.area2 > 0) || !std::isfinite(r.area2) || !(k2 > 0) || !std::isfinite(k2)) continue; // measured against the plane
+    Reference_triangle<double> r = (refs[g].area2 > 0 && std::isfinite(refs[g].area2)) ? refs[g] : fallback;
+    if(!(k2 > 0) || !std::isfinite(k2)) continue; // measured against the plane
     for(double& d : r.dot) d *= k2;
     r.area2 *= k2 * k2;
     const auto& G = face_frame(r).G;
@@ -172,6 +181,7 @@ Error_code optimize_composed_distortion(const TriangleMesh& tm, VertexUVMap uvm,
   ec = optimizer.initialize(fixed, stats, &disk);
   stats.energy_before = stats.report.mean_energy_3d;
   if(ec != OK) return ec;
+  if(optimizer.immersion()) return ERROR_INVALID_EMBEDDING; // not an embedding: nothing to compose with
   const Error_code result = optimizer.run(stats);
   stats.report = optimizer.certify();
   stats.energy_after = stats.report.mean_energy_3d;

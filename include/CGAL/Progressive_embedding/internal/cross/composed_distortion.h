@@ -21,13 +21,13 @@
 #include <CGAL/Progressive_embedding/Optimization_statistics.h>
 #include <CGAL/Progressive_embedding/internal/distortion_optimizer.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
+#include <CGAL/Progressive_embedding/internal/cross/overlay_maps.h>
 
 #include <Eigen/Dense>
 
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <map>
 #include <utility>
 #include <vector>
 
@@ -131,18 +131,10 @@ Inverse_map_metric inverse_map_metric(const std::vector<Point_2>& uv, const std:
     const Eigen::Matrix2d inverse = J.inverse();
     if(J.determinant() > 0 && inverse.allFinite()) m.inverse_jacobian[g] = inverse;
   }
-  m.neighbour.assign(faces.size(), {{ Inverse_map_metric::none, Inverse_map_metric::none, Inverse_map_metric::none }});
-  std::map<std::pair<std::size_t, std::size_t>, std::pair<std::size_t, int> > open;
-  for(std::size_t g = 0; g < faces.size(); ++g)
-    for(int k = 0; k < 3; ++k)
-    {
-      const std::size_t u = faces[g][k], v = faces[g][(k + 1) % 3];
-      const auto it = open.find(std::make_pair(v, u));
-      if(it == open.end()) { open[std::make_pair(u, v)] = std::make_pair(g, k); continue; }
-      m.neighbour[g][std::size_t(k)] = it->second.first;
-      m.neighbour[it->second.first][std::size_t(it->second.second)] = g;
-      open.erase(it);
-    }
+  // the faces across the edges, as the overlay indexes them (B's map is certified: its faces are consistent)
+  overlay_detail::Indexed_map indexed;
+  if(indexed.build(m.faces, m.uv.size()) == OK) m.neighbour = std::move(indexed.across);
+  else m.neighbour.assign(faces.size(), {{ Inverse_map_metric::none, Inverse_map_metric::none, Inverse_map_metric::none }});
   return m;
 }
 

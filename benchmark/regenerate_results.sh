@@ -114,10 +114,10 @@ if [ "$polygons" = 1 ]; then
 fi
 if [ "$cross" = 1 ]; then
   cmake --build "$build" --target cross_benchmark
-  "$build/bin/cross_benchmark" "$build/cgal_data/data" "$results/cross_parameterization" --composed both
+  "$build/bin/cross_benchmark" "$build/cgal_data/data" "$results/cross_parameterization" --composed both --matched both
   if [ -n "$cross_pairs" ]; then
     d=$cross_pairs
-    "$build/bin/cross_benchmark" "$build/cgal_data/data" "$results/cross_parameterization_pairs" --counts 0,5,20,50 --composed both \
+    "$build/bin/cross_benchmark" "$build/cgal_data/data" "$results/cross_parameterization_pairs" --counts 0,5,20,50 --composed both --matched both \
       --pairs "$d/cat_f1500.obj:$d/cat.obj,$d/bishop_part_f1000.obj:$d/bishop_part.obj,$d/lucy_o_f24136.obj:$d/lucy_o_f12067.obj,$d/lucy_o_f48275.obj:$d/lucy_o_f24136.obj"
     python3 "$repo/benchmark/Progressive_embedding/cross_protocol_floor.py" "$d/cat_f1500.obj:$d/cat.obj" \
       "$d/bishop_part_f1000.obj:$d/bishop_part.obj" "$d/lucy_o_f24136.obj:$d/lucy_o_f12067.obj" \

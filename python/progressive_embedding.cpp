@@ -664,7 +664,7 @@ std::string landmark_name(std::size_t k, const std::vector<long long>& pairs)
 
 py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::object& V_b, const py::object& F_b,
                    const py::object& landmarks, const py::object& border_vertex_pair, bool b_to_a,
-                   const py::object& time_limit, double optimization_time_limit, bool composed)
+                   const py::object& time_limit, double optimization_time_limit, bool composed, bool matched)
 {
   const Disk_input in_a = read_disk(V_a, F_a, "V_a", "F_a");
   const Disk_input in_b = read_disk(V_b, F_b, "V_b", "F_b");
@@ -720,9 +720,9 @@ py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::objec
     std::vector<PE::Cross_location<Mesh> > located(in_a.n), back(back_faces.size());
     auto out = boost::make_iterator_property_map(located.begin(), get(CGAL::vertex_index, wa.mesh));
     auto out_back = boost::make_iterator_property_map(back.begin(), get(CGAL::vertex_index, wb.mesh));
-    const auto np = PE::parameters::composed_distortion(composed,
+    const auto np = PE::parameters::composed_distortion(composed, PE::parameters::matched_maps(matched,
                       PE::parameters::statistics(&st).maximum_running_time(seconds)
-                                                     .optimization_time_limit(optimization_time_limit));
+                                                     .optimization_time_limit(optimization_time_limit)));
     PE::Error_code ec;
     {
       Stopwatch a(last_timing.algorithm_seconds);
@@ -804,6 +804,9 @@ py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::objec
     info["composed_energy"] = st.composed.energy_current;
     info["seconds_composed"] = st.seconds_composed;
   }
+  info["matched_b"] = st.matched_b;
+  info["matched_status"] = PE::get_error_name(st.matched_status);
+  info["vertices_added_b"] = st.vertices_added_b;
   info["seconds_total"] = st.seconds_total;
   info["certificate_a"] = report_dict(st.report_a);
   info["certificate_b"] = report_dict(st.report_b);
@@ -928,12 +931,16 @@ PYBIND11_MODULE(progressive_embedding, m)
   m.def("cross_parameterization", &py_cross, py::arg("V_a"), py::arg("F_a"), py::arg("V_b"), py::arg("F_b"),
     py::arg("landmarks") = py::none(), py::arg("border_vertex_pair") = py::none(), py::arg("b_to_a") = false,
     py::arg("time_limit") = py::none(), py::arg("optimization_time_limit") = 30.0, py::arg("composed") = true,
+    py::arg("matched") = true,
     "cross_parameterization(V_a, F_a, V_b, F_b, landmarks=None, border_vertex_pair=None, b_to_a=False,\n"
-    "                       time_limit=None, optimization_time_limit=30.0, composed=True)\n"
+    "                       time_limit=None, optimization_time_limit=30.0, composed=True, matched=True)\n"
     "    -> (faces, barycentric, info)\n\n"
     "A certified map between two disks A = (V_a, F_a) and B = (V_b, F_b) taking every landmark of A exactly\n"
     "onto its partner in B, as `pe cross`: both disks are mapped onto the unit square, B by the certified\n"
-    "pipeline, A with its landmarks pinned at their partners' uv (constrained_embedding(), on a refined copy\n"
+    "pipeline, then (matched=True, with interior landmarks) again with its landmarks pinned where that map\n"
+    "put them, as A's is (info 'matched_b', 'matched_status', 'vertices_added_b': B's map is then on a copy of\n"
+    "B refined by that many vertices, the locations still in B's faces), A with its landmarks pinned at\n"
+    "their partners' uv (constrained_embedding(), on a refined copy\n"
     "of A), then (composed=True) optimized for the distortion of the composed map A -> B (info 'composed_status',\n"
     "'composed_iterations', 'composed_energy', 'seconds_composed'); both maps are certified. landmarks: a (k, 2) integer array of (vertex of A, vertex of B) pairs,\n"
     "interior vertices, each used once (None or empty: only the borders are matched). The borders are\n"

@@ -12,10 +12,11 @@
 // meshes (the certified overlay of the two maps): their vertices, certificate and seconds (in the total).
 //
 //   cross_benchmark DATA_DIR OUT_PREFIX [--meshes a.off,b.off] [--counts 5,20,50] [--pairs A1:B1,A2:B2]
-//                   [--composed on|off|both]
+//                   [--composed on|off|both] [--matched on|off|both]
 //
 // --composed: A's map optimized for the composed map's distortion (named parameter composed_distortion; on by
-// default) or not; `both` runs every case without it, then with it (side by side in the tables).
+// default) or not; `both` runs every case without it, then with it (side by side in the tables). --matched: B's map
+// made again with B's landmarks pinned, as A's is (named parameter matched_maps; on by default), or not; likewise.
 //
 // With --pairs, A and B are two given files (e.g. two resolutions of one surface: the true image of a vertex of
 // A is then its own position, up to the distance between the two discretizations) instead of a mesh and its
@@ -51,7 +52,8 @@ namespace {
 struct Row
 {
   std::string mesh;
-  bool composed = true;
+  bool composed = true, matched = true, matched_b = false;
+  std::size_t added_b = 0;
   std::size_t count = 0, landmarks = 0, va = 0, vb = 0, added = 0, vc = 0;
   std::string status;
   bool valid_a = false, valid_b = false, exact = false, valid_c = false;
@@ -73,12 +75,14 @@ std::vector<std::string> split(const std::string& s, char separator = ',')
 std::string base_name(const std::string& path) { return path.substr(path.find_last_of('/') + 1); }
 
 // `file_b` empty: B is A remeshed
-Row run(const std::string& file_a, const std::string& file_b, const std::string& name, std::size_t count, bool composed)
+Row run(const std::string& file_a, const std::string& file_b, const std::string& name, std::size_t count, bool composed,
+        bool matched)
 {
   Row r;
   r.mesh = name;
   r.count = count;
   r.composed = composed;
+  r.matched = matched;
   SM a, b;
   if(!CGAL::IO::read_polygon_mesh(file_a, a) || !CGAL::IO::read_polygon_mesh(file_b.empty() ? file_a : file_b, b))
   {
@@ -106,11 +110,13 @@ Row run(const std::string& file_a, const std::string& file_b, const std::string&
   SM compatible_a, compatible_b;
   const PE::Error_code ec = PE::cross_parameterization(a, b, landmarks, loc,
     PE::parameters::compatible_meshes(std::make_pair(&compatible_a, &compatible_b),
-      PE::parameters::composed_distortion(composed, PE::parameters::statistics(&st))));
+      PE::parameters::composed_distortion(composed, PE::parameters::matched_maps(matched, PE::parameters::statistics(&st)))));
   r.status = PE::get_error_name(ec);
   r.va = st.vertices_a;
   r.vb = st.vertices_b;
   r.added = st.vertices_added_a;
+  r.matched_b = st.matched_b;
+  r.added_b = st.vertices_added_b;
   r.valid_a = st.report_a.is_valid();
   r.valid_b = st.report_b.is_valid();
   r.exact = st.landmarks_exact;
@@ -152,14 +158,14 @@ int main(int argc, char** argv)
   if(argc < 3)
   {
     std::cerr << "usage: cross_benchmark DATA_DIR OUT_PREFIX [--meshes a.off,b.off] [--counts 5,20,50] [--pairs A:B,...]"
-                 " [--composed on|off|both]\n";
+                 " [--composed on|off|both] [--matched on|off|both]\n";
     return 2;
   }
   const std::string dir = argv[1], out = argv[2];
   std::vector<std::string> meshes = { "mushroom.off", "lion-head.off" };
   std::vector<std::size_t> counts = { 5, 20, 50 };
   std::vector<std::pair<std::string, std::string> > pairs;
-  std::vector<bool> composed = { true };
+  std::vector<bool> composed = { true }, matched = { true };
   for(int i = 3; i + 1 < argc; i += 2)
   {
     const std::string o = argv[i], v = argv[i + 1];
@@ -182,6 +188,13 @@ int main(int argc, char** argv)
       else if(v == "both") composed = { false, true };
       else { std::cerr << "--composed: expected on, off or both, got " << v << "\n"; return 2; }
     }
+    else if(o == "--matched")
+    {
+      if(v == "on") matched = { true };
+      else if(v == "off") matched = { false };
+      else if(v == "both") matched = { false, true };
+      else { std::cerr << "--matched: expected on, off or both, got " << v << "\n"; return 2; }
+    }
     else { std::cerr << "unknown option " << o << "\n"; return 2; }
   }
   std::vector<std::array<std::string, 3> > jobs; // A file, B file (empty: A remeshed), name
@@ -190,24 +203,26 @@ int main(int argc, char** argv)
   std::vector<Row> rows;
   for(const auto& job : jobs)
     for(std::size_t k : counts)
+      for(bool mt : matched)
       for(bool c : composed)
       {
         const std::string& m = job[2];
-        rows.push_back(run(job[0], job[1], m, k, c));
+        rows.push_back(run(job[0], job[1], m, k, c, mt));
         const Row& r = rows.back();
-        std::cout << m << " K=" << k << (c ? " composed" : "") << ": " << r.status << ", mean error " << r.mean_error
+        std::cout << m << " K=" << k << (mt ? " matched" : "") << (c ? " composed" : "") << ": " << r.status << ", mean error " << r.mean_error
                   << ", max " << r.max_error << ", added " << r.added << ", compatible " << r.vc
                   << " vertices (" << r.t_compatible << " s), " << r.t_total << " s" << std::endl;
       }
 
   std::ofstream csv(out + ".csv");
-  csv << "mesh,landmarks_requested,landmarks,composed_distortion,vertices_a,vertices_b,vertices_added_a,status,valid_a,valid_b,"
+  csv << "mesh,landmarks_requested,landmarks,matched_maps,matched_b,vertices_added_b,composed_distortion,vertices_a,vertices_b,vertices_added_a,status,valid_a,valid_b,"
          "landmarks_exact,mean_error,max_error,mean_error_landmarks,mean_error_border,mean_error_inside,seconds_map_b,seconds_map_a,seconds_composed,seconds_location,"
          "compatible_vertices,compatible_certified,seconds_compatible,seconds_total\n";
   csv << std::setprecision(6);
   for(const Row& r : rows)
   {
-    csv << r.mesh << ',' << r.count << ',' << r.landmarks << ',' << r.composed << ',' << r.va << ',' << r.vb << ',' << r.added << ','
+    csv << r.mesh << ',' << r.count << ',' << r.landmarks << ',' << r.matched << ',' << r.matched_b << ',' << r.added_b << ','
+        << r.composed << ',' << r.va << ',' << r.vb << ',' << r.added << ','
         << r.status << ',' << r.valid_a << ',' << r.valid_b << ',' << r.exact << ',' << r.mean_error << ','
         << r.max_error << ',';
     if(r.error_landmarks >= 0) csv << r.error_landmarks; // empty without landmarks
@@ -237,19 +252,23 @@ int main(int argc, char** argv)
         "(`compatible_meshes`), certified in exact coordinates (filtered exact predicates: a triangulated disk, every "
         "triangle and the border counterclockwise, the border simple); its seconds are part of the total. K = 0: no landmark, the borders matched by "
         "relative arc length only. Composed: A's map optimized once more for the distortion of the composed map "
-        "(`composed_distortion`, the default); its seconds (composed s) are part of A's map's. "
+        "(`composed_distortion`, the default); its seconds (composed s) are part of A's map's. Matched: B's map made "
+        "again by `constrained_embedding()` with B's landmarks pinned where its first map put them, as A's is "
+        "(`matched_maps`, the default; with landmarks only; its seconds are part of B's map's); vertices added to "
+        "B: Steiner vertices left in B's copy (B's map is then on that refined copy). "
         "The mean error is also given "
         "at A's landmark vertices (each lands on its partner, a vertex of the other discretization, so its error is "
         "about the distance between the two: the landmarks cannot bring the error below it), at A's other border "
         "vertices (placed by relative arc length, not by position) and at the other vertices.\n\n"
-     << "| mesh | K | composed | vertices A | vertices B | status | both maps certified | landmarks exact | vertices added to A "
+     << "| mesh | K | matched | vertices added to B | composed | vertices A | vertices B | status | both maps certified | landmarks exact | vertices added to A "
         "| mean error | max error | mean error at landmarks | mean error on the border | mean error inside | B's map s "
         "| A's map s | composed s | location s | compatible vertices | compatible certified "
         "| compatible s | total s |\n"
-     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for(const Row& r : rows)
   {
-    md << "| " << r.mesh << " | " << r.landmarks << " | " << (r.composed ? "yes" : "no") << " | " << r.va << " | " << r.vb << " | " << r.status << " | "
+    md << "| " << r.mesh << " | " << r.landmarks << " | " << (r.matched_b ? "yes" : r.matched && r.landmarks > 0 ? "failed" : "no")
+       << " | " << r.added_b << " | " << (r.composed ? "yes" : "no") << " | " << r.va << " | " << r.vb << " | " << r.status << " | "
        << (r.valid_a && r.valid_b ? "yes" : "no") << " | " << (r.exact ? "yes" : "no") << " | " << r.added << " | "
        << r.mean_error << " | " << r.max_error << " | ";
     if(r.error_landmarks < 0) md << "-";

@@ -84,8 +84,8 @@ int cmd_cross(const Arguments& a)
   PE::Cross_parameterization_statistics st;
   const bool compatible = a.has("--compatible");
   Mesh compatible_a, compatible_b;
-  const auto np = PE::parameters::composed_distortion(!a.has("--no-composed"),
-                    PE::parameters::statistics(&st, CGAL::parameters::maximum_running_time(budget.remaining())));
+  const auto np = PE::parameters::composed_distortion(!a.has("--no-composed"), PE::parameters::matched_maps(!a.has("--no-matched"),
+                    PE::parameters::statistics(&st, CGAL::parameters::maximum_running_time(budget.remaining()))));
   const PE::Error_code ec = compatible
     ? PE::cross_parameterization(in_a.mesh, in_b.mesh, landmarks, out,
                                  PE::parameters::compatible_meshes(std::make_pair(&compatible_a, &compatible_b), np))
@@ -141,6 +141,9 @@ int cmd_cross(const Arguments& a)
     run.result.add("composed_energy", st.composed.energy_current);
     run.result.add("seconds_composed", st.seconds_composed);
   }
+  run.result.add("matched_b", st.matched_b);
+  run.result.add("matched_status", PE::get_error_name(st.matched_status));
+  run.result.add("vertices_added_b", st.vertices_added_b);
   run.result.add("seconds_location", st.seconds_location);
 
   // B's faces in file order (the reader adds them in order, no face removed), the coordinates in the

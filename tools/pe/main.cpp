@@ -125,6 +125,8 @@ const Option_spec option_table[] = {
   { "--no-optimize", Kind::FLAG, "", "repair only: skip the distortion optimization" },
   { "--no-composed", Kind::FLAG, "",
     "cross: skip the last optimization of A's map, for the distortion of the composed map A -> B" },
+  { "--no-matched", Kind::FLAG, "",
+    "cross: keep B's first map (Tutte, optimized) instead of making it again with B's landmarks pinned, as A's is" },
   { "--optimize", Kind::FLAG, "", "optimize the distortion after repairing (the default)" },
   { "--free-border", Kind::FLAG, "", "the border vertices move too (the border stays simple)" },
   { "--shard", Kind::TEXT, "K/N",
@@ -195,12 +197,13 @@ const std::vector<Command_spec>& command_table()
       "the constrained vertices. Without --fix (or with an empty file) only the border is prescribed; a vt\n"
       "border may be non-convex: simple (an embedding) or weakly self-overlapping (an immersion, certified\n"
       "locally injective, border only, optimized as an immersion; JSON \"immersion\": true)", cmd_constrain },
-    { "cross", "A B LANDMARKS OUT.txt", 4, 4, 3, { "--compatible", "--no-composed", "--time-limit" },
+    { "cross", "A B LANDMARKS OUT.txt", 4, 4, 3, { "--compatible", "--no-composed", "--no-matched", "--time-limit" },
       "the location on the disk B of every vertex of the disk A through a certified cross-parameterization\n"
       "(two closed genus-0 meshes are first cut into disks along a chain through the landmarks, in file order):\n"
       "both borders on the unit square by relative arc length (through the border landmarks), B mapped\n"
-      "first, A mapped with its landmarks pinned on their partners' uv, then optimized for the distortion of\n"
-      "the composed map (unless --no-composed; LANDMARKS: 'a_index b_index' lines,\n"
+      "first, then again with its landmarks pinned where that map put them (unless --no-matched), A mapped\n"
+      "with its landmarks pinned on their partners' uv, then optimized for the distortion of the composed\n"
+      "map (unless --no-composed; LANDMARKS: 'a_index b_index' lines,\n"
       "0-based in file order, both interior or both on their borders); OUT.txt: one line per vertex of A in file order, 'face_index b0 b1 b2' (the face of B in B's\n"
       "file order, the barycentric coordinates of its vertices in the order the face lists them)", cmd_cross },
     { "polygon", "POLY.txt OUT.obj", 2, 2, 1, { "--svg", "--time-limit" },

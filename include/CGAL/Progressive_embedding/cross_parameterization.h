@@ -13,9 +13,11 @@
 ///     interior, each used once), nothing computed before it passes;
 ///  2. both borders on the unit square, matched by relative 3D arc length from a matched pair of
 ///     border vertices (internal/cross/common_border.h);
-///  3. B's map: Tutte, repaired if needed and optimized (`parameterize_certified()`), certified;
+///  3. B's map: Tutte, repaired if needed and optimized (`parameterize_certified()`), certified; then,
+///     with interior landmarks, made again by `constrained_embedding()` on a copy of B with B's landmarks
+///     pinned where that map put them (the copy possibly refined), certified;
 ///  4. A's map on a refined copy of A: `constrained_embedding()` with every landmark of A pinned
-///     bit-exactly at the uv of its partner in B's map, certified;
+///     bit-exactly at the uv of its partner in B's map, certified, then optimized for the composed map;
 ///  5. each vertex of A located in B's map (internal/cross/locate_in_map.h: exact orientations,
 ///     coordinates in exact rationals rounded once), written to the output map.
 
@@ -42,6 +44,10 @@
 #include <CGAL/Real_timer.h>
 #include <CGAL/Surface_mesh.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_invoke.h>
+#endif
+
 #include <boost/functional/hash.hpp>
 #include <boost/property_map/property_map.hpp>
 
@@ -67,6 +73,7 @@ enum border_vertex_pair_t { border_vertex_pair };
 enum b_to_a_locations_t { b_to_a_locations };
 enum compatible_meshes_t { compatible_meshes };
 enum composed_distortion_t { composed_distortion };
+enum matched_maps_t { matched_maps };
 } // namespace internal_np
 
 namespace parameters {
@@ -93,6 +100,12 @@ template <typename T> Named_function_parameters<T, internal_np::composed_distort
 template <typename T, typename P, typename G, typename B>
 Named_function_parameters<T, internal_np::composed_distortion_t, CGAL::Named_function_parameters<P, G, B> >
 composed_distortion(const T& t, const CGAL::Named_function_parameters<P, G, B>& np) { return { t, np }; }
+
+template <typename T> Named_function_parameters<T, internal_np::matched_maps_t> matched_maps(const T& t)
+{ return Named_function_parameters<T, internal_np::matched_maps_t>(t); }
+template <typename T, typename P, typename G, typename B>
+Named_function_parameters<T, internal_np::matched_maps_t, CGAL::Named_function_parameters<P, G, B> >
+matched_maps(const T& t, const CGAL::Named_function_parameters<P, G, B>& np) { return { t, np }; }
 } // namespace parameters
 #else
 namespace parameters {
@@ -113,6 +126,10 @@ template <typename T> unspecified_type compatible_meshes(const T& t);
 /// the named parameter `composed_distortion` of `cross_parameterization()`: a `bool`, whether A's map is optimized
 /// once more for the distortion of the composed map; `composed_distortion(t, np)` appends it to the pack `np`
 template <typename T> unspecified_type composed_distortion(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// the named parameter `matched_maps` of `cross_parameterization()`: a `bool`, whether B's map is made again the way
+/// A's is, by `constrained_embedding()` with B's landmarks pinned; `matched_maps(t, np)` appends it to the pack `np`
+template <typename T> unspecified_type matched_maps(const T& t);
 } // namespace parameters
 #endif
 
@@ -210,6 +227,20 @@ struct Cross_parameterization_statistics
   Error_code composed_status = OK;
   /// seconds spent on that optimization (part of `seconds_map_a`)
   double seconds_composed = 0;
+  /// with `matched_maps` (the default) and interior landmarks: whether B's map is the one made the way A's is
+  /// (`constrained_embedding()` on a copy of B with B's landmarks pinned where B's first map put them); `false` when
+  /// that map failed or was not made (B's first map is then kept)
+  bool matched_b = false;
+  /// what `constrained_embedding()` did for that map of B (`Constrained_embedding_statistics::optimization` is its
+  /// optimization)
+  Constrained_embedding_statistics map_b_matched;
+  /// the status of `constrained_embedding()` for that map (`OK` when it was not made); on another status, or when
+  /// its map is not certified (`ERROR_INVALID_EMBEDDING`), B's first map is kept
+  Error_code matched_status = OK;
+  /// vertices added to B's copy by that `constrained_embedding()` and kept after its coarsening: B's map is then on
+  /// the refined copy, whose added vertices lie on B's faces (B itself is not changed; its vertices are still
+  /// located in A's map and every location is written in B's faces)
+  std::size_t vertices_added_b = 0;
 };
 
 /// \ingroup PkgProgressiveEmbeddingMainFunctions
@@ -470,7 +501,16 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 /// valid in floating point, then optimized (`parameterize_certified()` with `Optimization_policy::ALWAYS`). The uv of
 /// B's landmarks are the targets of A's map: a `Surface_mesh` copy of A is mapped by `constrained_embedding()` with
 /// each landmark of A pinned bit-exactly at the uv of its partner; the copy is refined by Steiner vertices where the
-/// landmark paths need them (`Cross_parameterization_statistics::vertices_added_a`), A itself is not changed. Then,
+/// landmark paths need them (`Cross_parameterization_statistics::vertices_added_a`), A itself is not changed.
+/// Unless `matched_maps` is `false`, and when there are interior landmarks, B's map is first made again the same way:
+/// `constrained_embedding()` on a `Surface_mesh` copy of B, B's border as before and B's landmarks pinned where B's
+/// first map put them. The two maps then come from the same kind of start (each patch between the landmark paths
+/// mapped by Tutte's method), with the same pins, and are optimized alike: where the planar energy is flat they settle
+/// at the same place, where two maps made differently (B's from Tutte's map without pins) drift apart; on two meshes
+/// of one surface this lowers the correspondence error (see the user manual). If Steiner vertices remain in B's copy
+/// after the coarsening (`Cross_parameterization_statistics::vertices_added_b`), B's map is on the refined copy: the
+/// vertices of A are located in it and their locations written in the faces of B holding the refined faces. If that
+/// map fails (`Cross_parameterization_statistics::matched_status`), B's first map is kept. Then,
 /// unless `composed_distortion` is `false`, A's map is optimized once more (border and landmarks fixed) for the
 /// distortion of the composed map: each face of A's copy is measured against B's surface instead of the plane, through
 /// the inverse Jacobian of B's map on the face of B that holds the face's uv centroid, so that the energy is the
@@ -493,6 +533,9 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 /// Since both maps are one-to-one onto the same square, the composition (A's map, then the inverse of B's) is a
 /// bijection between the two surfaces, piecewise linear on A's refined copy; the output samples it at A's vertices.
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`: with `CGAL::Parallel_tag` (and TBB), B's
+///         matched map and A's constrained map, which do not depend on each other, are made side by side (the
+///         result is the same; `seconds_map_b` and `seconds_map_a` then overlap)
 /// \tparam TriangleMeshA a model of `FaceGraph` (triangles), with 3D points
 /// \tparam TriangleMeshB a model of `FaceGraph` (triangles), with 3D points
 /// \tparam LandmarkRange a range of `std::pair<vertex_descriptor of A, vertex_descriptor of B>`
@@ -524,13 +567,21 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{optimization_time_limit}
 ///     \cgalParamDescription{seconds for the optimization of A's map (see `constrained_embedding()`), and as many for
-///                           its optimization for the composed distortion (`composed_distortion`)}
+///                           its optimization for the composed distortion (`composed_distortion`) and for the
+///                           optimization of B's matched map (`matched_maps`)}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{30}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{composed_distortion}
 ///     \cgalParamDescription{whether A's map is optimized for the distortion of the composed map after
 ///                           `constrained_embedding()` (see above), for at most `optimization_time_limit` seconds}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{matched_maps}
+///     \cgalParamDescription{whether B's map is made again by `constrained_embedding()` with B's landmarks pinned, as
+///                           A's is (see above), when there are interior landmarks; its optimization has at most
+///                           `optimization_time_limit` seconds}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
@@ -592,14 +643,15 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///         the triangulated overlay).
 #ifndef DOXYGEN_RUNNING
 namespace internal {
-template <class TriangleMeshA, class TriangleMeshB, class LandmarkRange, class LocationMap, class NamedParameters>
+template <class ConcurrencyTag, class TriangleMeshA, class TriangleMeshB, class LandmarkRange, class LocationMap,
+          class NamedParameters>
 Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const TriangleMeshB& tm_b, const LandmarkRange& landmarks,
                                          LocationMap out, const NamedParameters& np);
 } // namespace internal
 #endif
 
-template <class TriangleMeshA, class TriangleMeshB, class LandmarkRange, class LocationMap,
-          class NamedParameters = CGAL::parameters::Default_named_parameters>
+template <typename ConcurrencyTag = CGAL::Sequential_tag, class TriangleMeshA, class TriangleMeshB,
+          class LandmarkRange, class LocationMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB& tm_b, const LandmarkRange& landmarks,
                                   LocationMap out, const NamedParameters& np = CGAL::parameters::default_values())
 {
@@ -616,6 +668,10 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   typedef typename boost::property_traits<VPMA>::value_type          Point_3a;
   typedef CGAL::Surface_mesh<Point_3a>                               Work;
   typedef typename boost::graph_traits<Work>::vertex_descriptor      wvertex;
+  typedef typename boost::property_map<TriangleMeshB, CGAL::vertex_point_t>::const_type VPMB;
+  typedef typename boost::property_traits<VPMB>::value_type          Point_3b;
+  typedef CGAL::Surface_mesh<Point_3b>                               Work_b;
+  typedef typename boost::graph_traits<Work_b>::vertex_descriptor    wbvertex;
 
   CGAL::Real_timer timer;
   timer.start();
@@ -633,7 +689,7 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   // ---- 1. validation -----------------------------------------------------------------------
   // two closed surfaces: cut into disks along the chain of landmarks
   const bool closed_a = internal::is_closed_mesh(tm_a), closed_b = internal::is_closed_mesh(tm_b);
-  if(closed_a && closed_b) return internal::cross_parameterization_closed(tm_a, tm_b, landmarks, out, np);
+  if(closed_a && closed_b) return internal::cross_parameterization_closed<ConcurrencyTag>(tm_a, tm_b, landmarks, out, np);
   if(closed_a || closed_b) { stats.failed_mesh = closed_a ? 0 : 1; return finish(ERROR_NOT_A_DISK); }
   const auto vpm_a = get(CGAL::vertex_point, tm_a);
   const auto vpm_b = get(CGAL::vertex_point, tm_b);
@@ -776,11 +832,34 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
         parameters::pipeline_statistics(&stats.map_b,
           CGAL::parameters::maximum_running_time(remaining())))));
   stats.report_b = check_embedding(tm_b, uv_b);
-  stats.seconds_map_b = timer.time() - stats.seconds_validation;
-  if(ec != OK) { stats.failed_mesh = 1; return finish(ec); }
-  if(!stats.report_b.is_valid()) { stats.failed_mesh = 1; return finish(ERROR_INVALID_EMBEDDING); }
-
-  // ---- 4. A's map, on a copy refined by constrained_embedding() ---------------------------------
+  if(ec != OK || !stats.report_b.is_valid())
+  {
+    stats.seconds_map_b = timer.time() - stats.seconds_validation;
+    stats.failed_mesh = 1;
+    return finish(ec != OK ? ec : ERROR_INVALID_EMBEDDING);
+  }
+  // ---- 4. B's map made again the way A's is made, and A's map ---------------------------------------
+  // B's matched map: constrained_embedding() on a copy of B, B's landmarks pinned where the first map put them. A's
+  // map starts from the same kind of map with the same pins and is optimized the same way, so that the two maps
+  // settle at the same place where the energy is flat (see the documentation). The copy may be refined by Steiner
+  // vertices (on B's faces) that the coarsening could not remove: B's map is then on the copy.
+  // A's map: constrained_embedding() on a copy of A, A's landmarks pinned at the uv of their partners in B's first
+  // map (the same points). The two do not depend on each other: with CGAL::Parallel_tag they run side by side.
+  Work_b work_b;
+  std::vector<std::pair<vertex_b, wbvertex> > v2v_b;
+  std::unordered_map<vertex_b, wbvertex, boost::hash<vertex_b> > to_work_b;
+  auto uv_wb = work_b.template add_property_map<wbvertex, Point_2>("v:pe_cross_uv_b", Point_2(0, 0)).first;
+  std::vector<Steiner_point<wbvertex> > steiner_b;
+  Embedding_report matched_report;
+  const bool make_matched = !pairs.empty() && choose_parameter(get_parameter(np, internal_np::matched_maps), true);
+  std::vector<std::pair<wbvertex, Point_2> > pins;
+  if(make_matched)
+  {
+    CGAL::copy_face_graph(tm_b, work_b, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v_b)));
+    to_work_b.insert(v2v_b.begin(), v2v_b.end());
+    for(std::size_t k = 0; k < disk_b.border.size(); ++k) uv_wb[to_work_b[disk_b.vertices[disk_b.border[k]]]] = border_uv_b[k];
+    for(const auto& p : pairs) pins.emplace_back(to_work_b[disk_b.vertices[p.second]], get(uv_b, disk_b.vertices[p.second]));
+  }
   Work work;
   std::vector<std::pair<vertex_a, wvertex> > v2v;
   CGAL::copy_face_graph(tm_a, work, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v)));
@@ -790,14 +869,77 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   std::vector<std::pair<wvertex, Point_2> > constraints;
   for(const auto& p : pairs)
     constraints.emplace_back(to_work[disk_a.vertices[p.first]], get(uv_b, disk_b.vertices[p.second]));
-  const double before_a = timer.time();
   std::vector<Steiner_point<wvertex> > steiner;
-  ec = constrained_embedding(work, constraints, uv_a,
-    parameters::steiner_points(&steiner,
-    parameters::border_shape(Border_shape::FIXED,
-      parameters::optimization_time_limit((std::min)(optimization_seconds, remaining()),
-        parameters::statistics(&stats.map_a,
-          CGAL::parameters::maximum_running_time(remaining()))))));
+  const double before_a = timer.time();
+  double seconds_matched = 0, seconds_constrained_a = 0;
+  // each task writes only its own copy, uv map, Steiner list and statistics
+  bool matched_ran = false;
+  auto matched_task = [&]() {
+    if(!make_matched || !(remaining() > 0)) return;
+    matched_ran = true;
+    const double t0 = timer.time();
+    stats.matched_status = constrained_embedding(work_b, pins, uv_wb,
+      parameters::steiner_points(&steiner_b,
+      parameters::border_shape(Border_shape::FIXED,
+        parameters::optimization_time_limit((std::min)(optimization_seconds, remaining()),
+          parameters::statistics(&stats.map_b_matched,
+            CGAL::parameters::maximum_running_time(remaining()))))));
+    if(stats.matched_status == OK)
+    {
+      matched_report = check_embedding(work_b, uv_wb);
+      if(!matched_report.is_valid()) stats.matched_status = ERROR_INVALID_EMBEDDING;
+    }
+    seconds_matched = timer.time() - t0;
+  };
+  Error_code ec_a = OK;
+  auto a_task = [&]() {
+    ec_a = constrained_embedding(work, constraints, uv_a,
+      parameters::steiner_points(&steiner,
+      parameters::border_shape(Border_shape::FIXED,
+        parameters::optimization_time_limit((std::min)(optimization_seconds, remaining()),
+          parameters::statistics(&stats.map_a,
+            CGAL::parameters::maximum_running_time(remaining()))))));
+    seconds_constrained_a = timer.time() - before_a;
+  };
+#ifdef CGAL_LINKED_WITH_TBB
+  if constexpr(std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value) tbb::parallel_invoke(matched_task, a_task);
+  else
+#endif
+  {
+    matched_task();
+    a_task();
+    seconds_constrained_a -= seconds_matched; // run one after the other: A's started after B's
+  }
+  const double after_tasks = timer.time();
+  ec = ec_a;
+  // B's matched map, made and certified, replaces the first one
+  if(matched_ran && stats.matched_status == OK)
+  {
+    stats.matched_b = true;
+    stats.vertices_added_b = work_b.number_of_vertices() - disk_b.number_of_vertices();
+    if(stats.vertices_added_b == 0)
+    {
+      for(const auto& vv : v2v_b) put(uv_b, vv.first, uv_wb[vv.second]);
+      stats.report_b = check_embedding(tm_b, uv_b); // the same map on B itself
+      if(!stats.report_b.is_valid()) { stats.failed_mesh = 1; return finish(ERROR_INVALID_EMBEDDING); } // cannot happen
+    }
+    else stats.report_b = matched_report;
+  }
+  const bool refined_b = stats.matched_b && stats.vertices_added_b > 0;
+  // B's map as the rest uses it: on B, or on its refined copy (vertices, 3D points and faces in `side_b`'s order)
+  internal::Indexed_disk<Work_b> side_b;
+  std::vector<Point_2> side_uv;
+  std::vector<Point_3b> side_points;
+  if(refined_b)
+  {
+    const Error_code es = internal::make_indexed_disk(work_b, boost::graph_traits<Work_b>::null_halfedge(), side_b);
+    if(es != OK) { stats.failed_mesh = 1; return finish(es); } // cannot happen: a refined disk
+    for(wbvertex v : side_b.vertices) { side_uv.push_back(uv_wb[v]); side_points.push_back(work_b.point(v)); }
+  }
+  else
+    for(vertex_b v : disk_b.vertices) { side_uv.push_back(get(uv_b, v)); side_points.push_back(get(vpm_b, v)); }
+  const std::vector<std::array<std::size_t, 3> >& side_faces = refined_b ? side_b.faces : disk_b.faces;
+  stats.seconds_map_b = (before_a - stats.seconds_validation) + seconds_matched;
   // no collect_garbage(): the descriptors of `steiner` stay valid (number_of_vertices() skips the removed ones)
   stats.vertices_added_a = work.number_of_vertices() - disk_a.number_of_vertices();
   // A's map measured against B's surface rather than the plane (internal/cross/composed_distortion.h); on failure
@@ -805,37 +947,46 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   if(ec == OK && choose_parameter(get_parameter(np, internal_np::composed_distortion), true) && remaining() > 0)
   {
     const double before_composed = timer.time();
-    std::vector<Point_2> uv_list(disk_b.number_of_vertices());
-    std::vector<typename boost::property_traits<decltype(vpm_b)>::value_type> points_b(disk_b.number_of_vertices());
-    for(std::size_t i = 0; i < uv_list.size(); ++i)
-    {
-      uv_list[i] = get(uv_b, disk_b.vertices[i]);
-      points_b[i] = get(vpm_b, disk_b.vertices[i]);
-    }
     std::vector<wvertex> fixed;
     for(const auto& c : constraints) fixed.push_back(c.first);
     stats.composed_status = internal::optimize_composed_distortion(work, uv_a, fixed,
-                              internal::inverse_map_metric(uv_list, points_b, disk_b.faces),
+                              internal::inverse_map_metric(side_uv, side_points, side_faces),
                               (std::min)(optimization_seconds, remaining()), stats.composed);
     stats.seconds_composed = timer.time() - before_composed;
   }
   if(ec == OK) stats.report_a = check_embedding(work, uv_a);
-  stats.seconds_map_a = timer.time() - before_a;
+  stats.seconds_map_a = seconds_constrained_a + (timer.time() - after_tasks);
   if(ec != OK) { stats.failed_mesh = 0; return finish(ec); }
   if(!stats.report_a.is_valid()) { stats.failed_mesh = 0; return finish(ERROR_INVALID_EMBEDDING); }
 
   // ---- 5. every vertex of A located in B's map -------------------------------------------------
   const double before_location = timer.time();
   std::vector<Point_2> map_b(disk_b.number_of_vertices()), queries(disk_a.number_of_vertices());
-  for(std::size_t i = 0; i < map_b.size(); ++i) map_b[i] = get(uv_b, disk_b.vertices[i]);
+  for(std::size_t i = 0; i < map_b.size(); ++i)
+    map_b[i] = refined_b ? uv_wb[to_work_b.at(disk_b.vertices[i])] : get(uv_b, disk_b.vertices[i]);
   for(std::size_t i = 0; i < queries.size(); ++i) queries[i] = uv_a[to_work[disk_a.vertices[i]]];
-  std::vector<internal::Map_location> located;
-  stats.unlocated = internal::locate_in_map(map_b, disk_b.faces, queries, located);
-  if(stats.unlocated > 0) return finish(ERROR_INVALID_EMBEDDING);
-  for(const internal::Map_location& l : located)
+  std::vector<face_b> faces_b;
+  faces_b.reserve(disk_b.number_of_faces());
+  for(face_b f : faces(tm_b)) faces_b.push_back(f);
+  std::vector<Cross_location<TriangleMeshB> > locations;
+  if(refined_b)
   {
-    if(l.zeros == 2) ++stats.located_on_vertex;
-    else if(l.zeros == 1) ++stats.located_on_edge;
+    // located in the refined copy's map, then written in the face of B holding the refined face
+    ec = internal::locate_on_refined_copy(tm_b, disk_b, work_b, uv_wb, to_work_b, steiner_b, queries, locations);
+    if(ec != OK) return finish(ec);
+  }
+  else
+  {
+    std::vector<internal::Map_location> located;
+    stats.unlocated = internal::locate_in_map(map_b, disk_b.faces, queries, located);
+    if(stats.unlocated > 0) return finish(ERROR_INVALID_EMBEDDING);
+    for(const internal::Map_location& l : located) locations.emplace_back(faces_b[l.face], l.barycentric);
+  }
+  for(const auto& l : locations)
+  {
+    const int zeros = int(l.second[0] == 0) + int(l.second[1] == 0) + int(l.second[2] == 0);
+    if(zeros == 2) ++stats.located_on_vertex;
+    else if(zeros == 1) ++stats.located_on_edge;
     else ++stats.located_in_face;
   }
   stats.landmarks_exact = true;
@@ -843,10 +994,12 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   all_pairs.insert(all_pairs.end(), border_pairs.begin(), border_pairs.end());
   for(const auto& p : all_pairs)
   {
-    const internal::Map_location& l = located[p.first];
+    const auto& l = locations[p.first];
+    const auto h = halfedge(l.first, tm_b);
+    const std::array<vertex_b, 3> corners{{ source(h, tm_b), target(h, tm_b), target(next(h, tm_b), tm_b) }};
     bool at_partner = false;
     for(int i = 0; i < 3; ++i)
-      if(disk_b.faces[l.face][i] == p.second && l.barycentric[i] == 1.) at_partner = true;
+      if(corners[i] == disk_b.vertices[p.second] && l.second[i] == 1.) at_partner = true;
     if(!at_partner) stats.landmarks_exact = false;
   }
   if(!stats.landmarks_exact) return finish(ERROR_INVALID_EMBEDDING);
@@ -868,17 +1021,14 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   if constexpr(compatible)
   {
     const double before_overlay = timer.time();
-    ec = internal::compatible_soups(work, uv_a, tm_b, disk_b, map_b, stats, on_a, on_b, triangles);
+    ec = refined_b ? internal::compatible_soups(work, uv_a, work_b, side_b, side_uv, stats, on_a, on_b, triangles)
+                   : internal::compatible_soups(work, uv_a, tm_b, disk_b, map_b, stats, on_a, on_b, triangles);
     stats.seconds_compatible = timer.time() - before_overlay;
     if(ec != OK) return finish(ec);
   }
 
   // ---- 7. the output, written only now that everything is certified --------------------------------
-  std::vector<face_b> faces_b;
-  faces_b.reserve(disk_b.number_of_faces());
-  for(face_b f : faces(tm_b)) faces_b.push_back(f);
-  for(std::size_t i = 0; i < located.size(); ++i)
-    put(out, disk_a.vertices[i], Cross_location<TriangleMeshB>(faces_b[located[i].face], located[i].barycentric));
+  for(std::size_t i = 0; i < locations.size(); ++i) put(out, disk_a.vertices[i], locations[i]);
   if constexpr(backwards)
   {
     auto out_b = get_parameter(np, internal_np::b_to_a_locations);
@@ -900,7 +1050,8 @@ namespace internal {
 
 // two closed genus-0 meshes: both cut along the chain of landmarks (cut_closed.h), the cut disks mapped with
 // every landmark copy a border landmark, the locations brought back to the vertices and faces of the meshes
-template <class TriangleMeshA, class TriangleMeshB, class LandmarkRange, class LocationMap, class NamedParameters>
+template <class ConcurrencyTag, class TriangleMeshA, class TriangleMeshB, class LandmarkRange, class LocationMap,
+          class NamedParameters>
 Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const TriangleMeshB& tm_b, const LandmarkRange& landmarks,
                                          LocationMap out, const NamedParameters& np)
 {
@@ -1008,10 +1159,12 @@ Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const Triang
   CGAL::Real_timer timer;
   timer.start();
   auto map_disks = [&]() {
-    return cross_parameterization(disk_a, disk_b, pairs, located_map,
+    return cross_parameterization<ConcurrencyTag>(disk_a, disk_b, pairs, located_map,
       parameters::statistics(&inner,
-        parameters::optimization_time_limit(choose_parameter(get_parameter(np, internal_np::optimization_time_limit), 30.),
-          CGAL::parameters::maximum_running_time((std::max)(0., max_seconds - timer.time())))));
+        parameters::composed_distortion(choose_parameter(get_parameter(np, internal_np::composed_distortion), true),
+          parameters::matched_maps(choose_parameter(get_parameter(np, internal_np::matched_maps), true),
+            parameters::optimization_time_limit(choose_parameter(get_parameter(np, internal_np::optimization_time_limit), 30.),
+              CGAL::parameters::maximum_running_time((std::max)(0., max_seconds - timer.time())))))));
   };
   ec = map_disks();
   // Where two paths of the cut run side by side (up and down a limb to a landmark at its tip), the edges

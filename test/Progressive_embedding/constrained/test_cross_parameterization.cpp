@@ -712,7 +712,127 @@ int composed_distortion_on_pair(const std::string& file, std::size_t count)
   return EXIT_SUCCESS;
 }
 
+// A: the mesh of `file`; B: its isotropically remeshed copy, as a MeshB
+template <class MeshB>
+int read_remeshed_pair(const std::string& file, Surface_mesh& a, MeshB& b)
+{
+  Surface_mesh remeshed;
+  CHECK(CGAL::IO::read_polygon_mesh(file, a) && CGAL::IO::read_polygon_mesh(file, remeshed), "read " << file);
+  PE::internal::remesh_isotropically(remeshed);
+  remeshed.collect_garbage();
+  CGAL::copy_face_graph(remeshed, b);
+  return EXIT_SUCCESS;
+}
+
+// mushroom (Surface_mesh) against its remeshed copy as a MeshB, with and without B's matched map: both certified,
+// every landmark exact, every location a convex combination; with it (the default) B's map is the one made by
+// constrained_embedding() with B's landmarks pinned, optimized; the error is not larger (the two maps already agree
+// on this pair: what it gains where they drift apart is measured by cross_benchmark on the lucy pairs)
+template <class MeshB>
+int matched_maps_on_pair(const std::string& file, std::size_t count)
+{
+  Surface_mesh a;
+  MeshB b;
+  RUN(read_remeshed_pair(file, a, b));
+  const auto landmarks = PE::internal::nearest_vertex_landmarks(a, b, PE::internal::spread_interior_vertices(a, count));
+  double mean[2] = { 0, 0 }, max[2] = { 0, 0 };
+  PE::Cross_parameterization_statistics st[2];
+  for(int with = 0; with < 2; ++with)
+  {
+    std::unordered_map<Surface_mesh::Vertex_index, PE::Cross_location<MeshB> > loc;
+    const PE::Error_code ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(loc),
+      PE::parameters::matched_maps(with == 1, PE::parameters::statistics(&st[with])));
+    CHECK(ec == PE::OK && st[with].report_a.is_valid() && st[with].report_b.is_valid() && st[with].landmarks_exact,
+          "certified (" << PE::get_error_name(ec) << ")");
+    CHECK(loc.size() == num_vertices(a), "every vertex of A located");
+    for(const auto& p : landmarks) CHECK(weight_of(b, loc.at(p.first), p.second) == 1., "landmark exact");
+    for(const auto& l : loc)
+    {
+      const auto& w = l.second.second;
+      CHECK(w[0] >= 0 && w[1] >= 0 && w[2] >= 0 && std::abs(w[0] + w[1] + w[2] - 1) <= 1e-12, "a convex combination");
+    }
+    std::tie(mean[with], max[with]) = PE::internal::correspondence_error(a, b, boost::make_assoc_property_map(loc));
+  }
+  CHECK(!st[0].matched_b && st[0].map_b_matched.optimization.iterations == 0 && st[0].vertices_added_b == 0,
+        "matched_maps(false): B's first map kept");
+  CHECK(st[1].matched_b && st[1].matched_status == PE::OK && st[1].map_b_matched.optimized
+        && st[1].map_b_matched.optimization.iterations > 0, "B's matched map made and optimized");
+  CHECK(mean[1] <= 1.05 * mean[0], "mean error with B's matched map " << mean[1] << ", without " << mean[0]);
+  // CGAL::Parallel_tag: B's matched map and A's map made side by side, the same result bit for bit
+  {
+    std::unordered_map<Surface_mesh::Vertex_index, PE::Cross_location<MeshB> > seq, par;
+    PE::Cross_parameterization_statistics sp;
+    CHECK(PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(seq)) == PE::OK, "sequential");
+    CHECK(PE::cross_parameterization<CGAL::Parallel_tag>(a, b, landmarks, boost::make_assoc_property_map(par),
+            PE::parameters::statistics(&sp)) == PE::OK && sp.matched_b, "parallel");
+    for(const auto& l : seq) CHECK(par.at(l.first) == l.second, "the same location with CGAL::Parallel_tag");
+  }
+  std::cout << file << " -> remeshed (" << mesh_name<MeshB>() << "), " << count << " landmarks: mean error "
+            << mean[0] << " -> " << mean[1] << " of the diagonal with B's matched map (max " << max[0] << " -> "
+            << max[1] << "), " << st[1].map_b_matched.optimization.iterations << " iterations, "
+            << st[1].vertices_added_b << " vertices added to B's copy, seconds for B " << st[0].seconds_map_b
+            << " -> " << st[1].seconds_map_b << std::endl;
+  return EXIT_SUCCESS;
+}
+
+// B's matched map on a refined copy of B: patch-21.off (libcgal-demo, 145 vertices) against its remeshed copy with
+// 100 landmarks keeps a Steiner vertex in B's copy after the coarsening. Every vertex of A is located in the refined
+// map and written in B's faces (a convex combination, every landmark exactly on its partner), the compatible meshes
+// are certified, B's vertices are located on A, and the result is the same with CGAL::Parallel_tag.
+template <class MeshB>
+int matched_map_on_refined_copy(const std::string& file)
+{
+  Surface_mesh a;
+  MeshB b;
+  RUN(read_remeshed_pair(file, a, b));
+  const auto landmarks = PE::internal::nearest_vertex_landmarks(a, b, PE::internal::spread_interior_vertices(a, 100));
+  std::unordered_map<Surface_mesh::Vertex_index, PE::Cross_location<MeshB> > loc, par;
+  std::unordered_map<typename boost::graph_traits<MeshB>::vertex_descriptor, PE::Cross_location<Surface_mesh>,
+                     boost::hash<typename boost::graph_traits<MeshB>::vertex_descriptor> > back;
+  PE::Cross_parameterization_statistics st;
+  Surface_mesh ca, cb;
+  const PE::Error_code ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(loc),
+    PE::parameters::compatible_meshes(std::make_pair(&ca, &cb),
+      PE::parameters::b_to_a_locations(boost::make_assoc_property_map(back), PE::parameters::statistics(&st))));
+  CHECK(ec == PE::OK && st.report_a.is_valid() && st.report_b.is_valid() && st.landmarks_exact,
+        "certified (" << PE::get_error_name(ec) << ")");
+  CHECK(st.matched_b && st.vertices_added_b > 0 && st.report_b.faces > num_faces(b),
+        "B's map on its refined copy: " << st.vertices_added_b << " vertices added");
+  CHECK(st.located_in_face + st.located_on_edge + st.located_on_vertex == num_vertices(a) && loc.size() == num_vertices(a),
+        "every vertex of A located");
+  for(const auto& l : loc)
+  {
+    const auto& w = l.second.second;
+    CHECK(w[0] >= 0 && w[1] >= 0 && w[2] >= 0 && std::abs(w[0] + w[1] + w[2] - 1) <= 1e-12, "a convex combination");
+  }
+  for(const auto& p : landmarks)
+  {
+    CHECK(weight_of(b, loc.at(p.first), p.second) == 1., "landmark of A exact on B");
+    CHECK(weight_of(a, back.at(p.second), p.first) == 1., "landmark of B exact on A");
+  }
+  CHECK(st.located_b_on_a == num_vertices(b) && back.size() == num_vertices(b), "every vertex of B located on A");
+  CHECK(st.report_compatible.is_valid() && num_vertices(ca) == num_vertices(cb) && num_faces(ca) == num_faces(cb),
+        "compatible meshes certified");
+  CHECK(PE::cross_parameterization<CGAL::Parallel_tag>(a, b, landmarks, boost::make_assoc_property_map(par)) == PE::OK,
+        "parallel");
+  for(const auto& l : loc) CHECK(par.at(l.first) == l.second, "the same location with CGAL::Parallel_tag");
+  std::cout << file << " -> remeshed (" << mesh_name<MeshB>() << "), 100 landmarks: B's map on its copy refined by "
+            << st.vertices_added_b << " vertices (" << st.report_b.faces << " faces against " << num_faces(b)
+            << "), A's vertices " << st.located_in_face << " in faces, " << st.located_on_edge << " on edges, "
+            << st.located_on_vertex << " on vertices, compatible meshes " << st.compatible_vertices << " vertices" << std::endl;
+  return EXIT_SUCCESS;
+}
+
 } // namespace
+
+PE_TEST_GROUP(cross_matched)
+{
+  RUN(matched_maps_on_pair<Surface_mesh>(data_dir + "/meshes/mushroom.off", 20));
+  RUN(matched_maps_on_pair<Polyhedron>(data_dir + "/meshes/mushroom.off", 20));
+  RUN(matched_map_on_refined_copy<Surface_mesh>(data_dir + "/meshes/patch-21.off"));
+  RUN(matched_map_on_refined_copy<Polyhedron>(data_dir + "/meshes/patch-21.off"));
+  return EXIT_SUCCESS;
+}
 
 PE_TEST_GROUP(cross_composed)
 {

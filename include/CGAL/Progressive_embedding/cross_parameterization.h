@@ -27,6 +27,7 @@
 #include <CGAL/Progressive_embedding/certified_pipeline.h>
 #include <CGAL/Progressive_embedding/constrained_embedding.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
+#include <CGAL/Progressive_embedding/internal/parallel_for.h>
 #include <CGAL/Progressive_embedding/internal/cross/certify_overlay.h>
 #include <CGAL/Progressive_embedding/internal/cross/common_border.h>
 #include <CGAL/Progressive_embedding/internal/cross/composed_distortion.h>
@@ -43,10 +44,6 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Surface_mesh.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/parallel_invoke.h>
-#endif
 
 #include <boost/functional/hash.hpp>
 #include <boost/property_map/property_map.hpp>
@@ -411,7 +408,8 @@ template <class TriangleMeshA, class Work, class UVMap, class ToWork, class Stei
 Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<TriangleMeshA>& disk_a, const Work& work,
                                   UVMap uv, const ToWork& to_work, const SteinerPoints& steiner,
                                   const std::vector<Point_2>& queries,
-                                  std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMeshA, double> >& result)
+                                  std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMeshA, double> >& result,
+                                  std::size_t* unlocated = nullptr)
 {
   typedef typename boost::graph_traits<Work>::vertex_descriptor wvertex;
   typedef typename boost::graph_traits<TriangleMeshA>::vertex_descriptor vertex_a;
@@ -442,7 +440,9 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
     wfaces.push_back({{ index[source(h, work)], index[target(h, work)], index[target(next(h, work), work)] }});
   }
   std::vector<Map_location> located;
-  if(locate_in_map(map_uv, wfaces, queries, located) > 0) return ERROR_INVALID_EMBEDDING;
+  const std::size_t outside = locate_in_map(map_uv, wfaces, queries, located);
+  if(unlocated != nullptr) *unlocated = outside;
+  if(outside > 0) return ERROR_INVALID_EMBEDDING;
   result.resize(queries.size());
   for(std::size_t q = 0; q < queries.size(); ++q)
   {
@@ -535,7 +535,8 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`: with `CGAL::Parallel_tag` (and TBB), B's
 ///         matched map and A's constrained map, which do not depend on each other, are made side by side (the
-///         result is the same; `seconds_map_b` and `seconds_map_a` then overlap)
+///         result is the same unless a time budget stops one of them; `seconds_map_b` and `seconds_map_a` then
+///         overlap); one after the other, A's map is made first
 /// \tparam TriangleMeshA a model of `FaceGraph` (triangles), with 3D points
 /// \tparam TriangleMeshB a model of `FaceGraph` (triangles), with 3D points
 /// \tparam LandmarkRange a range of `std::pair<vertex_descriptor of A, vertex_descriptor of B>`
@@ -580,8 +581,10 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{matched_maps}
 ///     \cgalParamDescription{whether B's map is made again by `constrained_embedding()` with B's landmarks pinned, as
-///                           A's is (see above), when there are interior landmarks; its optimization has at most
-///                           `optimization_time_limit` seconds}
+///                           A's is (see above), when there are interior landmarks (so never for closed surfaces,
+///                           whose landmarks are all on the cut); its optimization has at most
+///                           `optimization_time_limit` seconds, and it gets what A's map leaves of
+///                           `maximum_running_time`}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
@@ -838,6 +841,7 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
     stats.failed_mesh = 1;
     return finish(ec != OK ? ec : ERROR_INVALID_EMBEDDING);
   }
+  const double seconds_first_b = timer.time() - stats.seconds_validation;
   // ---- 4. B's map made again the way A's is made, and A's map ---------------------------------------
   // B's matched map: constrained_embedding() on a copy of B, B's landmarks pinned where the first map put them. A's
   // map starts from the same kind of map with the same pins and is optimized the same way, so that the two maps
@@ -870,7 +874,6 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   for(const auto& p : pairs)
     constraints.emplace_back(to_work[disk_a.vertices[p.first]], get(uv_b, disk_b.vertices[p.second]));
   std::vector<Steiner_point<wvertex> > steiner;
-  const double before_a = timer.time();
   double seconds_matched = 0, seconds_constrained_a = 0;
   // each task writes only its own copy, uv map, Steiner list and statistics
   bool matched_ran = false;
@@ -893,23 +896,18 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   };
   Error_code ec_a = OK;
   auto a_task = [&]() {
+    const double t0 = timer.time();
     ec_a = constrained_embedding(work, constraints, uv_a,
       parameters::steiner_points(&steiner,
       parameters::border_shape(Border_shape::FIXED,
         parameters::optimization_time_limit((std::min)(optimization_seconds, remaining()),
           parameters::statistics(&stats.map_a,
             CGAL::parameters::maximum_running_time(remaining()))))));
-    seconds_constrained_a = timer.time() - before_a;
+    seconds_constrained_a = timer.time() - t0;
   };
-#ifdef CGAL_LINKED_WITH_TBB
-  if constexpr(std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value) tbb::parallel_invoke(matched_task, a_task);
-  else
-#endif
-  {
-    matched_task();
-    a_task();
-    seconds_constrained_a -= seconds_matched; // run one after the other: A's started after B's
-  }
+  // A's map first when they run one after the other: it is needed, B's matched map is not (under a time budget, what
+  // is left after A's map goes to it)
+  internal::run_pair<ConcurrencyTag>(a_task, matched_task);
   const double after_tasks = timer.time();
   ec = ec_a;
   // B's matched map, made and certified, replaces the first one
@@ -919,9 +917,21 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
     stats.vertices_added_b = work_b.number_of_vertices() - disk_b.number_of_vertices();
     if(stats.vertices_added_b == 0)
     {
-      for(const auto& vv : v2v_b) put(uv_b, vv.first, uv_wb[vv.second]);
-      stats.report_b = check_embedding(tm_b, uv_b); // the same map on B itself
-      if(!stats.report_b.is_valid()) { stats.failed_mesh = 1; return finish(ERROR_INVALID_EMBEDDING); } // cannot happen
+      // the same map on B itself (certified again there; should that fail, B's first map is kept)
+      std::vector<Point_2> first(v2v_b.size());
+      for(std::size_t i = 0; i < v2v_b.size(); ++i)
+      {
+        first[i] = get(uv_b, v2v_b[i].first);
+        put(uv_b, v2v_b[i].first, uv_wb[v2v_b[i].second]);
+      }
+      const Embedding_report report = check_embedding(tm_b, uv_b);
+      if(report.is_valid()) stats.report_b = report;
+      else
+      {
+        for(std::size_t i = 0; i < v2v_b.size(); ++i) put(uv_b, v2v_b[i].first, first[i]);
+        stats.matched_b = false;
+        stats.matched_status = ERROR_INVALID_EMBEDDING;
+      }
     }
     else stats.report_b = matched_report;
   }
@@ -939,7 +949,7 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   else
     for(vertex_b v : disk_b.vertices) { side_uv.push_back(get(uv_b, v)); side_points.push_back(get(vpm_b, v)); }
   const std::vector<std::array<std::size_t, 3> >& side_faces = refined_b ? side_b.faces : disk_b.faces;
-  stats.seconds_map_b = (before_a - stats.seconds_validation) + seconds_matched;
+  stats.seconds_map_b = seconds_first_b + seconds_matched;
   // no collect_garbage(): the descriptors of `steiner` stay valid (number_of_vertices() skips the removed ones)
   stats.vertices_added_a = work.number_of_vertices() - disk_a.number_of_vertices();
   // A's map measured against B's surface rather than the plane (internal/cross/composed_distortion.h); on failure
@@ -972,7 +982,8 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   if(refined_b)
   {
     // located in the refined copy's map, then written in the face of B holding the refined face
-    ec = internal::locate_on_refined_copy(tm_b, disk_b, work_b, uv_wb, to_work_b, steiner_b, queries, locations);
+    ec = internal::locate_on_refined_copy(tm_b, disk_b, work_b, uv_wb, to_work_b, steiner_b, queries, locations,
+                                          &stats.unlocated);
     if(ec != OK) return finish(ec);
   }
   else

@@ -17,8 +17,9 @@
 #              polygon_map_benchmark (polygon_maps.{csv,md}: maps onto Hilbert, star and spiral borders,
 #              about 15 minutes); --polygon-obj adds an OBJ disk with texture coordinates (repeatable).
 # --cross      also runs cross_benchmark (cross_parameterization.{csv,md}: mushroom and lion-head against
-#              their remeshed copies, 5, 20 and 50 landmarks, each without and with the composed distortion,
-#              about two minutes); with --cross-pairs DIR also
+#              their remeshed copies, 5, 20 and 50 landmarks, each without and with the composed distortion
+#              and B's matched map, and the naive composition of two Tutte maps, about two minutes); with
+#              --cross-pairs DIR also
 #              cross_parameterization_pairs.{csv,md}: two resolutions of one surface, 0, 5, 20 and 50 landmarks,
 #              from the OBJ files of OptCuts' inputs (its input/benchmark and input/scalability/lucy_o folders)
 #              that DIR holds: cat, cat_f1500, bishop_part, bishop_part_f1000, lucy_o_f12067, _f24136, _f48275

@@ -9,7 +9,11 @@
 // copy, seconds (B's map, A's map, location, total), both certificates, landmarks exact, mean and max
 // 3D distance between a vertex of A and its image on B relative to A's bounding-box diagonal (also split: at the
 // landmarks, on the border, inside); the compatible
-// meshes (the certified overlay of the two maps): their vertices, certificate and seconds (in the total).
+// meshes (the certified overlay of the two maps): their vertices, certificate and seconds (in the total); the
+// process's peak resident memory during the call (Linux: reset before it, the two input meshes included); the
+// distortion of the composed map sampled at A's vertices. Each pair also gets one row of the naive composition
+// (Tutte's maps of both on one circle, no landmark, nothing repaired or optimized: see run_naive()), measured the
+// same way.
 //
 //   cross_benchmark DATA_DIR OUT_PREFIX [--meshes a.off,b.off] [--counts 5,20,50] [--pairs A1:B1,A2:B2]
 //                   [--composed on|off|both] [--matched on|off|both]
@@ -28,7 +32,14 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Progressive_embedding/cross_parameterization.h>
+#include <CGAL/Progressive_embedding/tutte_embedding.h>
+#include <CGAL/Progressive_embedding/check_embedding.h>
+#include <CGAL/Progressive_embedding/internal/cross/common_border.h>
+#include <CGAL/Progressive_embedding/internal/cross/locate_in_map.h>
 #include <CGAL/Progressive_embedding/internal/cross/remeshed_pair_protocol.h>
+#include <CGAL/Real_timer.h>
+
+#include "process_memory.h"
 
 #include <unistd.h>
 
@@ -40,6 +51,8 @@
 #include <sstream>
 #include <string>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -52,6 +65,14 @@ namespace {
 struct Row
 {
   std::string mesh;
+  std::string method = "cross"; // or "naive Tutte": Tutte's map of both, no landmark, no optimization
+  // the distortion of the composed map sampled at A's vertices: per face of A, the affine map onto the triangle of
+  // its vertices' images on B, its symmetric Dirichlet energy (4 for an isometry), the mean weighted by A's areas;
+  // faces whose image is degenerate (infinite energy) are counted apart
+  double distortion = 0;
+  std::size_t degenerate_images = 0;
+  std::size_t unlocated = 0;        // naive: vertices of A outside every positively oriented face of B's map
+  std::size_t bad_faces = 0;        // naive: flipped or degenerate faces of the two Tutte maps
   bool composed = true, matched = true, matched_b = false;
   std::size_t added_b = 0;
   std::size_t count = 0, landmarks = 0, va = 0, vb = 0, added = 0, vc = 0;
@@ -60,7 +81,8 @@ struct Row
   // the mean error split: at A's landmark vertices, at A's border vertices, at the other vertices (what the
   // landmarks and the border rule cannot fix: a landmark pair of two discretizations is apart by the distance between
   // the two vertices, and the border is matched by relative arc length, not by position)
-  double error_landmarks = -1, error_border = 0, error_inside = 0;
+  double error_landmarks = -1, error_border = -1, error_inside = -1; // -1: no such vertex measured
+  double peak_mb = 0; // the process's peak resident memory during the call
   double mean_error = 0, max_error = 0, t_b = 0, t_a = 0, t_composed = 0, t_location = 0, t_compatible = 0, t_total = 0;
 };
 
@@ -75,6 +97,179 @@ std::vector<std::string> split(const std::string& s, char separator = ',')
 std::string base_name(const std::string& path) { return path.substr(path.find_last_of('/') + 1); }
 
 // `file_b` empty: B is A remeshed
+bool read_pair(const std::string& file_a, const std::string& file_b, SM& a, SM& b)
+{
+  if(!CGAL::IO::read_polygon_mesh(file_a, a) || !CGAL::IO::read_polygon_mesh(file_b.empty() ? file_a : file_b, b))
+    return false;
+  if(file_b.empty())
+  {
+    PE::internal::remesh_isotropically(b);
+    b.collect_garbage();
+  }
+  return true;
+}
+
+// the symmetric Dirichlet energy of the affine map from the triangle p to the triangle q (both in 3D, each in a
+// frame of its own plane); infinite when q is degenerate
+double triangle_map_energy(const std::array<K::Point_3, 3>& p, const std::array<K::Point_3, 3>& q)
+{
+  auto frame = [](const std::array<K::Point_3, 3>& t, double c[4]) { // columns (e1, e2) in the triangle's plane
+    const K::Vector_3 e1 = t[1] - t[0], e2 = t[2] - t[0];
+    const double l1 = std::sqrt(e1.squared_length());
+    if(!(l1 > 0)) return false;
+    const double x2 = (e1 * e2) / l1;
+    const double y2 = std::sqrt((std::max)(0., e2.squared_length() - x2 * x2));
+    c[0] = l1; c[1] = 0; c[2] = x2; c[3] = y2; // [a b; c d] = [l1 x2; 0 y2] stored column-wise
+    return y2 > 0;
+  };
+  double a[4], b[4];
+  if(!frame(p, a) || !frame(q, b)) return std::numeric_limits<double>::infinity();
+  // J = B A^-1 with A = [a0 a2; a1 a3] (a1 = 0), B likewise
+  const double det_a = a[0] * a[3];
+  const double ia[4] = { a[3] / det_a, 0., -a[2] / det_a, a[0] / det_a }; // column-wise inverse of the upper triangular A
+  const double j00 = b[0] * ia[0] + b[2] * ia[1], j10 = b[1] * ia[0] + b[3] * ia[1];
+  const double j01 = b[0] * ia[2] + b[2] * ia[3], j11 = b[1] * ia[2] + b[3] * ia[3];
+  const double frob = j00 * j00 + j01 * j01 + j10 * j10 + j11 * j11, det = j00 * j11 - j01 * j10;
+  if(!(det != 0)) return std::numeric_limits<double>::infinity();
+  return frob * (1 + 1 / (det * det));
+}
+
+// the composed map's distortion sampled at A's vertices (see Row)
+// (over the faces of A whose three vertices are `located`)
+template <class LocationMap>
+void sampled_distortion(const SM& a, const SM& b, LocationMap loc, const std::vector<char>& located, Row& r)
+{
+  double sum = 0, area = 0;
+  for(SM::Face_index f : faces(a))
+  {
+    std::array<K::Point_3, 3> p, q;
+    int k = 0;
+    bool all = true;
+    for(SM::Vertex_index v : CGAL::vertices_around_face(a.halfedge(f), a)) all = all && located[std::size_t(v)];
+    if(!all) continue;
+    for(SM::Vertex_index v : CGAL::vertices_around_face(a.halfedge(f), a))
+    {
+      p[k] = a.point(v);
+      q[k] = CGAL::Polygon_mesh_processing::construct_point(get(loc, v), b);
+      ++k;
+    }
+    const double e = triangle_map_energy(p, q);
+    if(!std::isfinite(e)) { ++r.degenerate_images; continue; }
+    const double w = std::sqrt(CGAL::squared_area(p[0], p[1], p[2]));
+    sum += w * e;
+    area += w;
+  }
+  r.distortion = area > 0 ? sum / area : 0;
+}
+
+// the errors of the located vertices of A (the mean and max, split as in Row)
+template <class LocationMap>
+void measure_errors(const SM& a, const SM& b, LocationMap loc, const std::vector<char>& landmark, const std::vector<char>& located,
+                    Row& r)
+{
+  const std::vector<double> errors = PE::internal::correspondence_errors(a, b, loc);
+  std::array<double, 3> sum = {{ 0, 0, 0 }};
+  std::array<std::size_t, 3> n = {{ 0, 0, 0 }};
+  std::size_t i = 0;
+  for(SM::Vertex_index v : vertices(a))
+  {
+    const double e = errors[i++];
+    if(!located[std::size_t(v)]) continue;
+    const int c = landmark[std::size_t(v)] ? 0 : CGAL::is_border(v, a) ? 1 : 2;
+    sum[c] += e;
+    ++n[c];
+    r.max_error = (std::max)(r.max_error, e);
+  }
+  const std::size_t all = n[0] + n[1] + n[2];
+  if(all != 0) r.mean_error = (sum[0] + sum[1] + sum[2]) / double(all);
+  if(n[0] != 0) r.error_landmarks = sum[0] / double(n[0]);
+  if(n[1] != 0) r.error_border = sum[1] / double(n[1]);
+  if(n[2] != 0) r.error_inside = sum[2] / double(n[2]);
+}
+
+// The naive composition: Tutte's map (uniform weights) of A and of B onto the unit circle, each border by relative
+// arc length from the start pair that cross_parameterization() chooses, nothing repaired or optimized, and each vertex of A
+// located in B's map by the same exact point location. A vertex of A may fall outside every positively oriented
+// face of B: near the border, outside the polygon inscribed in the circle by B's border vertices, and anywhere
+// where a map is not valid in floating point (flipped or degenerate faces); it is counted (`unlocated`), and its
+// error and the faces of A around it are left out.
+Row run_naive(const std::string& file_a, const std::string& file_b, const std::string& name)
+{
+  Row r;
+  r.mesh = name;
+  r.method = "naive Tutte";
+  r.composed = r.matched = false;
+  SM a, b;
+  if(!read_pair(file_a, file_b, a, b)) { r.status = "unreadable"; return r; }
+  CGAL::Real_timer timer;
+  timer.start();
+  pe_bench::reset_peak_rss();
+  typedef PE::internal::Indexed_disk<SM> Disk;
+  Disk disk_a, disk_b;
+  PE::Error_code ec = PE::internal::make_indexed_disk(a, SM::null_halfedge(), disk_a);
+  if(ec == PE::OK) ec = PE::internal::make_indexed_disk(b, SM::null_halfedge(), disk_b);
+  if(ec != PE::OK) { r.status = PE::get_error_name(ec); return r; }
+  r.va = disk_a.number_of_vertices();
+  r.vb = disk_b.number_of_vertices();
+  // the start pair as cross_parameterization() chooses it: the first border vertex of A in vertices(a), the border
+  // vertex of B nearest to it
+  std::size_t first = 0;
+  while(!disk_a.on_border[first]) ++first;
+  std::size_t start_a = 0, start_b = 0;
+  while(disk_a.border[start_a] != first) ++start_a;
+  double best = std::numeric_limits<double>::infinity();
+  for(std::size_t k = 0; k < disk_b.border.size(); ++k)
+  {
+    const double d = CGAL::squared_distance(a.point(disk_a.vertices[first]), b.point(disk_b.vertices[disk_b.border[k]]));
+    if(d < best) { best = d; start_b = k; }
+  }
+  // both borders on the unit circle by relative arc length from the start pair (on the square, an edge inside a
+  // mesh joining two border vertices of one side would be flat, and Tutte's map refuses it)
+  auto on_circle = [](const Disk& disk, const SM& m, std::size_t start) {
+    const std::vector<double> t = PE::internal::border_parameters_from(disk, m.points(), start);
+    std::vector<K::Point_2> p, uv;
+    for(std::size_t k = 0; k + 1 < t.size(); ++k)
+      p.emplace_back(std::cos(2 * CGAL_PI * t[k]), std::sin(2 * CGAL_PI * t[k]));
+    PE::internal::rotate_from_start(p, start, uv);
+    return uv;
+  };
+  const std::vector<K::Point_2> border_a = on_circle(disk_a, a, start_a), border_b = on_circle(disk_b, b, start_b);
+  auto uv_a = a.add_property_map<SM::Vertex_index, K::Point_2>("v:naive_uv", K::Point_2(0, 0)).first;
+  auto uv_b = b.add_property_map<SM::Vertex_index, K::Point_2>("v:naive_uv", K::Point_2(0, 0)).first;
+  for(std::size_t k = 0; k < border_a.size(); ++k) uv_a[disk_a.vertices[disk_a.border[k]]] = border_a[k];
+  for(std::size_t k = 0; k < border_b.size(); ++k) uv_b[disk_b.vertices[disk_b.border[k]]] = border_b[k];
+  ec = PE::tutte_embedding(a, SM::null_halfedge(), uv_a, PE::parameters::border_shape(PE::Border_shape::FIXED));
+  if(ec == PE::OK) ec = PE::tutte_embedding(b, SM::null_halfedge(), uv_b, PE::parameters::border_shape(PE::Border_shape::FIXED));
+  if(ec != PE::OK) { r.status = PE::get_error_name(ec); return r; }
+  const PE::Embedding_report report_a = PE::check_embedding(a, uv_a), report_b = PE::check_embedding(b, uv_b);
+  r.valid_a = report_a.is_valid();
+  r.valid_b = report_b.is_valid();
+  r.bad_faces = report_a.flipped + report_a.degenerate + report_b.flipped + report_b.degenerate;
+  r.exact = true; // no landmark
+  std::vector<K::Point_2> map_b, queries;
+  for(SM::Vertex_index v : disk_b.vertices) map_b.push_back(uv_b[v]);
+  for(SM::Vertex_index v : disk_a.vertices) queries.push_back(uv_a[v]);
+  std::vector<PE::internal::Map_location> located;
+  r.unlocated = PE::internal::locate_in_map(map_b, disk_b.faces, queries, located);
+  std::vector<SM::Face_index> faces_b(faces(b).begin(), faces(b).end());
+  auto loc = a.add_property_map<SM::Vertex_index, PE::Cross_location<SM> >("v:cross").first;
+  std::vector<char> is_located(a.num_vertices(), 0);
+  for(std::size_t i = 0; i < located.size(); ++i)
+    if(located[i].face != PE::internal::Map_location::none)
+    {
+      loc[disk_a.vertices[i]] = PE::Cross_location<SM>(faces_b[located[i].face], located[i].barycentric);
+      is_located[std::size_t(disk_a.vertices[i])] = 1;
+    }
+    else loc[disk_a.vertices[i]] = PE::Cross_location<SM>(faces_b.front(), {{ 1., 0., 0. }}); // not measured
+  r.t_total = timer.time();
+  r.peak_mb = pe_bench::peak_rss_mb();
+  r.status = "OK";
+  measure_errors(a, b, loc, std::vector<char>(a.num_vertices(), 0), is_located, r);
+  // the distortion on the faces whose three vertices were located
+  sampled_distortion(a, b, loc, is_located, r);
+  return r;
+}
+
 Row run(const std::string& file_a, const std::string& file_b, const std::string& name, std::size_t count, bool composed,
         bool matched)
 {
@@ -84,16 +279,7 @@ Row run(const std::string& file_a, const std::string& file_b, const std::string&
   r.composed = composed;
   r.matched = matched;
   SM a, b;
-  if(!CGAL::IO::read_polygon_mesh(file_a, a) || !CGAL::IO::read_polygon_mesh(file_b.empty() ? file_a : file_b, b))
-  {
-    r.status = "unreadable";
-    return r;
-  }
-  if(file_b.empty())
-  {
-    PE::internal::remesh_isotropically(b);
-    b.collect_garbage();
-  }
+  if(!read_pair(file_a, file_b, a, b)) { r.status = "unreadable"; return r; }
   // the landmarks spread over the coarser mesh, each matched to the nearest vertex of the finer one (the other
   // way round, a landmark would be moved by up to half an edge of the coarser mesh)
   std::vector<std::pair<SM::Vertex_index, SM::Vertex_index> > landmarks;
@@ -108,9 +294,11 @@ Row run(const std::string& file_a, const std::string& file_b, const std::string&
     a.add_property_map<SM::Vertex_index, PE::Cross_location<SM> >("v:cross").first;
   PE::Cross_parameterization_statistics st;
   SM compatible_a, compatible_b;
+  pe_bench::reset_peak_rss();
   const PE::Error_code ec = PE::cross_parameterization(a, b, landmarks, loc,
     PE::parameters::compatible_meshes(std::make_pair(&compatible_a, &compatible_b),
       PE::parameters::composed_distortion(composed, PE::parameters::matched_maps(matched, PE::parameters::statistics(&st)))));
+  r.peak_mb = pe_bench::peak_rss_mb();
   r.status = PE::get_error_name(ec);
   r.va = st.vertices_a;
   r.vb = st.vertices_b;
@@ -129,25 +317,10 @@ Row run(const std::string& file_a, const std::string& file_b, const std::string&
   r.t_compatible = st.seconds_compatible;
   r.t_total = st.seconds_total;
   if(ec != PE::OK) return r;
-  // one pass of the AABB tree: the mean and max are taken from the same per-vertex errors as the split
-  const std::vector<double> errors = PE::internal::correspondence_errors(a, b, loc);
   std::vector<char> landmark(a.num_vertices(), 0);
   for(const auto& p : landmarks) landmark[std::size_t(p.first)] = 1;
-  std::array<double, 3> sum = {{ 0, 0, 0 }};
-  std::array<std::size_t, 3> n = {{ 0, 0, 0 }};
-  std::size_t i = 0;
-  for(SM::Vertex_index v : vertices(a))
-  {
-    const double e = errors[i++];
-    const int c = landmark[std::size_t(v)] ? 0 : CGAL::is_border(v, a) ? 1 : 2;
-    sum[c] += e;
-    ++n[c];
-    r.max_error = (std::max)(r.max_error, e);
-  }
-  if(!errors.empty()) r.mean_error = (sum[0] + sum[1] + sum[2]) / double(errors.size());
-  if(n[0] != 0) r.error_landmarks = sum[0] / double(n[0]);
-  if(n[1] != 0) r.error_border = sum[1] / double(n[1]);
-  if(n[2] != 0) r.error_inside = sum[2] / double(n[2]);
+  measure_errors(a, b, loc, landmark, std::vector<char>(a.num_vertices(), 1), r);
+  sampled_distortion(a, b, loc, std::vector<char>(a.num_vertices(), 1), r);
   return r;
 }
 
@@ -202,6 +375,12 @@ int main(int argc, char** argv)
   for(const auto& p : pairs) jobs.push_back({{ p.first, p.second, base_name(p.first) + " -> " + base_name(p.second) }});
   std::vector<Row> rows;
   for(const auto& job : jobs)
+  {
+    rows.push_back(run_naive(job[0], job[1], job[2]));
+    const Row& n = rows.back();
+    std::cout << job[2] << " naive Tutte: " << n.status << ", faces flipped or degenerate " << n.bad_faces << ", unlocated "
+              << n.unlocated << ", mean error " << n.mean_error << ", max " << n.max_error << ", distortion " << n.distortion
+              << ", " << n.t_total << " s" << std::endl;
     for(std::size_t k : counts)
       for(bool mt : matched)
       for(bool c : composed)
@@ -211,24 +390,31 @@ int main(int argc, char** argv)
         const Row& r = rows.back();
         std::cout << m << " K=" << k << (mt ? " matched" : "") << (c ? " composed" : "") << ": " << r.status << ", mean error " << r.mean_error
                   << ", max " << r.max_error << ", added " << r.added << ", compatible " << r.vc
-                  << " vertices (" << r.t_compatible << " s), " << r.t_total << " s" << std::endl;
+                  << " vertices (" << r.t_compatible << " s), distortion " << r.distortion << ", " << r.t_total << " s" << std::endl;
       }
+  }
 
   std::ofstream csv(out + ".csv");
-  csv << "mesh,landmarks_requested,landmarks,matched_maps,matched_b,vertices_added_b,composed_distortion,vertices_a,vertices_b,vertices_added_a,status,valid_a,valid_b,"
+  csv << "mesh,method,landmarks_requested,landmarks,matched_maps,matched_b,vertices_added_b,composed_distortion,vertices_a,vertices_b,vertices_added_a,status,valid_a,valid_b,"
          "landmarks_exact,mean_error,max_error,mean_error_landmarks,mean_error_border,mean_error_inside,seconds_map_b,seconds_map_a,seconds_composed,seconds_location,"
-         "compatible_vertices,compatible_certified,seconds_compatible,seconds_total\n";
+         "compatible_vertices,compatible_certified,seconds_compatible,seconds_total,peak_rss_mb,"
+         "distortion,degenerate_images,unlocated,faces_flipped_or_degenerate\n";
   csv << std::setprecision(6);
   for(const Row& r : rows)
   {
-    csv << r.mesh << ',' << r.count << ',' << r.landmarks << ',' << r.matched << ',' << r.matched_b << ',' << r.added_b << ','
+    csv << r.mesh << ',' << r.method << ',' << r.count << ',' << r.landmarks << ',' << r.matched << ',' << r.matched_b << ',' << r.added_b << ','
         << r.composed << ',' << r.va << ',' << r.vb << ',' << r.added << ','
         << r.status << ',' << r.valid_a << ',' << r.valid_b << ',' << r.exact << ',' << r.mean_error << ','
         << r.max_error << ',';
     if(r.error_landmarks >= 0) csv << r.error_landmarks; // empty without landmarks
-    csv << ',' << r.error_border << ',' << r.error_inside << ','
+    csv << ',';
+    if(r.error_border >= 0) csv << r.error_border;
+    csv << ',';
+    if(r.error_inside >= 0) csv << r.error_inside;
+    csv << ','
         << r.t_b << ',' << r.t_a << ',' << r.t_composed << ',' << r.t_location << ',' << r.vc << ',' << r.valid_c << ','
-        << r.t_compatible << ',' << r.t_total << '\n';
+        << r.t_compatible << ',' << r.t_total << ',' << r.peak_mb << ',' << r.distortion << ',' << r.degenerate_images << ','
+        << r.unlocated << ',' << r.bad_faces << '\n';
   }
 
   char host[256] = {0};
@@ -250,8 +436,19 @@ int main(int argc, char** argv)
         "A's bounding box. Vertices added: Steiner vertices of A's "
         "refined copy (A itself is not changed). Compatible meshes: the overlay of the two maps triangulated "
         "(`compatible_meshes`), certified in exact coordinates (filtered exact predicates: a triangulated disk, every "
-        "triangle and the border counterclockwise, the border simple); its seconds are part of the total. K = 0: no landmark, the borders matched by "
-        "relative arc length only. Composed: A's map optimized once more for the distortion of the composed map "
+        "triangle and the border counterclockwise, the border simple); its seconds are part of the total. Peak MB: the "
+        "process's peak resident memory during the call (reset before it; the two input meshes and the program "
+        "included). K = 0: no landmark, the borders matched by "
+        "relative arc length only. Distortion: the composed map sampled at A's vertices, per face of A the affine map "
+        "onto the triangle of its vertices' images on B, its symmetric Dirichlet energy (4 for an isometry), the mean "
+        "weighted by A's face areas (faces with a degenerate image counted apart: none in these tables unless said). "
+        "Naive Tutte: the composition a user would write by hand, Tutte's map (uniform weights) of A and of B on the "
+        "unit circle (each border by relative arc length from the same start pair as above), no landmark, nothing repaired or optimized, A's vertices located in B's map by the same "
+        "exact point location; vertices of A outside every positively oriented face of B (near the border: outside the "
+        "polygon of B's border vertices inscribed in the circle; or where a map is not valid in floating point) are "
+        "counted (unlocated) and left out of the errors, and the faces around them out of the distortion. "
+        "CGAL's Orbifold Tutte embedding does not apply: it maps closed genus-0 meshes with cones, and every pair "
+        "here is of disks. Composed: A's map optimized once more for the distortion of the composed map "
         "(`composed_distortion`, the default); its seconds (composed s) are part of A's map's. Matched: B's map made "
         "again by `constrained_embedding()` with B's landmarks pinned where its first map put them, as A's is "
         "(`matched_maps`, the default; with landmarks only; its seconds are part of B's map's); vertices added to "
@@ -260,22 +457,33 @@ int main(int argc, char** argv)
         "at A's landmark vertices (each lands on its partner, a vertex of the other discretization, so its error is "
         "about the distance between the two: the landmarks cannot bring the error below it), at A's other border "
         "vertices (placed by relative arc length, not by position) and at the other vertices.\n\n"
-     << "| mesh | K | matched | vertices added to B | composed | vertices A | vertices B | status | both maps certified | landmarks exact | vertices added to A "
+     << "| mesh | method | K | matched | vertices added to B | composed | vertices A | vertices B | status | both maps certified | landmarks exact | vertices added to A "
         "| mean error | max error | mean error at landmarks | mean error on the border | mean error inside | B's map s "
         "| A's map s | composed s | location s | compatible vertices | compatible certified "
-        "| compatible s | total s |\n"
-     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        "| compatible s | total s | peak MB | distortion | naive: unlocated | naive: faces flipped or degenerate |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for(const Row& r : rows)
   {
-    md << "| " << r.mesh << " | " << r.landmarks << " | " << (r.matched_b ? "yes" : r.matched && r.landmarks > 0 ? "failed" : "no")
+    md << "| " << r.mesh << " | " << r.method << " | " << r.landmarks << " | " << (r.matched_b ? "yes" : r.matched && r.landmarks > 0 ? "failed" : "no")
        << " | " << r.added_b << " | " << (r.composed ? "yes" : "no") << " | " << r.va << " | " << r.vb << " | " << r.status << " | "
        << (r.valid_a && r.valid_b ? "yes" : "no") << " | " << (r.exact ? "yes" : "no") << " | " << r.added << " | "
        << r.mean_error << " | " << r.max_error << " | ";
     if(r.error_landmarks < 0) md << "-";
     else md << r.error_landmarks;
-    md << " | " << r.error_border << " | " << r.error_inside << " | " << r.t_b << " | " << r.t_a << " | " << r.t_composed << " | " << r.t_location
-       << " | "
-       << r.vc << " | " << (r.valid_c ? "yes" : "no") << " | " << r.t_compatible << " | " << r.t_total << " |\n";
+    for(double e : { r.error_border, r.error_inside })
+    {
+      md << " | ";
+      if(e < 0) md << "-";
+      else md << e;
+    }
+    md << " | ";
+    if(r.method == "cross")
+      md << r.t_b << " | " << r.t_a << " | " << r.t_composed << " | " << r.t_location << " | " << r.vc << " | "
+         << (r.valid_c ? "yes" : "no") << " | " << r.t_compatible << " | ";
+    else md << "- | - | - | - | - | - | - | "; // the naive maps: total only, no overlay
+    md << r.t_total << " | " << std::setprecision(4) << r.peak_mb << std::setprecision(3) << " | " << r.distortion << " | ";
+    if(r.method == "cross") md << "- | - |\n";
+    else md << r.unlocated << " | " << r.bad_faces << " |\n";
   }
   std::string command = "cross_benchmark";
   for(int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];

@@ -1,16 +1,24 @@
 # Runs `pe` once and checks what it did (used by the pe_* tests of CMakeLists.txt).
-#   -DPE=path/to/pe -DARGS=a|b|c -DEXPECT_EXIT=n [-DREGEX=re] [-DJSON_CHECKS=c1|c2] -DPYTHON=python3 -DCHECK_JSON=check_json.py
+#   -DPE=path/to/pe -DARGS=a|b|c -DEXPECT_EXIT=n [-DREGEX=re] [-DJSON_CHECKS=c1|c2] [-DABSENT=file]
+#   -DPYTHON=python3 -DCHECK_JSON=check_json.py
 # The exit status must be exactly EXPECT_EXIT (a crash is reported as such), REGEX must match
 # stdout + stderr, and each JSON condition (key==value, key>value, ...) must hold on stdout.
+# ABSENT: an output file that must not exist afterwards (removed before the run): nothing written on failure.
 
 string(REPLACE "|" ";" args "${ARGS}")
 if(args STREQUAL "")
   set(args "")
 endif()
+if(NOT "${ABSENT}" STREQUAL "")
+  file(REMOVE "${ABSENT}")
+endif()
 execute_process(COMMAND ${PE} ${args} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("$ pe ${args}\n${out}${err}exit status: ${rc}")
 if(NOT "${rc}" STREQUAL "${EXPECT_EXIT}")
   message(FATAL_ERROR "expected exit status ${EXPECT_EXIT}, got '${rc}'")
+endif()
+if(NOT "${ABSENT}" STREQUAL "" AND EXISTS "${ABSENT}")
+  message(FATAL_ERROR "'${ABSENT}' was written")
 endif()
 if(NOT "${REGEX}" STREQUAL "")
   string(REPLACE "\n" " " all "${out}${err}")

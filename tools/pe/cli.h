@@ -172,8 +172,9 @@ struct Run
   int finish(int code);
   // The one failure report: prints `pe: <what>: <message> (<ERROR_NAME>)` to stderr, marks the
   // result as neither valid nor written, ends the summary with `<ERROR_NAME>, nothing written`
-  // and returns exit_status(ec). `detail` replaces the generic message of `ec` when not empty.
-  int fail(PE::Error_code ec, const std::string& what, const std::string& detail = std::string());
+  // and returns exit_status(ec), or `code` when it is not negative (an error that the input file caused
+  // whatever its code). `detail` replaces the generic message of `ec` when not empty.
+  int fail(PE::Error_code ec, const std::string& what, const std::string& detail = std::string(), int code = -1);
 };
 
 // formats a measure: `%.6g`, or inf, -inf, nan (never "-nan")

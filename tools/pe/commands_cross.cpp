@@ -105,7 +105,10 @@ int cmd_cross(const Arguments& a)
   if(ec != PE::OK)
   {
     std::string detail;
-    if(st.failed_landmark < landmarks.size())
+    // a landmark named by the function is a fault of the landmark file (exit 3), whatever the error code
+    // (border landmarks out of order come as ERROR_WRONG_PARAMETER, like a misuse of the function)
+    const bool landmark_fault = st.failed_landmark < landmarks.size();
+    if(landmark_fault)
     {
       const Landmark& l = landmarks[st.failed_landmark];
       detail = "'" + a.positional[2] + "' line " + std::to_string(lines[st.failed_landmark]) + ": landmark " +
@@ -123,7 +126,8 @@ int cmd_cross(const Arguments& a)
                                            : std::string(PE::get_error_message(ec)));
     else if(st.closed && ec == PE::ERROR_WRONG_PARAMETER)
       detail = "closed meshes need at least two landmarks (the cut runs through them in file order), and no --compatible yet";
-    return run.fail(ec, "cross-parameterization of '" + in_a.filename + "' and '" + in_b.filename + "' failed", detail);
+    return run.fail(ec, "cross-parameterization of '" + in_a.filename + "' and '" + in_b.filename + "' failed", detail,
+                    landmark_fault ? EXIT_INPUT : -1);
   }
   run.result.add("valid_a", st.report_a.is_valid());
   run.result.add("valid_b", st.report_b.is_valid());

@@ -577,7 +577,7 @@ int Run::finish(int code)
   return code;
 }
 
-int Run::fail(PE::Error_code ec, const std::string& what, const std::string& detail)
+int Run::fail(PE::Error_code ec, const std::string& what, const std::string& detail, int code)
 {
   const std::string message = detail.empty() ? std::string(PE::get_error_message(ec)) : detail;
   std::cerr << "pe: " << what << ": " << message << " (" << PE::get_error_name(ec) << ")" << std::endl;
@@ -588,7 +588,7 @@ int Run::fail(PE::Error_code ec, const std::string& what, const std::string& det
   result.add("valid", false);
   if(!written) result.add("written", false);
   summary << PE::get_error_name(ec) << (written ? "" : ", nothing written");
-  return finish(exit_status(ec));
+  return finish(code >= 0 ? code : exit_status(ec));
 }
 
 std::string format_number(double d)

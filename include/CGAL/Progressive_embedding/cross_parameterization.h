@@ -9,8 +9,9 @@
 ///
 /// `cross_parameterization()`: a map between two triangulated disks A and B with matched landmarks,
 /// through two certified planar maps of one unit square. The steps:
-///  1. validation of both meshes (triangulated disks) and of the landmarks (vertices of their mesh,
-///     interior, each used once), nothing computed before it passes;
+///  1. validation of both meshes (triangulated disks) and of the landmarks (vertices of their mesh, each used
+///     once, both inside or both on their borders, the border ones in the same order along both borders),
+///     nothing computed before it passes;
 ///  2. both borders on the unit square, matched by relative 3D arc length from a matched pair of
 ///     border vertices (internal/cross/common_border.h);
 ///  3. B's map: Tutte, repaired if needed and optimized (`parameterize_certified()`), certified; then,

@@ -908,3 +908,59 @@ PE_TEST_GROUP(cross_exact_location)
   RUN(exact_location());
   return EXIT_SUCCESS;
 }
+
+// Meshes with exact rational and MPFR points: mushroom.off to itself with five interior landmarks. The maps are
+// computed in double from the points rounded once, so the result is bit for bit the one of the same meshes with
+// double points; every vertex lands on its own vertex.
+template <class K>
+int exact_input(const std::string& data_dir, const std::vector<PE::Cross_location<Surface_mesh> >& reference)
+{
+  typedef CGAL::Surface_mesh<typename K::Point_3> Mesh;
+  typedef typename Mesh::Vertex_index Vertex;
+  Mesh a;
+  CHECK(CGAL::IO::read_polygon_mesh(data_dir + "/meshes/mushroom.off", a), "read mushroom.off");
+  const Mesh b = a;
+  std::vector<std::pair<Vertex, Vertex> > landmarks;
+  for(Vertex v : vertices(a))
+    if(!a.is_border(v) && std::size_t(v) % 97 == 3 && landmarks.size() < 5) landmarks.emplace_back(v, v);
+  auto loc = a.template add_property_map<Vertex, PE::Cross_location<Mesh> >("v:cross").first;
+  PE::Cross_parameterization_statistics st;
+  const PE::Error_code ec = PE::cross_parameterization(a, b, landmarks, loc, PE::parameters::statistics(&st));
+  CHECK(ec == PE::OK, nt_name<K>() << ": " << PE::get_error_message(ec));
+  CHECK(st.report_a.is_valid() && st.report_b.is_valid() && st.landmarks_exact, nt_name<K>() << ": certified");
+  CHECK(st.located_on_vertex == a.number_of_vertices(), nt_name<K>() << ": every vertex on a vertex");
+  CHECK(reference.size() == a.number_of_vertices(), "reference size");
+  for(Vertex v : vertices(a))
+  {
+    const auto& l = loc[v];
+    const auto& r = reference[std::size_t(v)];
+    CHECK(std::size_t(l.first) == std::size_t(r.first) && l.second == r.second, nt_name<K>() << ": vertex " << std::size_t(v)
+          << " located as with double points");
+    const auto h = halfedge(l.first, b);
+    const std::array<Vertex, 3> corners{{ source(h, b), target(h, b), target(next(h, b), b) }};
+    bool own = false;
+    for(int i = 0; i < 3; ++i) own = own || (corners[i] == v && l.second[i] == 1.);
+    CHECK(own, nt_name<K>() << ": vertex " << std::size_t(v) << " on itself");
+  }
+  std::cout << "  " << nt_name<K>() << " points: " << landmarks.size() << " landmarks, " << st.located_on_vertex
+            << " vertices each on itself, bit for bit as with double points" << std::endl;
+  return EXIT_SUCCESS;
+}
+
+PE_TEST_GROUP(cross_exact_input)
+{
+  Surface_mesh a;
+  CHECK(CGAL::IO::read_polygon_mesh(data_dir + "/meshes/mushroom.off", a), "read mushroom.off");
+  const Surface_mesh b = a;
+  typedef Surface_mesh::Vertex_index Vertex;
+  std::vector<std::pair<Vertex, Vertex> > landmarks;
+  for(Vertex v : vertices(a))
+    if(!a.is_border(v) && std::size_t(v) % 97 == 3 && landmarks.size() < 5) landmarks.emplace_back(v, v);
+  std::vector<PE::Cross_location<Surface_mesh> > reference(a.number_of_vertices());
+  const PE::Error_code ec = PE::cross_parameterization(a, b, landmarks,
+    boost::make_iterator_property_map(reference.begin(), get(CGAL::vertex_index, a)));
+  CHECK(ec == PE::OK, PE::get_error_message(ec));
+  RUN(exact_input<Kq>(data_dir, reference));
+  RUN(exact_input<Kfr>(data_dir, reference));
+  return EXIT_SUCCESS;
+}

@@ -10,5 +10,9 @@ if(TARGET pe AND Python3_EXECUTABLE)
                      ${CMAKE_CURRENT_BINARY_DIR}/batch_runs ${_group})
     # alone: the groups share ${CMAKE_CURRENT_BINARY_DIR}/batch_runs, and `limits` kills children at their time limit
     set_tests_properties(batch_${_group} PROPERTIES TIMEOUT 120 LABELS "batch" RUN_SERIAL TRUE)
+    # instrumented builds (PE_TEST_TIMEOUT_FACTOR > 1) run slower: `limits` scales its --time-limit by the factor
+    if(PE_TEST_TIMEOUT_FACTOR)
+      set_tests_properties(batch_${_group} PROPERTIES ENVIRONMENT "PE_TEST_TIMEOUT_FACTOR=${PE_TEST_TIMEOUT_FACTOR}")
+    endif()
   endforeach()
 endif()

@@ -37,6 +37,7 @@
 #include <CGAL/Progressive_embedding/internal/cross/common_border.h>
 #include <CGAL/Progressive_embedding/internal/cross/locate_in_map.h>
 #include <CGAL/Progressive_embedding/internal/cross/remeshed_pair_protocol.h>
+#include <CGAL/Progressive_embedding/internal/symmetric_dirichlet.h>
 #include <CGAL/Real_timer.h>
 
 #include "process_memory.h"
@@ -109,29 +110,21 @@ bool read_pair(const std::string& file_a, const std::string& file_b, SM& a, SM& 
   return true;
 }
 
-// the symmetric Dirichlet energy of the affine map from the triangle p to the triangle q (both in 3D, each in a
-// frame of its own plane); infinite when q is degenerate
+// the symmetric Dirichlet energy of the affine map from the triangle p to the triangle q (both in 3D): q laid out in
+// its own plane, measured against p by the optimizer's energy (internal/symmetric_dirichlet.h); infinite when q is
+// degenerate
 double triangle_map_energy(const std::array<K::Point_3, 3>& p, const std::array<K::Point_3, 3>& q)
 {
-  auto frame = [](const std::array<K::Point_3, 3>& t, double c[4]) { // columns (e1, e2) in the triangle's plane
-    const K::Vector_3 e1 = t[1] - t[0], e2 = t[2] - t[0];
-    const double l1 = std::sqrt(e1.squared_length());
-    if(!(l1 > 0)) return false;
-    const double x2 = (e1 * e2) / l1;
-    const double y2 = std::sqrt((std::max)(0., e2.squared_length() - x2 * x2));
-    c[0] = l1; c[1] = 0; c[2] = x2; c[3] = y2; // [a b; c d] = [l1 x2; 0 y2] stored column-wise
-    return y2 > 0;
-  };
-  double a[4], b[4];
-  if(!frame(p, a) || !frame(q, b)) return std::numeric_limits<double>::infinity();
-  // J = B A^-1 with A = [a0 a2; a1 a3] (a1 = 0), B likewise
-  const double det_a = a[0] * a[3];
-  const double ia[4] = { a[3] / det_a, 0., -a[2] / det_a, a[0] / det_a }; // column-wise inverse of the upper triangular A
-  const double j00 = b[0] * ia[0] + b[2] * ia[1], j10 = b[1] * ia[0] + b[3] * ia[1];
-  const double j01 = b[0] * ia[2] + b[2] * ia[3], j11 = b[1] * ia[2] + b[3] * ia[3];
-  const double frob = j00 * j00 + j01 * j01 + j10 * j10 + j11 * j11, det = j00 * j11 - j01 * j10;
-  if(!(det != 0)) return std::numeric_limits<double>::infinity();
-  return frob * (1 + 1 / (det * det));
+  auto coords = [](const K::Point_3& x) { return std::array<double, 3>{{ x.x(), x.y(), x.z() }}; };
+  const PE::internal::Reference_triangle<double> ref =
+    PE::internal::reference_from_points<double, 3>(coords(p[0]), coords(p[1]), coords(p[2]));
+  const K::Vector_3 e1 = q[1] - q[0], e2 = q[2] - q[0];
+  const double l1 = std::sqrt(e1.squared_length());
+  if(!(l1 > 0) || !(ref.area2 > 0)) return std::numeric_limits<double>::infinity();
+  const double x2 = (e1 * e2) / l1, y2 = std::sqrt(CGAL::cross_product(e1, e2).squared_length()) / l1;
+  bool ok = false;
+  const double e = PE::internal::symmetric_dirichlet(ref, 0., 0., l1, 0., x2, y2, ok);
+  return ok && std::isfinite(e) ? e : std::numeric_limits<double>::infinity();
 }
 
 // the composed map's distortion sampled at A's vertices (see Row)
@@ -211,18 +204,9 @@ Row run_naive(const std::string& file_a, const std::string& file_b, const std::s
   if(ec != PE::OK) { r.status = PE::get_error_name(ec); return r; }
   r.va = disk_a.number_of_vertices();
   r.vb = disk_b.number_of_vertices();
-  // the start pair as cross_parameterization() chooses it: the first border vertex of A in vertices(a), the border
-  // vertex of B nearest to it
-  std::size_t first = 0;
-  while(!disk_a.on_border[first]) ++first;
-  std::size_t start_a = 0, start_b = 0;
-  while(disk_a.border[start_a] != first) ++start_a;
-  double best = std::numeric_limits<double>::infinity();
-  for(std::size_t k = 0; k < disk_b.border.size(); ++k)
-  {
-    const double d = CGAL::squared_distance(a.point(disk_a.vertices[first]), b.point(disk_b.vertices[disk_b.border[k]]));
-    if(d < best) { best = d; start_b = k; }
-  }
+  // the start pair as cross_parameterization() chooses it
+  const std::pair<std::size_t, std::size_t> start = PE::internal::default_start_pair(disk_a, a.points(), disk_b, b.points());
+  const std::size_t start_a = start.first, start_b = start.second;
   // both borders on the unit circle by relative arc length from the start pair (on the square, an edge inside a
   // mesh joining two border vertices of one side would be flat, and Tutte's map refuses it)
   auto on_circle = [](const Disk& disk, const SM& m, std::size_t start) {

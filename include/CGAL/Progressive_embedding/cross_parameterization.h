@@ -251,15 +251,6 @@ using Cross_location = CGAL::Polygon_mesh_processing::Face_location<TriangleMesh
 
 namespace internal {
 
-// the 3D distance between points of two possibly different kernels, in double
-template <class P, class Q>
-double squared_distance_3_double(const P& p, const Q& q)
-{
-  const double dx = CGAL::to_double(p.x()) - CGAL::to_double(q.x());
-  const double dy = CGAL::to_double(p.y()) - CGAL::to_double(q.y());
-  const double dz = CGAL::to_double(p.z()) - CGAL::to_double(q.z());
-  return dx * dx + dy * dy + dz * dz;
-}
 
 // the convex combination of three values: numbers, std::array of numbers, CGAL points and colours
 template <class T>
@@ -778,17 +769,9 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   }
   else
   {
-    // the first border vertex of A in vertices(tm_a), the border vertex of B nearest to it
-    std::size_t first = 0;
-    while(border_pos_a[first] == std::size_t(-1)) ++first;
-    start_a = border_pos_a[first];
-    const auto& p = get(vpm_a, disk_a.vertices[first]);
-    double best = std::numeric_limits<double>::infinity();
-    for(std::size_t k = 0; k < disk_b.border.size(); ++k)
-    {
-      const double d = internal::squared_distance_3_double(p, get(vpm_b, disk_b.vertices[disk_b.border[k]]));
-      if(d < best) { best = d; start_b = k; }
-    }
+    const std::pair<std::size_t, std::size_t> start = internal::default_start_pair(disk_a, vpm_a, disk_b, vpm_b);
+    start_a = start.first;
+    start_b = start.second;
   }
   // a square needs four border vertices on each mesh: say which one has fewer
   if(disk_a.border.size() < 4) { stats.failed_mesh = 0; return finish(ERROR_BORDER_TOO_SHORT); }

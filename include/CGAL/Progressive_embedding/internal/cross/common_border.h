@@ -25,12 +25,44 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Progressive_embedding {
 namespace internal {
+
+// the 3D distance between points of two possibly different kernels, in double
+template <class P, class Q>
+double squared_distance_3_double(const P& p, const Q& q)
+{
+  const double dx = CGAL::to_double(p.x()) - CGAL::to_double(q.x());
+  const double dy = CGAL::to_double(p.y()) - CGAL::to_double(q.y());
+  const double dz = CGAL::to_double(p.z()) - CGAL::to_double(q.z());
+  return dx * dx + dy * dy + dz * dz;
+}
+
+// The matched pair of border vertices when none is given: the first border vertex of A in the disk's vertex order
+// (that of vertices(tm_a)) and the border vertex of B nearest to it in 3D; returned as positions on the two border
+// cycles.
+template <class MeshA, class VPMA, class MeshB, class VPMB>
+std::pair<std::size_t, std::size_t> default_start_pair(const Indexed_disk<MeshA>& disk_a, VPMA vpm_a,
+                                                       const Indexed_disk<MeshB>& disk_b, VPMB vpm_b)
+{
+  std::size_t first = 0;
+  while(!disk_a.on_border[first]) ++first;
+  const std::size_t start_a = std::size_t(std::find(disk_a.border.begin(), disk_a.border.end(), first) - disk_a.border.begin());
+  const auto& p = get(vpm_a, disk_a.vertices[first]);
+  std::size_t start_b = 0;
+  double best = std::numeric_limits<double>::infinity();
+  for(std::size_t k = 0; k < disk_b.border.size(); ++k)
+  {
+    const double d = squared_distance_3_double(p, get(vpm_b, disk_b.vertices[disk_b.border[k]]));
+    if(d < best) { best = d; start_b = k; }
+  }
+  return std::make_pair(start_a, start_b);
+}
 
 // the relative arc-length parameters of `disk`'s border from its position `start` on
 // (s[k]: of the border vertex start + k, modulo the border size; s[nb] = 1)

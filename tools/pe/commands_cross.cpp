@@ -9,9 +9,11 @@
 #include "pe.h"
 
 #include <CGAL/Progressive_embedding/cross_parameterization.h>
+#include <CGAL/Progressive_embedding/IO/SVG.h>
 #include <CGAL/Progressive_embedding/IO/internal/atomic_output.h>
 #include <CGAL/IO/OBJ.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -57,6 +59,59 @@ int read_landmarks(Run& run, const std::string& filename, const Mesh& a, const M
   return EXIT_VALID;
 }
 
+// One panel of the picture: a planar map (a flat mesh, (u, v, 0)) drawn by write_SVG(), certified by it, its
+// landmarks marked; its ids prefixed by `prefix` so that the two panels of one document keep them unique.
+PE::Error_code cross_panel(Mesh& plane, const std::vector<vertex_descriptor>& marked, const std::string& title,
+                           const std::string& prefix, std::string& svg, double& width, double& height)
+{
+  auto uv = plane.add_property_map<vertex_descriptor, Point_2>("v:pe_cross_picture", Point_2(0, 0)).first;
+  for(vertex_descriptor v : plane.vertices()) uv[v] = Point_2(plane.point(v).x(), plane.point(v).y());
+  PE::IO::SVG_options options;
+  options.title = title;
+  options.size = 700;
+  std::ostringstream os;
+  const PE::Error_code ec = PE::IO::write_SVG(os, plane, uv, options, PE::parameters::constrained_vertices(marked));
+  if(ec != PE::OK) return ec;
+  svg = os.str();
+  svg.erase(0, svg.find("<svg")); // the XML declaration goes once, at the top of the document
+  for(const std::string key : { "id=\"pe-", "url(#pe-" })
+    for(std::size_t at = svg.find(key); at != std::string::npos; at = svg.find(key, at + key.size()))
+      svg.insert(at + key.size(), prefix);
+  auto attribute = [&](const std::string& name) {
+    const std::size_t at = svg.find(" " + name + "=\"") + name.size() + 3;
+    return std::stod(svg.substr(at, svg.find('"', at) - at));
+  };
+  width = attribute("width");
+  height = attribute("height");
+  return PE::OK;
+}
+
+// The picture of --svg: A's planar map on the left, B's on the right (both on the unit square), each certified
+// and drawn by write_SVG(), the landmarks marked in both.
+int write_cross_picture(Run& run, const std::string& filename, Mesh& plane_a, Mesh& plane_b,
+                        const std::vector<Landmark>& landmarks, const std::string& name_a, const std::string& name_b)
+{
+  std::vector<vertex_descriptor> marked_a, marked_b;
+  for(const Landmark& l : landmarks) { marked_a.push_back(l.first); marked_b.push_back(l.second); }
+  std::string panels[2];
+  double w[2] = { 0, 0 }, h[2] = { 0, 0 };
+  PE::Error_code ec = cross_panel(plane_a, marked_a, "A: " + name_a, "a-", panels[0], w[0], h[0]);
+  if(ec == PE::OK) ec = cross_panel(plane_b, marked_b, "B: " + name_b, "b-", panels[1], w[1], h[1]);
+  if(ec != PE::OK) return run.fail(ec, "cannot draw '" + filename + "'");
+  panels[0].insert(4, " id=\"pe-cross-a\" x=\"0\" y=\"0\"");
+  panels[1].insert(4, " id=\"pe-cross-b\" x=\"" + PE::IO::format_number(w[0], 10) + "\" y=\"0\"");
+  const std::string width = PE::IO::format_number(w[0] + w[1], 10), height = PE::IO::format_number((std::max)(h[0], h[1]), 10);
+  ec = PE::IO::internal::write_file_atomically(filename, [&](std::ostream& os) {
+    os << "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n"
+       << "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << width << "\" height=\"" << height
+       << "\" viewBox=\"0 0 " << width << ' ' << height << "\">\n"
+       << panels[0] << panels[1] << "</svg>\n";
+    return os ? PE::OK : PE::ERROR_CANNOT_WRITE_FILE;
+  });
+  if(ec != PE::OK) return run.fail(ec, "cannot write '" + filename + "'");
+  return EXIT_VALID;
+}
+
 } // namespace
 
 int cmd_cross(const Arguments& a)
@@ -83,13 +138,16 @@ int cmd_cross(const Arguments& a)
   auto out = boost::make_iterator_property_map(located.begin(), get(CGAL::vertex_index, in_a.mesh));
   PE::Cross_parameterization_statistics st;
   const bool compatible = a.has("--compatible");
-  Mesh compatible_a, compatible_b;
+  const bool picture = a.has("--svg");
+  Mesh compatible_a, compatible_b, plane_a, plane_b;
   const auto np = PE::parameters::composed_distortion(!a.has("--no-composed"), PE::parameters::matched_maps(!a.has("--no-matched"),
                     PE::parameters::statistics(&st, CGAL::parameters::maximum_running_time(budget.remaining()))));
-  const PE::Error_code ec = compatible
-    ? PE::cross_parameterization(in_a.mesh, in_b.mesh, landmarks, out,
-                                 PE::parameters::compatible_meshes(std::make_pair(&compatible_a, &compatible_b), np))
-    : PE::cross_parameterization(in_a.mesh, in_b.mesh, landmarks, out, np);
+  auto cross = [&](const auto& with) {
+    return compatible ? PE::cross_parameterization(in_a.mesh, in_b.mesh, landmarks, out,
+                          PE::parameters::compatible_meshes(std::make_pair(&compatible_a, &compatible_b), with))
+                      : PE::cross_parameterization(in_a.mesh, in_b.mesh, landmarks, out, with);
+  };
+  const PE::Error_code ec = picture ? cross(PE::parameters::planar_maps(std::make_pair(&plane_a, &plane_b), np)) : cross(np);
   // the meshes as read (for closed meshes, the statistics count the cut disks)
   run.result.add("vertices_a", std::size_t(in_a.mesh.number_of_vertices()));
   run.result.add("vertices_b", std::size_t(in_b.mesh.number_of_vertices()));
@@ -125,7 +183,7 @@ int cmd_cross(const Arguments& a)
                (ec == PE::ERROR_NOT_A_DISK ? std::string("closed, and the other mesh is not (two disks or two closed genus-0 meshes)")
                                            : std::string(PE::get_error_message(ec)));
     else if(st.closed && ec == PE::ERROR_WRONG_PARAMETER)
-      detail = "closed meshes need at least two landmarks (the cut runs through them in file order), and no --compatible yet";
+      detail = "closed meshes need at least two landmarks (the cut runs through them in file order), and no --compatible or --svg yet";
     return run.fail(ec, "cross-parameterization of '" + in_a.filename + "' and '" + in_b.filename + "' failed", detail,
                     landmark_fault ? EXIT_INPUT : -1);
   }
@@ -183,6 +241,12 @@ int cmd_cross(const Arguments& a)
     }
     run.result.add("compatible_a", files[0]);
     run.result.add("compatible_b", files[1]);
+  }
+  if(picture)
+  {
+    const int ps = write_cross_picture(run, a.get("--svg"), plane_a, plane_b, landmarks, in_a.filename, in_b.filename);
+    if(ps != EXIT_VALID) return ps;
+    run.result.add("svg", a.get("--svg"));
   }
   run.result.add("written", true);
   run.result.add("valid", true);

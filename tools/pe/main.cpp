@@ -197,7 +197,7 @@ const std::vector<Command_spec>& command_table()
       "the constrained vertices. Without --fix (or with an empty file) only the border is prescribed; a vt\n"
       "border may be non-convex: simple (an embedding) or weakly self-overlapping (an immersion, certified\n"
       "locally injective, border only, optimized as an immersion; JSON \"immersion\": true)", cmd_constrain },
-    { "cross", "A B LANDMARKS OUT.txt", 4, 4, 3, { "--compatible", "--no-composed", "--no-matched", "--time-limit" },
+    { "cross", "A B LANDMARKS OUT.txt", 4, 4, 3, { "--compatible", "--svg", "--no-composed", "--no-matched", "--time-limit" },
       "the location on the disk B of every vertex of the disk A through a certified cross-parameterization\n"
       "(two closed genus-0 meshes are first cut into disks along a chain through the landmarks, in file order):\n"
       "both borders on the unit square by relative arc length (through the border landmarks), B mapped\n"
@@ -205,7 +205,8 @@ const std::vector<Command_spec>& command_table()
       "with its landmarks pinned on their partners' uv, then optimized for the distortion of the composed\n"
       "map (unless --no-composed; LANDMARKS: 'a_index b_index' lines,\n"
       "0-based in file order, both interior or both on their borders); OUT.txt: one line per vertex of A in file order, 'face_index b0 b1 b2' (the face of B in B's\n"
-      "file order, the barycentric coordinates of its vertices in the order the face lists them)", cmd_cross },
+      "file order, the barycentric coordinates of its vertices in the order the face lists them); --svg draws\n"
+      "both certified maps side by side, A's on the left, the landmarks marked (disks only)", cmd_cross },
     { "polygon", "POLY.txt OUT.obj", 2, 2, 1, { "--svg", "--time-limit" },
       "is the polygon of POLY.txt ('x y' lines, one vertex each, the last joined to the first) simple,\n"
       "weakly self-overlapping (the border of an immersed disk) or neither (exit 3,\n"

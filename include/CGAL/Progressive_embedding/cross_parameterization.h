@@ -72,6 +72,7 @@ enum b_to_a_locations_t { b_to_a_locations };
 enum compatible_meshes_t { compatible_meshes };
 enum composed_distortion_t { composed_distortion };
 enum matched_maps_t { matched_maps };
+enum planar_maps_t { planar_maps };
 } // namespace internal_np
 
 namespace parameters {
@@ -104,6 +105,12 @@ template <typename T> Named_function_parameters<T, internal_np::matched_maps_t> 
 template <typename T, typename P, typename G, typename B>
 Named_function_parameters<T, internal_np::matched_maps_t, CGAL::Named_function_parameters<P, G, B> >
 matched_maps(const T& t, const CGAL::Named_function_parameters<P, G, B>& np) { return { t, np }; }
+
+template <typename T> Named_function_parameters<T, internal_np::planar_maps_t> planar_maps(const T& t)
+{ return Named_function_parameters<T, internal_np::planar_maps_t>(t); }
+template <typename T, typename P, typename G, typename B>
+Named_function_parameters<T, internal_np::planar_maps_t, CGAL::Named_function_parameters<P, G, B> >
+planar_maps(const T& t, const CGAL::Named_function_parameters<P, G, B>& np) { return { t, np }; }
 } // namespace parameters
 #else
 namespace parameters {
@@ -128,6 +135,10 @@ template <typename T> unspecified_type composed_distortion(const T& t);
 /// the named parameter `matched_maps` of `cross_parameterization()`: a `bool`, whether B's map is made again the way
 /// A's is, by `constrained_embedding()` with B's landmarks pinned; `matched_maps(t, np)` appends it to the pack `np`
 template <typename T> unspecified_type matched_maps(const T& t);
+/// \ingroup PkgProgressiveEmbeddingNamedParameters
+/// the named parameter `planar_maps` of `cross_parameterization()`: a `std::pair` of pointers to two output meshes
+/// that receive the certified planar maps of A and B; `planar_maps(t, np)` appends it to the pack `np`
+template <typename T> unspecified_type planar_maps(const T& t);
 } // namespace parameters
 #endif
 
@@ -396,6 +407,31 @@ void write_soup(const std::vector<std::array<double, 3> >& points, const std::ve
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(p, triangles, out);
 }
 
+// A planar map as a soup of points (u, v, 0): first the vertices of `work` standing for the mesh's own vertices, in
+// the order of `first`, then the other vertices of `work` (those added to a refined copy) in the order of
+// vertices(work); the faces of `work`, each from its halfedge (counterclockwise in a valid map).
+template <class Work, class UVMap>
+void planar_soup(const Work& work, UVMap uv, const std::vector<typename boost::graph_traits<Work>::vertex_descriptor>& first,
+                 std::vector<std::array<double, 3> >& points, std::vector<std::array<std::size_t, 3> >& triangles)
+{
+  typedef typename boost::graph_traits<Work>::vertex_descriptor wvertex;
+  std::unordered_map<wvertex, std::size_t, boost::hash<wvertex> > index;
+  points.clear();
+  triangles.clear();
+  auto add = [&](wvertex v) {
+    if(!index.emplace(v, points.size()).second) return;
+    const auto& p = get(uv, v);
+    points.push_back({{ CGAL::to_double(p.x()), CGAL::to_double(p.y()), 0. }});
+  };
+  for(wvertex v : first) add(v);
+  for(wvertex v : vertices(work)) add(v);
+  for(auto f : faces(work))
+  {
+    const auto h = halfedge(f, work);
+    triangles.push_back({{ index.at(source(h, work)), index.at(target(h, work)), index.at(target(next(h, work), work)) }});
+  }
+}
+
 template <class TriangleMeshA, class Work, class UVMap, class ToWork, class SteinerPoints, class Point_2>
 Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<TriangleMeshA>& disk_a, const Work& work,
                                   UVMap uv, const ToWork& to_work, const SteinerPoints& steiner,
@@ -519,7 +555,7 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 /// Two closed genus-0 meshes (no border) are first cut into disks along a chain through the landmarks, in their
 /// order: the shortest edge path from each landmark to the next, avoiding the earlier paths and the other landmarks;
 /// every landmark copy on the cut is a border landmark (see the user manual, section Closed Surfaces). They need at
-/// least two landmarks, and `compatible_meshes`, `b_to_a_locations` and `border_vertex_pair` do not apply to them
+/// least two landmarks, and `compatible_meshes`, `planar_maps`, `b_to_a_locations` and `border_vertex_pair` do not apply to them
 /// (`ERROR_WRONG_PARAMETER`).
 ///
 /// Since both maps are one-to-one onto the same square, the composition (A's map, then the inverse of B's) is a
@@ -610,6 +646,21 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///     \cgalParamType{`std::pair<OutputMeshA*, OutputMeshB*>`, each a model of `MutableFaceGraph` whose point type
 ///                    is constructible from three `double`; the meshes are cleared first}
 ///     \cgalParamDefault{none: no overlay is computed}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{planar_maps}
+///     \cgalParamDescription{receives, on success, the two certified maps onto the unit square as flat meshes (each
+///                           vertex at (u, v, 0)): first A's map, on A's copy as `constrained_embedding()` refined it
+///                           (`Cross_parameterization_statistics::vertices_added_a`) and as the composed distortion
+///                           left it, then B's map (on B, or on B's refined copy:
+///                           `Cross_parameterization_statistics::vertices_added_b`). Each lists first the vertices of
+///                           its mesh in the order of `vertices(tm)`, then the vertices added to its copy; its faces
+///                           are counterclockwise. These are the maps that `check_embedding()` certified
+///                           (`Cross_parameterization_statistics::report_a` and `report_b`): no face flipped or
+///                           degenerate in floating point, the landmarks of A at the same points as their partners.
+///                           Either pointer may be null}
+///     \cgalParamType{`std::pair<OutputMeshA*, OutputMeshB*>`, each a model of `MutableFaceGraph` whose point type
+///                    is constructible from three `double`; the meshes are cleared first}
+///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{statistics}
 ///     \cgalParamDescription{receives counts, times and both certificates}
@@ -1022,6 +1073,25 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
     if(ec != OK) return finish(ec);
   }
 
+  // the planar maps as flat soups, A's vertices (then B's) first in their meshes' order
+  constexpr bool planar = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::planar_maps_t>::value;
+  std::vector<std::array<double, 3> > plane_a, plane_b;
+  std::vector<std::array<std::size_t, 3> > plane_faces_a, plane_faces_b;
+  if constexpr(planar)
+  {
+    std::vector<wvertex> first_a;
+    for(vertex_a v : disk_a.vertices) first_a.push_back(to_work[v]);
+    internal::planar_soup(work, uv_a, first_a, plane_a, plane_faces_a);
+    if(refined_b)
+    {
+      std::vector<wbvertex> first_b;
+      for(vertex_b v : disk_b.vertices) first_b.push_back(to_work_b.at(v));
+      internal::planar_soup(work_b, uv_wb, first_b, plane_b, plane_faces_b);
+    }
+    else
+      internal::planar_soup(tm_b, uv_b, disk_b.vertices, plane_b, plane_faces_b);
+  }
+
   // ---- 7. the output, written only now that everything is certified --------------------------------
   for(std::size_t i = 0; i < locations.size(); ++i) put(out, disk_a.vertices[i], locations[i]);
   if constexpr(backwards)
@@ -1036,6 +1106,12 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
     if(meshes.first != nullptr) internal::write_soup(on_a, triangles, *meshes.first);
     if(meshes.second != nullptr) internal::write_soup(on_b, triangles, *meshes.second);
     stats.seconds_compatible += timer.time() - before_write;
+  }
+  if constexpr(planar)
+  {
+    const auto maps = get_parameter(np, internal_np::planar_maps);
+    if(maps.first != nullptr) internal::write_soup(plane_a, plane_faces_a, *maps.first);
+    if(maps.second != nullptr) internal::write_soup(plane_b, plane_faces_b, *maps.second);
   }
   return finish(OK);
 }
@@ -1068,6 +1144,7 @@ Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const Triang
   // what names the vertices of B or asks for meshes does not apply to the cut disks (not yet)
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::b_to_a_locations_t>::value ||
                !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::compatible_meshes_t>::value ||
+               !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::planar_maps_t>::value ||
                !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::border_vertex_pair_t>::value)
     return ERROR_WRONG_PARAMETER;
 

@@ -225,6 +225,80 @@ int identical_mesh(const std::string& file)
   return EXIT_SUCCESS;
 }
 
+// the vertices of a mesh in iteration order, and each face as their indices
+template <class Mesh>
+std::pair<std::vector<Epick::Point_3>, std::vector<std::vector<std::size_t> > > indexed_soup(const Mesh& m)
+{
+  std::unordered_map<typename boost::graph_traits<Mesh>::vertex_descriptor, std::size_t,
+                     boost::hash<typename boost::graph_traits<Mesh>::vertex_descriptor> > index;
+  std::pair<std::vector<Epick::Point_3>, std::vector<std::vector<std::size_t> > > r;
+  for(auto v : vertices(m)) { index[v] = r.first.size(); r.first.push_back(get(CGAL::vertex_point, m, v)); }
+  for(auto f : faces(m))
+  {
+    r.second.emplace_back();
+    for(auto v : vertices_around_face(halfedge(f, m), m)) r.second.back().push_back(index.at(v));
+  }
+  return r;
+}
+
+// The planar maps of `planar_maps`: the certified maps as flat meshes, A's and B's own vertices first in their
+// meshes' order, the added ones after; each map valid on its own (check_embedding() of (x, y)), its border on the
+// unit square, each landmark at its partner's point bit for bit, and every vertex of A at the point of B's map that
+// its location gives (the barycentric coordinates rounded once: 1e-12 of the square).
+template <class MeshA, class MeshB, class PlaneA, class PlaneB, class Locations>
+int planar_maps_agree(const MeshA& a, const MeshB& b,
+                      const std::vector<std::pair<typename boost::graph_traits<MeshA>::vertex_descriptor,
+                                                  typename boost::graph_traits<MeshB>::vertex_descriptor> >& landmarks,
+                      const Locations& loc, const PlaneA& plane_a, const PlaneB& plane_b,
+                      const PE::Cross_parameterization_statistics& st)
+{
+  const auto sa = indexed_soup(plane_a);
+  const auto sb = indexed_soup(plane_b);
+  CHECK(sa.first.size() == st.vertices_a + st.vertices_added_a && sb.first.size() == st.vertices_b + st.vertices_added_b,
+        "planar maps: vertex counts " << sa.first.size() << " " << sb.first.size());
+  CHECK(sa.second.size() == st.report_a.faces && sb.second.size() == st.report_b.faces, "planar maps: the certified faces");
+  for(const auto* soup : { &sa, &sb })
+  {
+    Surface_mesh flat;
+    std::vector<std::vector<std::size_t> > faces = soup->second;
+    PMP::polygon_soup_to_polygon_mesh(soup->first, faces, flat);
+    auto uv = flat.add_property_map<Surface_mesh::Vertex_index, Epick::Point_2>("v:uv").first;
+    for(auto v : flat.vertices())
+    {
+      const Epick::Point_3& p = flat.point(v);
+      CHECK(p.z() == 0, "planar maps: flat");
+      uv[v] = Epick::Point_2(p.x(), p.y());
+      if(flat.is_border(v)) CHECK(p.x() == 0 || p.x() == 1 || p.y() == 0 || p.y() == 1, "planar maps: border on the square");
+    }
+    const PE::Embedding_report r = PE::check_embedding(flat, uv);
+    CHECK(r.is_valid() && r.flipped == 0 && r.degenerate == 0, "planar maps: certified, " << r.summary());
+  }
+  std::unordered_map<typename boost::graph_traits<MeshA>::vertex_descriptor, std::size_t,
+                     boost::hash<typename boost::graph_traits<MeshA>::vertex_descriptor> > index_a;
+  std::unordered_map<typename boost::graph_traits<MeshB>::vertex_descriptor, std::size_t,
+                     boost::hash<typename boost::graph_traits<MeshB>::vertex_descriptor> > index_b;
+  for(auto v : vertices(a)) index_a.emplace(v, index_a.size());
+  for(auto v : vertices(b)) index_b.emplace(v, index_b.size());
+  for(const auto& l : landmarks)
+    CHECK(sa.first[index_a.at(l.first)] == sb.first[index_b.at(l.second)], "planar maps: a landmark at its partner");
+  double worst = 0;
+  for(auto v : vertices(a))
+  {
+    const PE::Cross_location<MeshB>& l = loc.at(v);
+    const auto h = halfedge(l.first, b);
+    const std::size_t c[3] = { index_b.at(source(h, b)), index_b.at(target(h, b)), index_b.at(target(next(h, b), b)) };
+    double x = 0, y = 0;
+    for(int i = 0; i < 3; ++i) { x += l.second[i] * sb.first[c[i]].x(); y += l.second[i] * sb.first[c[i]].y(); }
+    const Epick::Point_3& p = sa.first[index_a.at(v)];
+    worst = (std::max)(worst, (std::max)(std::abs(x - p.x()), std::abs(y - p.y())));
+  }
+  CHECK(worst <= 1e-12, "planar maps: the locations point where A's map puts A's vertices, off by " << worst);
+  std::cout << "planar maps: A " << sa.first.size() << " vertices (" << st.vertices_added_a << " added), " << sa.second.size()
+            << " faces; B " << sb.first.size() << " vertices (" << st.vertices_added_b << " added), " << sb.second.size()
+            << " faces; both certified, landmarks bit for bit, locations within " << worst << " of A's map" << std::endl;
+  return EXIT_SUCCESS;
+}
+
 // A == B with the landmarks' partners shifted by one (landmark k of A on landmark k + 1 of B): A's map must move
 // them far, its copy is refined by Steiner vertices; both directions are still located, the landmarks exact, and
 // the locations of B's vertices on A (through the Steiner points' positions on A's faces) sum to 1.
@@ -242,6 +316,21 @@ int shifted_landmarks(const std::string& file)
   PE::Cross_parameterization_statistics st;
   RUN(certified_cross(a, b, landmarks, loc, st, back));
   CHECK(st.vertices_added_a > 0, "A's copy refined");
+  {
+    // the planar maps, A's on its refined copy: its own vertices first, the added ones after
+    Surface_mesh plane_a, plane_b;
+    Location_map<Mesh> again;
+    PE::Cross_parameterization_statistics st2;
+    const PE::Error_code ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(again),
+      PE::parameters::planar_maps(std::make_pair(&plane_a, &plane_b), PE::parameters::statistics(&st2)));
+    CHECK(ec == PE::OK && st2.vertices_added_a == st.vertices_added_a, "the same map with planar_maps");
+    RUN(planar_maps_agree(a, b, landmarks, again, plane_a, plane_b, st2));
+    // the null pointer: that map is not written
+    Surface_mesh untouched;
+    CHECK(PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(again),
+            PE::parameters::planar_maps(std::make_pair(static_cast<Surface_mesh*>(nullptr), &untouched))) == PE::OK &&
+          num_vertices(untouched) == st2.vertices_b + st2.vertices_added_b, "planar_maps with one null pointer");
+  }
   for(const auto& l : back)
   {
     const double sum = l.second.second[0] + l.second.second[1] + l.second.second[2];
@@ -315,22 +404,6 @@ int remeshed(const std::string& data_dir, const std::string& name, double bound)
   return EXIT_SUCCESS;
 }
 
-// the vertices of a mesh in iteration order, and each face as their indices
-template <class Mesh>
-std::pair<std::vector<Epick::Point_3>, std::vector<std::vector<std::size_t> > > indexed_soup(const Mesh& m)
-{
-  std::unordered_map<typename boost::graph_traits<Mesh>::vertex_descriptor, std::size_t,
-                     boost::hash<typename boost::graph_traits<Mesh>::vertex_descriptor> > index;
-  std::pair<std::vector<Epick::Point_3>, std::vector<std::vector<std::size_t> > > r;
-  for(auto v : vertices(m)) { index[v] = r.first.size(); r.first.push_back(get(CGAL::vertex_point, m, v)); }
-  for(auto f : faces(m))
-  {
-    r.second.emplace_back();
-    for(auto v : vertices_around_face(halfedge(f, m), m)) r.second.back().push_back(index.at(v));
-  }
-  return r;
-}
-
 // The compatible meshes of A and B: one connectivity (B' a Polyhedron_3, A' of A's type), the overlay certified;
 // A' on A's surface (every vertex of A in A' bit for bit, the same area), B' on B's likewise; each landmark one
 // vertex of both, at its point on A and at its partner's on B. `identical`: A == B with every interior vertex a
@@ -342,12 +415,16 @@ int compatible(const MeshA& a, const Surface_mesh& b,
 {
   MeshA a_out;
   Polyhedron b_out;
+  Surface_mesh plane_a;
+  Polyhedron plane_b;
   std::unordered_map<typename boost::graph_traits<MeshA>::vertex_descriptor, PE::Cross_location<Surface_mesh>,
                      boost::hash<typename boost::graph_traits<MeshA>::vertex_descriptor> > loc;
   PE::Cross_parameterization_statistics st;
   const PE::Error_code ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(loc),
-    PE::parameters::compatible_meshes(std::make_pair(&a_out, &b_out), PE::parameters::statistics(&st)));
+    PE::parameters::compatible_meshes(std::make_pair(&a_out, &b_out),
+      PE::parameters::planar_maps(std::make_pair(&plane_a, &plane_b), PE::parameters::statistics(&st))));
   CHECK(ec == PE::OK, PE::get_error_message(ec));
+  RUN(planar_maps_agree(a, b, landmarks, loc, plane_a, plane_b, st));
   CHECK(st.report_compatible.is_valid(), "the triangulated overlay certified");
   CHECK(st.report_compatible.flipped == 0 && st.report_compatible.degenerate == 0, "no flipped or flat triangle");
   const auto sa = indexed_soup(a_out);

@@ -59,10 +59,12 @@ int read_landmarks(Run& run, const std::string& filename, const Mesh& a, const M
   return EXIT_VALID;
 }
 
-// One panel of the picture: a planar map (a flat mesh, (u, v, 0)) drawn by write_SVG(), certified by it, its
-// landmarks marked; its ids prefixed by `prefix` so that the two panels of one document keep them unique.
-PE::Error_code cross_panel(Mesh& plane, const std::vector<vertex_descriptor>& marked, const std::string& title,
-                           const std::string& prefix, std::string& svg, double& width, double& height)
+// One panel of the picture: a planar map (a flat mesh, (u, v, 0)) drawn by write_SVG() with the certificate that
+// cross_parameterization() made of it (the legend's counts; the map is not certified twice), its landmarks marked;
+// its ids prefixed by `prefix` so that the two panels of one document keep them unique.
+PE::Error_code cross_panel(Mesh& plane, const PE::Embedding_report& report, const std::vector<vertex_descriptor>& marked,
+                           const std::string& title, const std::string& prefix, std::string& svg, double& width,
+                           double& height)
 {
   auto uv = plane.add_property_map<vertex_descriptor, Point_2>("v:pe_cross_picture", Point_2(0, 0)).first;
   for(vertex_descriptor v : plane.vertices()) uv[v] = Point_2(plane.point(v).x(), plane.point(v).y());
@@ -70,7 +72,7 @@ PE::Error_code cross_panel(Mesh& plane, const std::vector<vertex_descriptor>& ma
   options.title = title;
   options.size = 700;
   std::ostringstream os;
-  const PE::Error_code ec = PE::IO::write_SVG(os, plane, uv, options, PE::parameters::constrained_vertices(marked));
+  const PE::Error_code ec = PE::IO::write_SVG(os, plane, uv, report, options, PE::parameters::constrained_vertices(marked));
   if(ec != PE::OK) return ec;
   svg = os.str();
   svg.erase(0, svg.find("<svg")); // the XML declaration goes once, at the top of the document
@@ -78,25 +80,28 @@ PE::Error_code cross_panel(Mesh& plane, const std::vector<vertex_descriptor>& ma
     for(std::size_t at = svg.find(key); at != std::string::npos; at = svg.find(key, at + key.size()))
       svg.insert(at + key.size(), prefix);
   auto attribute = [&](const std::string& name) {
-    const std::size_t at = svg.find(" " + name + "=\"") + name.size() + 3;
-    return std::stod(svg.substr(at, svg.find('"', at) - at));
+    const std::size_t at = svg.find(" " + name + "=\"");
+    if(at == std::string::npos) return 0.; // cannot happen: write_SVG() gives its size
+    const std::size_t begin = at + name.size() + 3;
+    return std::stod(svg.substr(begin, svg.find('"', begin) - begin));
   };
   width = attribute("width");
   height = attribute("height");
   return PE::OK;
 }
 
-// The picture of --svg: A's planar map on the left, B's on the right (both on the unit square), each certified
-// and drawn by write_SVG(), the landmarks marked in both.
+// The picture of --svg: A's planar map on the left, B's on the right (both on the unit square), each drawn by
+// write_SVG() with its certificate, the landmarks marked in both.
 int write_cross_picture(Run& run, const std::string& filename, Mesh& plane_a, Mesh& plane_b,
-                        const std::vector<Landmark>& landmarks, const std::string& name_a, const std::string& name_b)
+                        const PE::Cross_parameterization_statistics& st, const std::vector<Landmark>& landmarks,
+                        const std::string& name_a, const std::string& name_b)
 {
   std::vector<vertex_descriptor> marked_a, marked_b;
   for(const Landmark& l : landmarks) { marked_a.push_back(l.first); marked_b.push_back(l.second); }
   std::string panels[2];
   double w[2] = { 0, 0 }, h[2] = { 0, 0 };
-  PE::Error_code ec = cross_panel(plane_a, marked_a, "A: " + name_a, "a-", panels[0], w[0], h[0]);
-  if(ec == PE::OK) ec = cross_panel(plane_b, marked_b, "B: " + name_b, "b-", panels[1], w[1], h[1]);
+  PE::Error_code ec = cross_panel(plane_a, st.report_a, marked_a, "A: " + name_a, "a-", panels[0], w[0], h[0]);
+  if(ec == PE::OK) ec = cross_panel(plane_b, st.report_b, marked_b, "B: " + name_b, "b-", panels[1], w[1], h[1]);
   if(ec != PE::OK) return run.fail(ec, "cannot draw '" + filename + "'");
   panels[0].insert(4, " id=\"pe-cross-a\" x=\"0\" y=\"0\"");
   panels[1].insert(4, " id=\"pe-cross-b\" x=\"" + PE::IO::format_number(w[0], 10) + "\" y=\"0\"");
@@ -244,7 +249,7 @@ int cmd_cross(const Arguments& a)
   }
   if(picture)
   {
-    const int ps = write_cross_picture(run, a.get("--svg"), plane_a, plane_b, landmarks, in_a.filename, in_b.filename);
+    const int ps = write_cross_picture(run, a.get("--svg"), plane_a, plane_b, st, landmarks, in_a.filename, in_b.filename);
     if(ps != EXIT_VALID) return ps;
     run.result.add("svg", a.get("--svg"));
   }

@@ -132,6 +132,39 @@ inline Face_frame face_frame(const Reference_triangle<double>& ref)
   return fr;
 }
 
+// The reference of the 3D triangle (q0, q1, q2), its area2 set to 0 where it has no positive finite area (see
+// scale_references())
+inline Reference_triangle<double> reference_3d(const std::array<std::array<double, 3>, 3>& q)
+{
+  Reference_triangle<double> r = reference_from_points<double, 3>(q[0], q[1], q[2]);
+  if(!(r.area2 > 0 && std::isfinite(r.area2) && r.dot[0] + r.dot[1] > 0)) r.area2 = 0;
+  return r;
+}
+
+// The references of 3D triangles scaled (k2 on squared lengths) so that their total area is `target_area`: the
+// optimizer measures a map against them, and the composed distortion measures B's map the same way
+// (internal/cross/composed_distortion.h). In: `refs` from reference_3d(); those without an area get an equilateral
+// reference of the mean area of the others. Nothing is changed when no triangle has an area
+// (ERROR_DEGENERATE_3D_FACE) or the scale is not positive and finite (ERROR_DEGENERATE_BORDER).
+inline Error_code scale_references(std::vector<Reference_triangle<double> >& refs, double target_area, double& k2)
+{
+  double total = 0;
+  std::size_t good = 0;
+  for(const Reference_triangle<double>& r : refs)
+    if(r.area2 > 0) { total += std::sqrt(r.area2); ++good; }
+  if(good == 0 || !(total > 0) || !std::isfinite(total)) return ERROR_DEGENERATE_3D_FACE;
+  k2 = target_area / total;
+  if(!(k2 > 0) || !std::isfinite(k2)) return ERROR_DEGENERATE_BORDER;
+  const Reference_triangle<double> fallback = equilateral_reference(total / double(good), std::sqrt(3.));
+  for(Reference_triangle<double>& r : refs)
+  {
+    if(!(r.area2 > 0)) r = fallback;
+    for(double& d : r.dot) d *= k2;
+    r.area2 *= k2 * k2;
+  }
+  return OK;
+}
+
 template <class TriangleMesh, class VertexUVMap, class VertexPointMap, class ConcurrencyTag,
           class Traits_ = typename Uv_map_types<VertexUVMap>::Traits>
 class Distortion_optimizer
@@ -608,8 +641,6 @@ private:
   Error_code build_frames(double border_area)
   {
     std::vector<Reference_triangle<double> > refs(nf_);
-    double total = 0;
-    std::size_t good = 0;
     for(std::size_t f = 0; f < nf_; ++f)
     {
       const auto& t = disk_.faces[f];
@@ -620,25 +651,17 @@ private:
         Q[c] = {{ CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()) }};
         for(double x : Q[c]) if(!std::isfinite(x)) return ERROR_NON_FINITE_COORDINATES;
       }
-      refs[f] = reference_from_points<double, 3>(Q[0], Q[1], Q[2]);
-      if(refs[f].area2 > 0 && std::isfinite(refs[f].area2) && refs[f].dot[0] + refs[f].dot[1] > 0)
-      { total += std::sqrt(refs[f].area2); ++good; }
-      else refs[f].area2 = 0;
+      refs[f] = reference_3d(Q);
     }
-    if(good == 0 || !(total > 0) || !std::isfinite(total)) return ERROR_DEGENERATE_3D_FACE;
-    const double k2 = border_area / total;
-    if(!(k2 > 0) || !std::isfinite(k2)) return ERROR_DEGENERATE_BORDER;
+    double k2 = 0;
+    const Error_code ec = scale_references(refs, border_area, k2);
+    if(ec != OK) return ec;
     reference_scale_ = std::sqrt(k2);
-    const double mean_area = total / double(good);
-    const Reference_triangle<double> fallback = equilateral_reference(mean_area, std::sqrt(3.));
     frames_.resize(nf_);
     total_weight_ = 0;
     for(std::size_t f = 0; f < nf_; ++f)
     {
-      Reference_triangle<double> r = (refs[f].area2 > 0) ? refs[f] : fallback;
-      for(double& d : r.dot) d *= k2;
-      r.area2 *= k2 * k2;
-      frames_[f] = face_frame(r);
+      frames_[f] = face_frame(refs[f]);
       total_weight_ += frames_[f].weight;
     }
     return OK;

@@ -93,7 +93,7 @@ Inverse_map_metric inverse_map_metric(const std::vector<Point_2>& uv, const std:
   m.uv.resize(uv.size());
   for(std::size_t i = 0; i < uv.size(); ++i) m.uv[i] = {{ CGAL::to_double(uv[i].x()), CGAL::to_double(uv[i].y()) }};
   std::vector<Reference_triangle<double> > refs(faces.size());
-  double area3 = 0, area2 = 0;
+  double area2 = 0;
   for(std::size_t g = 0; g < faces.size(); ++g)
   {
     std::array<std::array<double, 3>, 3> q;
@@ -102,27 +102,20 @@ Inverse_map_metric inverse_map_metric(const std::vector<Point_2>& uv, const std:
       const Point_3& p = points[faces[g][c]];
       q[c] = {{ CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) }};
     }
-    refs[g] = reference_from_points<double, 3>(q[0], q[1], q[2]);
-    if(refs[g].area2 > 0 && std::isfinite(refs[g].area2)) area3 += std::sqrt(refs[g].area2);
+    refs[g] = reference_3d(q);
     const auto& a = m.uv[faces[g][0]];
     const auto& b = m.uv[faces[g][1]];
     const auto& c = m.uv[faces[g][2]];
     area2 += 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
   }
-  const double k2 = area2 / area3;
-  // a degenerate 3D triangle of B: the reference the optimizer gave it when it optimized B's map (an equilateral
-  // triangle of the mean area)
-  std::size_t good = 0;
-  for(const auto& r : refs) if(r.area2 > 0 && std::isfinite(r.area2)) ++good;
-  const Reference_triangle<double> fallback = equilateral_reference(good > 0 ? area3 / double(good) : 1., std::sqrt(3.));
+  // B's 3D triangles scaled as the optimizer scaled them when it optimized B's map (a degenerate one: an
+  // equilateral triangle of the mean area); if that cannot be done, the faces are measured against the plane
   m.inverse_jacobian.assign(faces.size(), Eigen::Matrix2d::Identity());
-  for(std::size_t g = 0; g < faces.size(); ++g)
+  double k2 = 0;
+  if(scale_references(refs, area2, k2) != OK) refs.clear();
+  for(std::size_t g = 0; g < refs.size(); ++g)
   {
-    Reference_triangle<double> r = (refs[g].area2 > 0 && std::isfinite(refs[g].area2)) ? refs[g] : fallback;
-    if(!(k2 > 0) || !std::isfinite(k2)) continue; // measured against the plane
-    for(double& d : r.dot) d *= k2;
-    r.area2 *= k2 * k2;
-    const auto& G = face_frame(r).G;
+    const auto& G = face_frame(refs[g]).G;
     const auto& t = faces[g];
     Eigen::Matrix2d J;
     for(int row = 0; row < 2; ++row)

@@ -662,9 +662,24 @@ std::string landmark_name(std::size_t k, const std::vector<long long>& pairs)
          std::to_string(pairs[2 * k + 1]) + ")";
 }
 
+// a mesh that cross_parameterization() wrote (vertices in order, triangles) as arrays: points (n, dim), faces (f, 3)
+std::pair<py::array_t<double>, py::array_t<long long> > mesh_arrays(const Mesh& m, int dim)
+{
+  py::array_t<double> P({ static_cast<py::ssize_t>(m.number_of_vertices()), py::ssize_t(dim) });
+  py::array_t<long long> T({ static_cast<py::ssize_t>(m.number_of_faces()), py::ssize_t(3) });
+  double* p = P.mutable_data();
+  for(vertex_descriptor v : m.vertices())
+    for(int c = 0; c < dim; ++c) *p++ = CGAL::to_double(m.point(v)[c]);
+  long long* t = T.mutable_data();
+  for(face_descriptor f : m.faces())
+    for(vertex_descriptor v : CGAL::vertices_around_face(m.halfedge(f), m)) *t++ = static_cast<long long>(v);
+  return { P, T };
+}
+
 py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::object& V_b, const py::object& F_b,
                    const py::object& landmarks, const py::object& border_vertex_pair, bool b_to_a,
-                   const py::object& time_limit, double optimization_time_limit, bool composed, bool matched)
+                   const py::object& time_limit, double optimization_time_limit, bool composed, bool matched,
+                   bool compatible, bool planar_maps)
 {
   const Disk_input in_a = read_disk(V_a, F_a, "V_a", "F_a");
   const Disk_input in_b = read_disk(V_b, F_b, "V_b", "F_b");
@@ -708,6 +723,9 @@ py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::objec
   std::vector<long long> faces(in_a.n), back_faces(b_to_a ? in_b.n : 0);
   std::vector<double> bary(3 * in_a.n), back_bary(3 * back_faces.size());
   PE::Cross_parameterization_statistics st;
+  // the optional meshes (written by the C++ function: the null pointers ask for nothing, so that one call
+  // serves every combination)
+  Mesh compatible_a, compatible_b, plane_a, plane_b;
   last_timing = Timing();
   {
     py::gil_scoped_release release;
@@ -721,8 +739,12 @@ py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::objec
     auto out = boost::make_iterator_property_map(located.begin(), get(CGAL::vertex_index, wa.mesh));
     auto out_back = boost::make_iterator_property_map(back.begin(), get(CGAL::vertex_index, wb.mesh));
     const auto np = PE::parameters::composed_distortion(composed, PE::parameters::matched_maps(matched,
+                      PE::parameters::compatible_meshes(std::make_pair(compatible ? &compatible_a : nullptr,
+                                                                       compatible ? &compatible_b : nullptr),
+                      PE::parameters::planar_maps(std::make_pair(planar_maps ? &plane_a : nullptr,
+                                                                 planar_maps ? &plane_b : nullptr),
                       PE::parameters::statistics(&st).maximum_running_time(seconds)
-                                                     .optimization_time_limit(optimization_time_limit)));
+                                                     .optimization_time_limit(optimization_time_limit)))));
     PE::Error_code ec;
     {
       Stopwatch a(last_timing.algorithm_seconds);
@@ -756,6 +778,9 @@ py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::objec
                   " is not on its border";
       else if(st.failed_mesh >= 0)
         context += st.failed_mesh == 0 ? ", mesh A (V_a, F_a)" : ", mesh B (V_b, F_b)";
+      else if(st.closed && ec == PE::ERROR_WRONG_PARAMETER)
+        context += ": closed meshes need at least two landmarks (the cut runs through them in their order), and "
+                   "border_vertex_pair, b_to_a, compatible and planar_maps do not apply to them";
       throw Pe_failure(ec, context);
     }
     for(std::size_t i = 0; i < in_a.n; ++i) location_to_row(wb.mesh, in_b, located[i], faces[i], &bary[3 * i]);
@@ -803,6 +828,29 @@ py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::objec
     info["composed_iterations"] = st.composed.iterations;
     info["composed_energy"] = st.composed.energy_current;
     info["seconds_composed"] = st.seconds_composed;
+  }
+  if(compatible)
+  {
+    // the keys of `pe cross --compatible --json`, and the two meshes
+    info["valid_compatible"] = st.report_compatible.is_valid();
+    info["certificate_compatible"] = report_dict(st.report_compatible);
+    info["overlay_cells"] = st.overlay_cells;
+    info["overlay_crossings"] = st.overlay_crossings;
+    info["compatible_vertices"] = st.compatible_vertices;
+    info["compatible_faces"] = st.compatible_faces;
+    info["seconds_compatible"] = st.seconds_compatible;
+    const auto on_a = mesh_arrays(compatible_a, 3), on_b = mesh_arrays(compatible_b, 3);
+    info["compatible_V_a"] = on_a.first;
+    info["compatible_V_b"] = on_b.first;
+    info["compatible_F"] = on_a.second;
+  }
+  if(planar_maps)
+  {
+    const auto map_a = mesh_arrays(plane_a, 2), map_b = mesh_arrays(plane_b, 2);
+    info["planar_uv_a"] = map_a.first;
+    info["planar_F_a"] = map_a.second;
+    info["planar_uv_b"] = map_b.first;
+    info["planar_F_b"] = map_b.second;
   }
   info["matched_b"] = st.matched_b;
   info["matched_status"] = PE::get_error_name(st.matched_status);
@@ -931,9 +979,10 @@ PYBIND11_MODULE(progressive_embedding, m)
   m.def("cross_parameterization", &py_cross, py::arg("V_a"), py::arg("F_a"), py::arg("V_b"), py::arg("F_b"),
     py::arg("landmarks") = py::none(), py::arg("border_vertex_pair") = py::none(), py::arg("b_to_a") = false,
     py::arg("time_limit") = py::none(), py::arg("optimization_time_limit") = 30.0, py::arg("composed") = true,
-    py::arg("matched") = true,
+    py::arg("matched") = true, py::arg("compatible") = false, py::arg("planar_maps") = false,
     "cross_parameterization(V_a, F_a, V_b, F_b, landmarks=None, border_vertex_pair=None, b_to_a=False,\n"
-    "                       time_limit=None, optimization_time_limit=30.0, composed=True, matched=True)\n"
+    "                       time_limit=None, optimization_time_limit=30.0, composed=True, matched=True,\n"
+    "                       compatible=False, planar_maps=False)\n"
     "    -> (faces, barycentric, info)\n\n"
     "A certified map between two disks A = (V_a, F_a) and B = (V_b, F_b) taking every landmark of A exactly\n"
     "onto its partner in B, as `pe cross`: both disks are mapped onto the unit square, B by the certified\n"
@@ -951,13 +1000,23 @@ PYBIND11_MODULE(progressive_embedding, m)
     "computed exactly and rounded once: they sum to 1 up to one rounding; a landmark gets exactly 1 at its\n"
     "partner). Two closed genus-0 meshes are first cut into disks along a chain through the landmarks (at\n"
     "least two, in their order; info 'closed', 'cut_edges_a', 'cut_edges_b', 'chords_split_b'; vertex and face counts are\n"
-    "then those of the cut disks). info: 'valid', 'valid_a', 'valid_b', 'landmarks_exact', 'landmarks', 'vertices_a',\n"
+    "then those of the cut disks; border_vertex_pair, b_to_a, compatible and planar_maps do not apply to them:\n"
+    "ERROR_WRONG_PARAMETER). info: 'valid', 'valid_a', 'valid_b', 'landmarks_exact', 'landmarks', 'vertices_a',\n"
     "'faces_a', 'vertices_b', 'faces_b', 'vertices_added_a', 'in_face', 'on_edge', 'on_vertex' (where A's\n"
     "vertices landed, decided exactly), 'seconds_validation', 'seconds_map_b', 'seconds_map_a',\n"
     "'seconds_location', 'seconds_total', 'certificate_a' (of A's map, on its refined copy) and\n"
     "'certificate_b' (the keys of check()), 'map_b' (the pipeline's statistics) and 'map_a'. With\n"
     "b_to_a=True also the other direction, each vertex of B on A: 'b_to_a_faces' (rows of F_a, (n_b,)),\n"
-    "'b_to_a_barycentric' ((n_b, 3), columns of F_a) and 'located_b_on_a'. time_limit: seconds in all\n"
+    "'b_to_a_barycentric' ((n_b, 3), columns of F_a) and 'located_b_on_a'. With compatible=True the common\n"
+    "refinement of the two maps, triangulated and certified in exact coordinates: one connectivity\n"
+    "'compatible_F' ((f, 3) int64) for 'compatible_V_a' ((m, 3), on A's surface) and 'compatible_V_b' ((m, 3),\n"
+    "on B's), so that (1 - t) * V_a' + t * V_b' is a morph; every vertex of A (of B) is a vertex of\n"
+    "compatible_V_a (compatible_V_b), landmarks at the same row; 'valid_compatible', 'certificate_compatible',\n"
+    "'overlay_cells', 'overlay_crossings', 'compatible_vertices', 'compatible_faces', 'seconds_compatible'.\n"
+    "With planar_maps=True the two certified maps onto the unit square: 'planar_uv_a' ((n_a + vertices_added_a,\n"
+    "2): the rows of V_a first, then the vertices added to A's copy) with its faces 'planar_F_a', and\n"
+    "'planar_uv_b', 'planar_F_b' (B's map, on B or its refined copy: rows of V_b first); faces counterclockwise,\n"
+    "a landmark of A at exactly the uv of its partner. time_limit: seconds in all\n"
     "(ERROR_BUDGET_EXHAUSTED past it); optimization_time_limit: seconds for the optimization of A's map.\n"
     "Raises Error with ERROR_WRONG_PARAMETER for a landmark or border_vertex_pair index that is no vertex\n"
     "(as the C++ function, not ValueError) or a border_vertex_pair vertex off its border,\n"

@@ -135,6 +135,47 @@ def test_two_grids_of_one_square():
     assert_landmarks_exact(back_faces, back, F_a, landmarks[:, ::-1])
 
 
+def signed_areas(P, T):
+    """Twice the signed area of each triangle T of the planar points P (the first two columns)."""
+    a, b, c = P[T[:, 0], :2], P[T[:, 1], :2], P[T[:, 2], :2]
+    return (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0])
+
+
+def test_compatible_meshes_and_planar_maps():
+    V_a, F_a = grid_disk(9)
+    V_b, F_b = grid_disk(13)
+    landmarks = np.array([[2 * 9 + 2, 3 * 13 + 3], [4 * 9 + 4, 6 * 13 + 6], [6 * 9 + 2, 9 * 13 + 3]])
+    faces, barycentric, info = pe.cross_parameterization(V_a, F_a, V_b, F_b, landmarks, compatible=True,
+                                                         planar_maps=True)
+    assert_result(faces, barycentric, info, len(V_a), F_b)
+    # the overlay: certified, one connectivity for both meshes
+    assert info['valid_compatible'] is True and info['certificate_compatible']['valid'] is True
+    assert info['certificate_compatible']['flipped'] == 0 and info['certificate_compatible']['degenerate'] == 0
+    m, f = info['compatible_vertices'], info['compatible_faces']
+    Va2, Vb2, F2 = info['compatible_V_a'], info['compatible_V_b'], info['compatible_F']
+    assert Va2.shape == (m, 3) and Vb2.shape == (m, 3) and F2.shape == (f, 3) and F2.dtype == np.int64
+    assert F2.min() == 0 and F2.max() == m - 1 and info['overlay_crossings'] > 0 and m > len(V_b)
+    # every vertex of A is one of A', every vertex of B one of B', a landmark at one row of both
+    rows_a = {tuple(p): i for i, p in enumerate(Va2)}
+    rows_b = {tuple(p): i for i, p in enumerate(Vb2)}
+    assert all(tuple(p) in rows_a for p in V_a) and all(tuple(p) in rows_b for p in V_b)
+    assert all(rows_a[tuple(V_a[a])] == rows_b[tuple(V_b[b])] for a, b in landmarks)
+    # two grids of one flat square: A' and B' are the same triangles, covering the square counterclockwise
+    assert np.abs(Va2 - Vb2).max() <= 1e-9
+    areas = signed_areas(Va2, F2)
+    assert areas.min() > 0 and abs(areas.sum() / 2 - 1) <= 1e-12
+    # the planar maps: the vertices of each mesh first, every face counterclockwise, landmarks at one point
+    uv_a, T_a, uv_b, T_b = info['planar_uv_a'], info['planar_F_a'], info['planar_uv_b'], info['planar_F_b']
+    assert uv_a.shape == (len(V_a) + info['vertices_added_a'], 2) and T_a.shape[1] == 3
+    assert uv_b.shape == (len(V_b) + info['vertices_added_b'], 2) and len(T_b) >= len(F_b)
+    assert signed_areas(uv_a, T_a).min() > 0 and signed_areas(uv_b, T_b).min() > 0
+    assert all(np.array_equal(uv_a[a], uv_b[b]) for a, b in landmarks)
+    assert uv_a.min() >= 0 and uv_a.max() <= 1 and uv_b.min() >= 0 and uv_b.max() <= 1
+    # without the flags, none of these keys
+    plain = pe.cross_parameterization(V_a, F_a, V_b, F_b, landmarks)[2]
+    assert not any(k.startswith(('compatible_', 'planar_')) for k in plain)
+
+
 def test_border_vertex_pair():
     V, F = grid_disk(9)
     # the default pair on identical meshes: vertex 0 of A (the first border vertex) and vertex 0 of B
@@ -234,3 +275,6 @@ def test_closed_surfaces():
     assert np.abs(images(faces, barycentric, V, F) - V).max() < 1e-2 * np.ptp(V, axis=0).max()
     # one landmark is not a chain
     raises('ERROR_WRONG_PARAMETER', V, F, V, F, [[0, 0]])
+    # the meshes of the overlay and the planar maps are not made for cut disks (yet)
+    for flag in ('compatible', 'planar_maps'):
+        assert 'do not apply' in raises('ERROR_WRONG_PARAMETER', V, F, V, F, landmarks, **{flag: True})

@@ -555,8 +555,8 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 /// Two closed genus-0 meshes (no border) are first cut into disks along a chain through the landmarks, in their
 /// order: the shortest edge path from each landmark to the next, avoiding the earlier paths and the other landmarks;
 /// every landmark copy on the cut is a border landmark (see the user manual, section Closed Surfaces). They need at
-/// least two landmarks, and `compatible_meshes`, `planar_maps`, `b_to_a_locations` and `border_vertex_pair` do not apply to them
-/// (`ERROR_WRONG_PARAMETER`).
+/// least two landmarks, and `compatible_meshes` and `planar_maps` (with a pointer that is not null),
+/// `b_to_a_locations` and `border_vertex_pair` do not apply to them (`ERROR_WRONG_PARAMETER`).
 ///
 /// Since both maps are one-to-one onto the same square, the composition (A's map, then the inverse of B's) is a
 /// bijection between the two surfaces, piecewise linear on A's refined copy; the output samples it at A's vertices.
@@ -642,7 +642,8 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///                           `(1-t) A' + t B'` is a morph. The triangulated overlay is certified in exact
 ///                           coordinates (`Cross_parameterization_statistics::report_compatible`); since both maps are
 ///                           certified, the composed map is affine and orientation-preserving on every triangle.
-///                           Either pointer may be null}
+///                           Either pointer may be null; with both null no overlay is computed, as without the
+///                           parameter}
 ///     \cgalParamType{`std::pair<OutputMeshA*, OutputMeshB*>`, each a model of `MutableFaceGraph` whose point type
 ///                    is constructible from three `double`; the meshes are cleared first}
 ///     \cgalParamDefault{none: no overlay is computed}
@@ -657,7 +658,7 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///                           are counterclockwise. These are the maps that `check_embedding()` certified
 ///                           (`Cross_parameterization_statistics::report_a` and `report_b`): no face flipped or
 ///                           degenerate in floating point, the landmarks of A at the same points as their partners.
-///                           Either pointer may be null}
+///                           Either pointer may be null; both null ask for nothing}
 ///     \cgalParamType{`std::pair<OutputMeshA*, OutputMeshB*>`, each a model of `MutableFaceGraph` whose point type
 ///                    is constructible from three `double`; the meshes are cleared first}
 ///     \cgalParamDefault{none}
@@ -1061,10 +1062,18 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   stats.seconds_location = timer.time() - before_location;
 
   // ---- 6. the compatible meshes: the overlay of the two maps, triangulated and certified ----------
-  constexpr bool compatible = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::compatible_meshes_t>::value;
+  // a parameter whose two pointers are null asks for nothing (a caller can then pass it always, e.g. a binding
+  // that decides at run time)
+  constexpr bool compatible_given = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::compatible_meshes_t>::value;
+  bool compatible = false;
+  if constexpr(compatible_given)
+  {
+    const auto meshes = get_parameter(np, internal_np::compatible_meshes);
+    compatible = meshes.first != nullptr || meshes.second != nullptr;
+  }
   std::vector<std::array<double, 3> > on_a, on_b;
   std::vector<std::array<std::size_t, 3> > triangles;
-  if constexpr(compatible)
+  if(compatible)
   {
     const double before_overlay = timer.time();
     ec = refined_b ? internal::compatible_soups(work, uv_a, work_b, side_b, side_uv, stats, on_a, on_b, triangles)
@@ -1074,10 +1083,16 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   }
 
   // the planar maps as flat soups, A's vertices (then B's) first in their meshes' order
-  constexpr bool planar = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::planar_maps_t>::value;
+  constexpr bool planar_given = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::planar_maps_t>::value;
+  bool planar = false;
+  if constexpr(planar_given)
+  {
+    const auto maps = get_parameter(np, internal_np::planar_maps);
+    planar = maps.first != nullptr || maps.second != nullptr;
+  }
   std::vector<std::array<double, 3> > plane_a, plane_b;
   std::vector<std::array<std::size_t, 3> > plane_faces_a, plane_faces_b;
-  if constexpr(planar)
+  if(planar)
   {
     std::vector<wvertex> first_a;
     for(vertex_a v : disk_a.vertices) first_a.push_back(to_work[v]);
@@ -1099,7 +1114,7 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
     auto out_b = get_parameter(np, internal_np::b_to_a_locations);
     for(std::size_t i = 0; i < back.size(); ++i) put(out_b, disk_b.vertices[i], back[i]);
   }
-  if constexpr(compatible)
+  if constexpr(compatible_given)
   {
     const double before_write = timer.time();
     const auto meshes = get_parameter(np, internal_np::compatible_meshes);
@@ -1107,7 +1122,7 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
     if(meshes.second != nullptr) internal::write_soup(on_b, triangles, *meshes.second);
     stats.seconds_compatible += timer.time() - before_write;
   }
-  if constexpr(planar)
+  if constexpr(planar_given)
   {
     const auto maps = get_parameter(np, internal_np::planar_maps);
     if(maps.first != nullptr) internal::write_soup(plane_a, plane_faces_a, *maps.first);
@@ -1141,12 +1156,21 @@ Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const Triang
   Cross_parameterization_statistics& stats = stats_out ? *stats_out : local_stats;
   stats = Cross_parameterization_statistics();
   stats.closed = true;
-  // what names the vertices of B or asks for meshes does not apply to the cut disks (not yet)
+  // what names the vertices of B or asks for meshes does not apply to the cut disks (not yet); a mesh parameter
+  // with two null pointers asks for nothing
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::b_to_a_locations_t>::value ||
-               !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::compatible_meshes_t>::value ||
-               !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::planar_maps_t>::value ||
                !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::border_vertex_pair_t>::value)
     return ERROR_WRONG_PARAMETER;
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::compatible_meshes_t>::value)
+  {
+    const auto meshes = get_parameter(np, internal_np::compatible_meshes);
+    if(meshes.first != nullptr || meshes.second != nullptr) return ERROR_WRONG_PARAMETER;
+  }
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::planar_maps_t>::value)
+  {
+    const auto maps = get_parameter(np, internal_np::planar_maps);
+    if(maps.first != nullptr || maps.second != nullptr) return ERROR_WRONG_PARAMETER;
+  }
 
   // the chain: the landmarks in their order, each vertex once
   std::vector<vertex_a> chain_a;

@@ -447,6 +447,18 @@ int compatible(const MeshA& a, const Surface_mesh& b,
     CHECK(sa.first == sb.first, "identical maps: A' == B'");
   }
   else CHECK(st.overlay_crossings > 0, "the maps cross");
+  // both pointers null: no overlay is made, the same map otherwise (a caller may pass the parameters always)
+  {
+    std::unordered_map<typename boost::graph_traits<MeshA>::vertex_descriptor, PE::Cross_location<Surface_mesh>,
+                       boost::hash<typename boost::graph_traits<MeshA>::vertex_descriptor> > loc0;
+    PE::Cross_parameterization_statistics s0;
+    CHECK(PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(loc0),
+            PE::parameters::compatible_meshes(std::make_pair(static_cast<MeshA*>(nullptr), static_cast<Polyhedron*>(nullptr)),
+              PE::parameters::planar_maps(std::make_pair(static_cast<Surface_mesh*>(nullptr), static_cast<Polyhedron*>(nullptr)),
+                PE::parameters::statistics(&s0)))) == PE::OK, "compatible_meshes and planar_maps with null pointers");
+    CHECK(s0.overlay_cells == 0 && s0.compatible_vertices == 0 && !s0.report_compatible.is_valid(), "no overlay made");
+    CHECK(loc0 == loc, "the same locations");
+  }
   std::cout << "compatible meshes, " << what << " (A " << mesh_name<MeshA>() << ", B' Polyhedron_3): A " << st.vertices_a
             << " vertices, B " << st.vertices_b << ", " << landmarks.size() << " landmarks; overlay " << st.overlay_cells
             << " cells, " << st.overlay_crossings << " crossings, " << st.overlay_centers << " centers; A' and B' "
@@ -543,6 +555,21 @@ int closed_surfaces(const std::string& data_dir)
   std::cout << "closed " << file << " (" << mesh_name<Mesh>() << ") against itself, 6 landmarks: cut along "
             << st.cut_edges_a << " edges, both disks certified, landmarks exact, mean error " << error.first
             << " of the diagonal, max " << error.second << ", " << st.seconds_total << " s" << std::endl;
+  // the mesh outputs do not apply to the cut disks: refused when asked for, nothing asked with null pointers
+  {
+    Location_map<Mesh> none, again;
+    Surface_mesh ca;
+    ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(none),
+           PE::parameters::compatible_meshes(std::make_pair(&ca, static_cast<Surface_mesh*>(nullptr))));
+    CHECK(ec == PE::ERROR_WRONG_PARAMETER && none.empty() && num_vertices(ca) == 0, "compatible meshes of closed surfaces refused");
+    ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(none),
+           PE::parameters::planar_maps(std::make_pair(static_cast<Surface_mesh*>(nullptr), &ca)));
+    CHECK(ec == PE::ERROR_WRONG_PARAMETER && none.empty() && num_vertices(ca) == 0, "planar maps of closed surfaces refused");
+    ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(again),
+           PE::parameters::compatible_meshes(std::make_pair(static_cast<Surface_mesh*>(nullptr), static_cast<Surface_mesh*>(nullptr)),
+             PE::parameters::planar_maps(std::make_pair(static_cast<Surface_mesh*>(nullptr), static_cast<Surface_mesh*>(nullptr)))));
+    CHECK(ec == PE::OK && again == loc, "closed surfaces, mesh outputs with null pointers: the same map");
+  }
   // against its remeshed copy
   Surface_mesh c;
   CHECK(CGAL::IO::read_polygon_mesh(file, c), "read " << file);

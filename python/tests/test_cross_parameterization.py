@@ -275,6 +275,12 @@ def test_closed_surfaces():
     assert np.abs(images(faces, barycentric, V, F) - V).max() < 1e-2 * np.ptp(V, axis=0).max()
     # one landmark is not a chain
     raises('ERROR_WRONG_PARAMETER', V, F, V, F, [[0, 0]])
-    # the meshes of the overlay and the planar maps are not made for cut disks (yet)
-    for flag in ('compatible', 'planar_maps'):
-        assert 'do not apply' in raises('ERROR_WRONG_PARAMETER', V, F, V, F, landmarks, **{flag: True})
+    # the overlay is not made for cut disks (yet)
+    assert 'do not apply' in raises('ERROR_WRONG_PARAMETER', V, F, V, F, landmarks, compatible=True)
+    # the planar maps are those of the cut disks: the rows of V first, then the copies on the cut
+    again, _, info = pe.cross_parameterization(V, F, V, F, landmarks, planar_maps=True)
+    assert np.array_equal(again, faces)
+    uv_a, T_a, uv_b, T_b = info['planar_uv_a'], info['planar_F_a'], info['planar_uv_b'], info['planar_F_b']
+    assert len(uv_a) == len(V) + info['cut_edges_a'] - 1 + info['vertices_added_a'] and len(T_a) >= len(F)
+    assert signed_areas(uv_a, T_a).min() > 0 and signed_areas(uv_b, T_b).min() > 0
+    assert all(np.array_equal(uv_a[a], uv_b[b]) for a, b in landmarks)

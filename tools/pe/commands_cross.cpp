@@ -188,7 +188,7 @@ int cmd_cross(const Arguments& a)
                (ec == PE::ERROR_NOT_A_DISK ? std::string("closed, and the other mesh is not (two disks or two closed genus-0 meshes)")
                                            : std::string(PE::get_error_message(ec)));
     else if(st.closed && ec == PE::ERROR_WRONG_PARAMETER)
-      detail = "closed meshes need at least two landmarks (the cut runs through them in file order), and no --compatible or --svg yet";
+      detail = "closed meshes need at least two landmarks (the cut runs through them in file order), and no --compatible yet";
     return run.fail(ec, "cross-parameterization of '" + in_a.filename + "' and '" + in_b.filename + "' failed", detail,
                     landmark_fault ? EXIT_INPUT : -1);
   }

@@ -555,8 +555,9 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 /// Two closed genus-0 meshes (no border) are first cut into disks along a chain through the landmarks, in their
 /// order: the shortest edge path from each landmark to the next, avoiding the earlier paths and the other landmarks;
 /// every landmark copy on the cut is a border landmark (see the user manual, section Closed Surfaces). They need at
-/// least two landmarks, and `compatible_meshes` and `planar_maps` (with a pointer that is not null),
-/// `b_to_a_locations` and `border_vertex_pair` do not apply to them (`ERROR_WRONG_PARAMETER`).
+/// least two landmarks, and `compatible_meshes` (with a pointer that is not null), `b_to_a_locations` and
+/// `border_vertex_pair` do not apply to them (`ERROR_WRONG_PARAMETER`); `planar_maps` receives the maps of the cut
+/// disks.
 ///
 /// Since both maps are one-to-one onto the same square, the composition (A's map, then the inverse of B's) is a
 /// bijection between the two surfaces, piecewise linear on A's refined copy; the output samples it at A's vertices.
@@ -658,7 +659,11 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///                           are counterclockwise. These are the maps that `check_embedding()` certified
 ///                           (`Cross_parameterization_statistics::report_a` and `report_b`): no face flipped or
 ///                           degenerate in floating point, the landmarks of A at the same points as their partners.
-///                           Either pointer may be null; both null ask for nothing}
+///                           For two closed meshes, the maps of the two cut disks: each lists first the vertices of
+///                           its mesh in the order of `vertices(tm)`, then the copies of the vertices inside the cut
+///                           (the cut's border runs through both copies of each), then for B the midpoints of the chords
+///                           it split (`Cross_parameterization_statistics::chords_split_b`), then the vertices added
+///                           to the copies. Either pointer may be null; both null ask for nothing}
 ///     \cgalParamType{`std::pair<OutputMeshA*, OutputMeshB*>`, each a model of `MutableFaceGraph` whose point type
 ///                    is constructible from three `double`; the meshes are cleared first}
 ///     \cgalParamDefault{none}
@@ -1156,8 +1161,8 @@ Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const Triang
   Cross_parameterization_statistics& stats = stats_out ? *stats_out : local_stats;
   stats = Cross_parameterization_statistics();
   stats.closed = true;
-  // what names the vertices of B or asks for meshes does not apply to the cut disks (not yet); a mesh parameter
-  // with two null pointers asks for nothing
+  // what names the vertices of B or asks for the overlay does not apply to the cut disks (not yet); a mesh
+  // parameter with two null pointers asks for nothing. The planar maps are those of the cut disks.
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::b_to_a_locations_t>::value ||
                !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::border_vertex_pair_t>::value)
     return ERROR_WRONG_PARAMETER;
@@ -1165,11 +1170,6 @@ Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const Triang
   {
     const auto meshes = get_parameter(np, internal_np::compatible_meshes);
     if(meshes.first != nullptr || meshes.second != nullptr) return ERROR_WRONG_PARAMETER;
-  }
-  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::planar_maps_t>::value)
-  {
-    const auto maps = get_parameter(np, internal_np::planar_maps);
-    if(maps.first != nullptr || maps.second != nullptr) return ERROR_WRONG_PARAMETER;
   }
 
   // the chain: the landmarks in their order, each vertex once
@@ -1255,12 +1255,18 @@ Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const Triang
   CGAL::Real_timer timer;
   timer.start();
   auto map_disks = [&]() {
-    return cross_parameterization<ConcurrencyTag>(disk_a, disk_b, pairs, located_map,
-      parameters::statistics(&inner,
-        parameters::composed_distortion(choose_parameter(get_parameter(np, internal_np::composed_distortion), true),
-          parameters::matched_maps(choose_parameter(get_parameter(np, internal_np::matched_maps), true),
-            parameters::optimization_time_limit(choose_parameter(get_parameter(np, internal_np::optimization_time_limit), 30.),
-              CGAL::parameters::maximum_running_time((std::max)(0., max_seconds - timer.time())))))));
+    const auto disk_np = parameters::statistics(&inner,
+      parameters::composed_distortion(choose_parameter(get_parameter(np, internal_np::composed_distortion), true),
+        parameters::matched_maps(choose_parameter(get_parameter(np, internal_np::matched_maps), true),
+          parameters::optimization_time_limit(choose_parameter(get_parameter(np, internal_np::optimization_time_limit), 30.),
+            CGAL::parameters::maximum_running_time((std::max)(0., max_seconds - timer.time()))))));
+    // the planar maps of the cut disks, written by the call that succeeds (the points of a cut disk: the mesh's
+    // vertices in their order, then the copies on the cut, then B's chord midpoints)
+    if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::planar_maps_t>::value)
+      return cross_parameterization<ConcurrencyTag>(disk_a, disk_b, pairs, located_map,
+                                                    parameters::planar_maps(get_parameter(np, internal_np::planar_maps), disk_np));
+    else
+      return cross_parameterization<ConcurrencyTag>(disk_a, disk_b, pairs, located_map, disk_np);
   };
   ec = map_disks();
   // Where two paths of the cut run side by side (up and down a limb to a landmark at its tip), the edges

@@ -555,20 +555,25 @@ int closed_surfaces(const std::string& data_dir)
   std::cout << "closed " << file << " (" << mesh_name<Mesh>() << ") against itself, 6 landmarks: cut along "
             << st.cut_edges_a << " edges, both disks certified, landmarks exact, mean error " << error.first
             << " of the diagonal, max " << error.second << ", " << st.seconds_total << " s" << std::endl;
-  // the mesh outputs do not apply to the cut disks: refused when asked for, nothing asked with null pointers
+  // the compatible meshes do not apply to the cut disks: refused when asked for, nothing asked with null pointers;
+  // the planar maps are those of the cut disks (the mesh's vertices first, then the copies on the cut)
   {
     Location_map<Mesh> none, again;
-    Surface_mesh ca;
+    Surface_mesh ca, pa, pb;
     ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(none),
            PE::parameters::compatible_meshes(std::make_pair(&ca, static_cast<Surface_mesh*>(nullptr))));
     CHECK(ec == PE::ERROR_WRONG_PARAMETER && none.empty() && num_vertices(ca) == 0, "compatible meshes of closed surfaces refused");
-    ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(none),
-           PE::parameters::planar_maps(std::make_pair(static_cast<Surface_mesh*>(nullptr), &ca)));
-    CHECK(ec == PE::ERROR_WRONG_PARAMETER && none.empty() && num_vertices(ca) == 0, "planar maps of closed surfaces refused");
+    PE::Cross_parameterization_statistics sp;
     ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(again),
            PE::parameters::compatible_meshes(std::make_pair(static_cast<Surface_mesh*>(nullptr), static_cast<Surface_mesh*>(nullptr)),
-             PE::parameters::planar_maps(std::make_pair(static_cast<Surface_mesh*>(nullptr), static_cast<Surface_mesh*>(nullptr)))));
-    CHECK(ec == PE::OK && again == loc, "closed surfaces, mesh outputs with null pointers: the same map");
+             PE::parameters::planar_maps(std::make_pair(&pa, &pb), PE::parameters::statistics(&sp))));
+    CHECK(ec == PE::OK && again == loc, "closed surfaces with planar_maps (compatible_meshes with null pointers): the same map");
+    CHECK(num_vertices(pa) == va.size() + sp.cut_edges_a - 1 + sp.vertices_added_a && num_vertices(pa) == sp.vertices_a + sp.vertices_added_a &&
+          num_vertices(pb) == sp.vertices_b + sp.vertices_added_b, "the planar maps of the cut disks");
+    for(const auto& l : landmarks)
+      CHECK(pa.point(Surface_mesh::Vertex_index(static_cast<Surface_mesh::size_type>(index[l.first]))) ==
+              pb.point(Surface_mesh::Vertex_index(static_cast<Surface_mesh::size_type>(index[l.first]))),
+            "a landmark at its partner's point in the planar maps");
   }
   // against its remeshed copy
   Surface_mesh c;

@@ -695,6 +695,20 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///         the triangulated overlay).
 #ifndef DOXYGEN_RUNNING
 namespace internal {
+
+// whether the mesh-pair parameter `tag` (compatible_meshes, planar_maps) is given with a pointer that is not null:
+// two null pointers ask for nothing, so that a caller deciding at run time (a binding) can pass the parameter always
+template <class Tag, class NamedParameters>
+bool asks_for_meshes(const NamedParameters& np, Tag tag)
+{
+  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, Tag>::value) return false;
+  else
+  {
+    const auto meshes = CGAL::parameters::get_parameter(np, tag);
+    return meshes.first != nullptr || meshes.second != nullptr;
+  }
+}
+
 template <class ConcurrencyTag, class TriangleMeshA, class TriangleMeshB, class LandmarkRange, class LocationMap,
           class NamedParameters>
 Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const TriangleMeshB& tm_b, const LandmarkRange& landmarks,
@@ -1067,15 +1081,8 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   stats.seconds_location = timer.time() - before_location;
 
   // ---- 6. the compatible meshes: the overlay of the two maps, triangulated and certified ----------
-  // a parameter whose two pointers are null asks for nothing (a caller can then pass it always, e.g. a binding
-  // that decides at run time)
   constexpr bool compatible_given = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::compatible_meshes_t>::value;
-  bool compatible = false;
-  if constexpr(compatible_given)
-  {
-    const auto meshes = get_parameter(np, internal_np::compatible_meshes);
-    compatible = meshes.first != nullptr || meshes.second != nullptr;
-  }
+  const bool compatible = internal::asks_for_meshes(np, internal_np::compatible_meshes);
   std::vector<std::array<double, 3> > on_a, on_b;
   std::vector<std::array<std::size_t, 3> > triangles;
   if(compatible)
@@ -1089,12 +1096,7 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
 
   // the planar maps as flat soups, A's vertices (then B's) first in their meshes' order
   constexpr bool planar_given = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::planar_maps_t>::value;
-  bool planar = false;
-  if constexpr(planar_given)
-  {
-    const auto maps = get_parameter(np, internal_np::planar_maps);
-    planar = maps.first != nullptr || maps.second != nullptr;
-  }
+  const bool planar = internal::asks_for_meshes(np, internal_np::planar_maps);
   std::vector<std::array<double, 3> > plane_a, plane_b;
   std::vector<std::array<std::size_t, 3> > plane_faces_a, plane_faces_b;
   if(planar)
@@ -1166,11 +1168,7 @@ Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const Triang
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::b_to_a_locations_t>::value ||
                !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::border_vertex_pair_t>::value)
     return ERROR_WRONG_PARAMETER;
-  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::compatible_meshes_t>::value)
-  {
-    const auto meshes = get_parameter(np, internal_np::compatible_meshes);
-    if(meshes.first != nullptr || meshes.second != nullptr) return ERROR_WRONG_PARAMETER;
-  }
+  if(asks_for_meshes(np, internal_np::compatible_meshes)) return ERROR_WRONG_PARAMETER;
 
   // the chain: the landmarks in their order, each vertex once
   std::vector<vertex_a> chain_a;

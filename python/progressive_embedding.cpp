@@ -780,7 +780,7 @@ py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::objec
         context += st.failed_mesh == 0 ? ", mesh A (V_a, F_a)" : ", mesh B (V_b, F_b)";
       else if(st.closed && ec == PE::ERROR_WRONG_PARAMETER)
         context += ": closed meshes need at least two landmarks (the cut runs through them in their order), and "
-                   "border_vertex_pair, b_to_a and compatible do not apply to them";
+                   "border_vertex_pair and b_to_a do not apply to them";
       throw Pe_failure(ec, context);
     }
     for(std::size_t i = 0; i < in_a.n; ++i) location_to_row(wb.mesh, in_b, located[i], faces[i], &bary[3 * i]);
@@ -838,6 +838,7 @@ py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::objec
     info["overlay_crossings"] = st.overlay_crossings;
     info["compatible_vertices"] = st.compatible_vertices;
     info["compatible_faces"] = st.compatible_faces;
+    if(st.closed) info["cut_vertices_welded"] = st.cut_vertices_welded;
     info["seconds_compatible"] = st.seconds_compatible;
     const auto on_a = mesh_arrays(compatible_a, 3), on_b = mesh_arrays(compatible_b, 3);
     info["compatible_V_a"] = on_a.first;
@@ -1000,9 +1001,10 @@ PYBIND11_MODULE(progressive_embedding, m)
     "computed exactly and rounded once: they sum to 1 up to one rounding; a landmark gets exactly 1 at its\n"
     "partner). Two closed genus-0 meshes are first cut into disks along a chain through the landmarks (at\n"
     "least two, in their order; info 'closed', 'cut_edges_a', 'cut_edges_b', 'chords_split_b'; vertex and face counts are\n"
-    "then those of the cut disks; border_vertex_pair, b_to_a and compatible do not apply to them:\n"
-    "ERROR_WRONG_PARAMETER; planar_maps gives the maps of the cut disks, the rows of V first, then the copies\n"
-    "of the vertices inside the cut). info: 'valid', 'valid_a', 'valid_b', 'landmarks_exact', 'landmarks', 'vertices_a',\n"
+    "then those of the cut disks; border_vertex_pair and b_to_a do not apply to them: ERROR_WRONG_PARAMETER;\n"
+    "planar_maps gives the maps of the cut disks, the rows of V first, then the copies of the vertices inside\n"
+    "the cut; compatible gives two closed meshes, the cut disks' overlay joined along the cut, certified closed\n"
+    "with Euler characteristic 2, info 'cut_vertices_welded'). info: 'valid', 'valid_a', 'valid_b', 'landmarks_exact', 'landmarks', 'vertices_a',\n"
     "'faces_a', 'vertices_b', 'faces_b', 'vertices_added_a', 'in_face', 'on_edge', 'on_vertex' (where A's\n"
     "vertices landed, decided exactly), 'seconds_validation', 'seconds_map_b', 'seconds_map_a',\n"
     "'seconds_location', 'seconds_total', 'certificate_a' (of A's map, on its refined copy) and\n"

@@ -273,10 +273,19 @@ def test_closed_surfaces():
     assert info['closed'] and info['landmarks_exact']
     assert_landmarks_exact(faces, barycentric, F, landmarks)
     assert np.abs(images(faces, barycentric, V, F) - V).max() < 1e-2 * np.ptp(V, axis=0).max()
-    # one landmark is not a chain
+    # one landmark is not a chain; a chain of one edge opens nothing
     raises('ERROR_WRONG_PARAMETER', V, F, V, F, [[0, 0]])
-    # the overlay is not made for cut disks (yet)
-    assert 'do not apply' in raises('ERROR_WRONG_PARAMETER', V, F, V, F, landmarks, compatible=True)
+    raises('ERROR_NOT_A_DISK', V, F, V, F, [[F[0][0], F[0][0]], [F[0][1], F[0][1]]])
+    # the compatible meshes: the cut disks' overlay joined along the cut, two closed meshes of one connectivity
+    same, _, info = pe.cross_parameterization(V, F, V, F, landmarks, compatible=True)
+    assert np.array_equal(same, faces) and info['valid_compatible'] and info['cut_vertices_welded'] > 0
+    Va, Vb, T = info['compatible_V_a'], info['compatible_V_b'], info['compatible_F']
+    assert len(Va) == len(Vb) == info['compatible_vertices'] and len(T) == info['compatible_faces']
+    directed = {(int(t[k]), int(t[(k + 1) % 3])) for t in T for k in range(3)}
+    assert len(directed) == 3 * len(T) and all((v, u) in directed for u, v in directed)  # closed, oriented
+    assert len(Va) - len(directed) // 2 + len(T) == 2  # genus 0
+    kept = {tuple(p) for p in Va}
+    assert all(tuple(p) in kept for p in V)  # every vertex of A (joined along the cut, else the cut were a border)
     # the planar maps are those of the cut disks: the rows of V first, then the copies on the cut
     again, _, info = pe.cross_parameterization(V, F, V, F, landmarks, planar_maps=True)
     assert np.array_equal(again, faces)

@@ -2,8 +2,11 @@
 # Checks the compatible meshes written by `pe cross A B LANDMARKS OUT.txt --compatible A_OUT.obj B_OUT.obj`
 # (A and B OFF files): the same faces in the same order, as many vertices in both, every vertex of A a vertex
 # of A_OUT and every vertex of B one of B_OUT (bit for bit: the writer prints 17 significant digits), and the
-# area of A_OUT that of A, of B_OUT that of B (A_OUT refines A's triangles, B_OUT B's).
+# area of A_OUT that of A, of B_OUT that of B (A_OUT refines A's triangles, B_OUT B's). With a fifth argument
+# `closed` (two closed meshes): each compatible mesh a closed oriented surface of Euler characteristic 2 (every
+# edge in two faces, once each way): the two sides of the cut joined, else the cut would be a border.
 import sys
+from collections import Counter
 
 from check_cross_output import read_off
 
@@ -49,11 +52,19 @@ def main():
         ratio = area(*compatible) / area(*original)
         if abs(ratio - 1) > 1e-9:
             problems.append('the compatible mesh of %s has %.12g of its area' % (name, ratio))
+    if len(sys.argv) > 5 and sys.argv[5] == 'closed':
+        for name, (points, faces) in (("A'", ca), ("B'", cb)):
+            directed = Counter((f[k], f[(k + 1) % 3]) for f in faces for k in range(3))
+            if any(c != 1 for c in directed.values()) or any((v, u) not in directed for (u, v) in directed):
+                problems.append('%s is not a closed oriented surface' % name)
+            chi = len(points) - len(directed) // 2 + len(faces)
+            if chi != 2:
+                problems.append('%s has Euler characteristic %d' % (name, chi))
     if problems:
         print('\n'.join(problems))
         return 1
-    print('compatible meshes: %d vertices, %d faces in both; every vertex of A and of B kept; areas as A and B'
-          % (len(ca[0]), len(ca[1])))
+    print('compatible meshes: %d vertices, %d faces in both; every vertex of A and of B kept; areas as A and B%s'
+          % (len(ca[0]), len(ca[1]), '; both closed, Euler characteristic 2' if len(sys.argv) > 5 else ''))
     return 0
 
 

@@ -188,7 +188,7 @@ int cmd_cross(const Arguments& a)
                (ec == PE::ERROR_NOT_A_DISK ? std::string("closed, and the other mesh is not (two disks or two closed genus-0 meshes)")
                                            : std::string(PE::get_error_message(ec)));
     else if(st.closed && ec == PE::ERROR_WRONG_PARAMETER)
-      detail = "closed meshes need at least two landmarks (the cut runs through them in file order), and no --compatible yet";
+      detail = "closed meshes need at least two landmarks (the cut runs through them in file order)";
     return run.fail(ec, "cross-parameterization of '" + in_a.filename + "' and '" + in_b.filename + "' failed", detail,
                     landmark_fault ? EXIT_INPUT : -1);
   }
@@ -233,6 +233,7 @@ int cmd_cross(const Arguments& a)
     run.result.add("overlay_crossings", st.overlay_crossings);
     run.result.add("compatible_vertices", st.compatible_vertices);
     run.result.add("compatible_faces", st.compatible_faces);
+    if(st.closed) run.result.add("cut_vertices_welded", st.cut_vertices_welded);
     run.result.add("seconds_compatible", st.seconds_compatible);
     const std::string files[2] = { a.get("--compatible"), a.second_values.at("--compatible") };
     const Mesh* meshes[2] = { &compatible_a, &compatible_b };

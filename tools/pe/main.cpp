@@ -100,7 +100,8 @@ const Option_spec option_table[] = {
   { "--svg", Kind::OUTPUT_FILE, "OUT.svg", "also write a picture of the map" },
   { "--compatible", Kind::OUTPUT_FILE_PAIR, "A_OUT.obj B_OUT.obj",
     "cross: also write the compatible meshes, one connectivity (the overlay of the two maps, certified)\n"
-    "with A_OUT on A's surface and B_OUT on B's, vertices and faces in the same order" },
+    "with A_OUT on A's surface and B_OUT on B's, vertices and faces in the same order (closed meshes:\n"
+    "the overlay of the cut disks' maps joined along the cut, certified closed genus 0)" },
   { "--mesh", Kind::TEXT, "NAME", "mesh of DATA_DIR/meshes (default dino.off)" },
   { "--out-dir", Kind::DIRECTORY, "DIR", "existing folder for the maps and pictures (default: the build folder)" },
   { "--fix", Kind::INPUT_FILE, "FILE", "vertices kept bit-exactly: lines 'vertex_index u v' (0-based uv-vertex indices)" },
@@ -206,7 +207,7 @@ const std::vector<Command_spec>& command_table()
       "map (unless --no-composed; LANDMARKS: 'a_index b_index' lines,\n"
       "0-based in file order, both interior or both on their borders); OUT.txt: one line per vertex of A in file order, 'face_index b0 b1 b2' (the face of B in B's\n"
       "file order, the barycentric coordinates of its vertices in the order the face lists them); --svg draws\n"
-      "both certified maps side by side, A's on the left, the landmarks marked (disks only)", cmd_cross },
+      "both certified maps side by side, A's on the left, the landmarks marked (closed meshes: the cut disks)", cmd_cross },
     { "polygon", "POLY.txt OUT.obj", 2, 2, 1, { "--svg", "--time-limit" },
       "is the polygon of POLY.txt ('x y' lines, one vertex each, the last joined to the first) simple,\n"
       "weakly self-overlapping (the border of an immersed disk) or neither (exit 3,\n"

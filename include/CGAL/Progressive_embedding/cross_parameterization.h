@@ -32,9 +32,11 @@
 #include <CGAL/Progressive_embedding/internal/cross/certify_overlay.h>
 #include <CGAL/Progressive_embedding/internal/cross/common_border.h>
 #include <CGAL/Progressive_embedding/internal/cross/composed_distortion.h>
+#include <CGAL/Progressive_embedding/internal/cross/cut_border.h>
 #include <CGAL/Progressive_embedding/internal/cross/cut_closed.h>
 #include <CGAL/Progressive_embedding/internal/cross/locate_in_map.h>
 #include <CGAL/Progressive_embedding/internal/cross/overlay_maps.h>
+#include <CGAL/Progressive_embedding/internal/cross/weld_cut_overlay.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
@@ -73,6 +75,7 @@ enum compatible_meshes_t { compatible_meshes };
 enum composed_distortion_t { composed_distortion };
 enum matched_maps_t { matched_maps };
 enum planar_maps_t { planar_maps };
+enum cut_request_t { cut_request }; // internal: what the function on two closed meshes asks of the one on their cut disks
 } // namespace internal_np
 
 namespace parameters {
@@ -105,6 +108,10 @@ template <typename T> Named_function_parameters<T, internal_np::matched_maps_t> 
 template <typename T, typename P, typename G, typename B>
 Named_function_parameters<T, internal_np::matched_maps_t, CGAL::Named_function_parameters<P, G, B> >
 matched_maps(const T& t, const CGAL::Named_function_parameters<P, G, B>& np) { return { t, np }; }
+
+template <typename T, typename P, typename G, typename B>
+Named_function_parameters<T, internal_np::cut_request_t, CGAL::Named_function_parameters<P, G, B> >
+cut_request(const T& t, const CGAL::Named_function_parameters<P, G, B>& np) { return { t, np }; }
 
 template <typename T> Named_function_parameters<T, internal_np::planar_maps_t> planar_maps(const T& t)
 { return Named_function_parameters<T, internal_np::planar_maps_t>(t); }
@@ -211,6 +218,9 @@ struct Cross_parameterization_statistics
   /// closed meshes: edges of B's cut disk joining two of its border vertices (where two paths of the cut run side by
   /// side) split at their midpoints, when B's map had failed with `ERROR_DEGENERATE_CHORD` (0 otherwise)
   std::size_t chords_split_b = 0;
+  /// closed meshes with `compatible_meshes`: vertices of the cut disks' overlay on the cut, joined two by two (the
+  /// same vertex of A or of B on both sides of the cut) into one vertex of the compatible meshes
+  std::size_t cut_vertices_welded = 0;
   /// with `compatible_meshes`: the certificate of the triangulated overlay in exact coordinates (`CGAL::Epeck`
   /// points): a triangulated disk, every triangle counterclockwise, the border simple and counterclockwise, decided
   /// by filtered exact predicates; its areas are those of the points rounded to double and its energies are not
@@ -262,6 +272,17 @@ using Cross_location = CGAL::Polygon_mesh_processing::Face_location<TriangleMesh
 
 namespace internal {
 
+// What the function on two closed meshes asks of the one on their cut disks (the named parameter cut_request):
+// the borders placed on the square (internal/cross/cut_border.h), and with `compatible` the triangulated overlay as
+// soups with, for each of its points, the vertex of each disk it is (indices in `vertices(tm)` order, or -1).
+struct Cut_request
+{
+  std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_2> border_uv_a, border_uv_b; // per disk vertex
+  bool compatible = false;
+  std::vector<std::array<double, 3> > on_a, on_b;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  std::vector<std::array<std::size_t, 2> > origins;
+};
 
 // the convex combination of three values: numbers, std::array of numbers, CGAL points and colours
 template <class T>
@@ -300,7 +321,9 @@ template <class Work, class UVMap, class TriangleMeshB, class Point_2>
 Error_code compatible_soups(const Work& work, UVMap uv, const TriangleMeshB& tm_b, const Indexed_disk<TriangleMeshB>& disk_b,
                             const std::vector<Point_2>& map_b, Cross_parameterization_statistics& stats,
                             std::vector<std::array<double, 3> >& on_a, std::vector<std::array<double, 3> >& on_b,
-                            std::vector<std::array<std::size_t, 3> >& triangles)
+                            std::vector<std::array<std::size_t, 3> >& triangles,
+                            std::vector<std::array<std::size_t, 2> >* origins = nullptr,
+                            const std::vector<typename boost::graph_traits<Work>::vertex_descriptor>* disk_a_in_work = nullptr)
 {
   typedef typename boost::graph_traits<Work>::vertex_descriptor wvertex;
   typedef CGAL::Epeck EK;
@@ -388,6 +411,22 @@ Error_code compatible_soups(const Work& work, UVMap uv, const TriangleMeshB& tm_
         on_a[i] = place(overlay.points[i], overlay.features[i][0], faces_a[overlay.cell_faces[t][0]], map_a, points_a);
         on_b[i] = place(overlay.points[i], overlay.features[i][1], disk_b.faces[overlay.cell_faces[t][1]], map_b, points_b);
       }
+  // the vertex of each map that a point is: of A, its index in A's disk (`disk_a_in_work`: the vertex of the copy
+  // of each), -1 for a Steiner vertex; of B, its index in `disk_b`
+  if(origins != nullptr && disk_a_in_work != nullptr)
+  {
+    constexpr std::size_t none = std::size_t(-1);
+    std::vector<std::size_t> disk_index(map_a.size(), none);
+    for(std::size_t i = 0; i < disk_a_in_work->size(); ++i) disk_index[index.at((*disk_a_in_work)[i])] = i;
+    origins->assign(overlay.points.size(), {{ none, none }});
+    for(std::size_t i = 0; i < overlay.points.size(); ++i)
+    {
+      const Map_feature& fa = overlay.features[i][0];
+      const Map_feature& fb = overlay.features[i][1];
+      if(fa[0] != none && fa[1] == none) (*origins)[i][0] = disk_index[fa[0]];
+      if(fb[0] != none && fb[1] == none) (*origins)[i][1] = fb[0];
+    }
+  }
   triangles.swap(overlay.triangles);
   stats.compatible_vertices = overlay.points.size();
   stats.compatible_faces = triangles.size();
@@ -554,10 +593,11 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///
 /// Two closed genus-0 meshes (no border) are first cut into disks along a chain through the landmarks, in their
 /// order: the shortest edge path from each landmark to the next, avoiding the earlier paths and the other landmarks;
-/// every landmark copy on the cut is a border landmark (see the user manual, section Closed Surfaces). They need at
-/// least two landmarks, and `compatible_meshes` (with a pointer that is not null), `b_to_a_locations` and
-/// `border_vertex_pair` do not apply to them (`ERROR_WRONG_PARAMETER`); `planar_maps` receives the maps of the cut
-/// disks.
+/// every landmark copy on the cut is a border landmark, and both borders are placed on the square so that the two
+/// sides of every arc of the cut are placed alike (see the user manual, section Closed Surfaces). They need at
+/// least two landmarks; `b_to_a_locations` and `border_vertex_pair` do not apply to them (`ERROR_WRONG_PARAMETER`);
+/// `planar_maps` receives the maps of the cut disks, and `compatible_meshes` the overlay of the cut disks' maps
+/// joined along the cut into two closed meshes.
 ///
 /// Since both maps are one-to-one onto the same square, the composition (A's map, then the inverse of B's) is a
 /// bijection between the two surfaces, piecewise linear on A's refined copy; the output samples it at A's vertices.
@@ -643,6 +683,12 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///                           `(1-t) A' + t B'` is a morph. The triangulated overlay is certified in exact
 ///                           coordinates (`Cross_parameterization_statistics::report_compatible`); since both maps are
 ///                           certified, the composed map is affine and orientation-preserving on every triangle.
+///                           For two closed meshes, the overlay of the maps of the cut disks, whose points on the cut
+///                           (each a vertex of A or of B, met once on each side) are joined two by two
+///                           (`Cross_parameterization_statistics::cut_vertices_welded`): the joined triangles are
+///                           certified to form two closed, connected, consistently oriented surfaces of Euler
+///                           characteristic 2 (every edge in two triangles, the triangles around every vertex one
+///                           cycle), else `ERROR_INVALID_EMBEDDING`.
 ///                           Either pointer may be null; with both null no overlay is computed, as without the
 ///                           parameter}
 ///     \cgalParamType{`std::pair<OutputMeshA*, OutputMeshB*>`, each a model of `MutableFaceGraph` whose point type
@@ -692,7 +738,9 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///         border between two border landmarks has no vertex for a corner of the square that B's arc holds, the
 ///         errors of `parameterize_certified()` on B and of `constrained_embedding()` on A, or
 ///         `ERROR_INVALID_EMBEDDING` when a certificate fails (of either map, of the location, or with `compatible_meshes` of
-///         the triangulated overlay).
+///         the triangulated overlay, for closed meshes also of the overlay joined along the cut), for closed meshes
+///         `ERROR_NOT_A_DISK` when the cut is a single edge (two landmarks joined by an edge: the cut opens nothing) and
+///         `ERROR_DEGENERATE_BORDER` when two points of an arc of the cut cannot be kept apart in double.
 #ifndef DOXYGEN_RUNNING
 namespace internal {
 
@@ -871,8 +919,20 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
       }
       sorted.push_back(matched[k]);
     }
-    ec = internal::common_square_border_through(disk_a, vpm_a, start_a, disk_b, vpm_b, start_b, sorted,
-                                                border_uv_a, border_uv_b);
+    // the cut disks of two closed meshes come with their borders placed
+    if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::cut_request_t>::value)
+    {
+      const internal::Cut_request* request = get_parameter(np, internal_np::cut_request);
+      if(request->border_uv_a.size() != disk_a.number_of_vertices() || request->border_uv_b.size() != disk_b.number_of_vertices())
+        return finish(ERROR_WRONG_PARAMETER);
+      border_uv_a.resize(na);
+      border_uv_b.resize(nb);
+      for(std::size_t k = 0; k < na; ++k) border_uv_a[k] = request->border_uv_a[disk_a.border[k]];
+      for(std::size_t k = 0; k < nb; ++k) border_uv_b[k] = request->border_uv_b[disk_b.border[k]];
+    }
+    else
+      ec = internal::common_square_border_through(disk_a, vpm_a, start_a, disk_b, vpm_b, start_b, sorted,
+                                                  border_uv_a, border_uv_b);
     if(ec == ERROR_BORDER_TOO_SHORT) stats.failed_mesh = 0;
   }
   if(ec != OK) return finish(ec);
@@ -1082,14 +1142,24 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
 
   // ---- 6. the compatible meshes: the overlay of the two maps, triangulated and certified ----------
   constexpr bool compatible_given = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::compatible_meshes_t>::value;
-  const bool compatible = internal::asks_for_meshes(np, internal_np::compatible_meshes);
+  internal::Cut_request* request = nullptr;
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::cut_request_t>::value)
+    request = get_parameter(np, internal_np::cut_request);
+  const bool compatible = internal::asks_for_meshes(np, internal_np::compatible_meshes) || (request && request->compatible);
   std::vector<std::array<double, 3> > on_a, on_b;
   std::vector<std::array<std::size_t, 3> > triangles;
   if(compatible)
   {
     const double before_overlay = timer.time();
+    // the cut disks have no interior landmark, so B's map is never on a refined copy and its vertices are the disk's
+    std::vector<std::array<std::size_t, 2> >* origins = request && request->compatible ? &request->origins : nullptr;
+    if(origins != nullptr && refined_b) return finish(ERROR_WRONG_PARAMETER);
+    std::vector<wvertex> disk_a_in_work;
+    if(origins != nullptr)
+      for(vertex_a v : disk_a.vertices) disk_a_in_work.push_back(to_work[v]);
     ec = refined_b ? internal::compatible_soups(work, uv_a, work_b, side_b, side_uv, stats, on_a, on_b, triangles)
-                   : internal::compatible_soups(work, uv_a, tm_b, disk_b, map_b, stats, on_a, on_b, triangles);
+                   : internal::compatible_soups(work, uv_a, tm_b, disk_b, map_b, stats, on_a, on_b, triangles, origins,
+                                                &disk_a_in_work);
     stats.seconds_compatible = timer.time() - before_overlay;
     if(ec != OK) return finish(ec);
   }
@@ -1129,6 +1199,12 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
     if(meshes.second != nullptr) internal::write_soup(on_b, triangles, *meshes.second);
     stats.seconds_compatible += timer.time() - before_write;
   }
+  if(request && request->compatible)
+  {
+    request->on_a.swap(on_a);
+    request->on_b.swap(on_b);
+    request->triangles.swap(triangles);
+  }
   if constexpr(planar_given)
   {
     const auto maps = get_parameter(np, internal_np::planar_maps);
@@ -1163,12 +1239,12 @@ Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const Triang
   Cross_parameterization_statistics& stats = stats_out ? *stats_out : local_stats;
   stats = Cross_parameterization_statistics();
   stats.closed = true;
-  // what names the vertices of B or asks for the overlay does not apply to the cut disks (not yet); a mesh
-  // parameter with two null pointers asks for nothing. The planar maps are those of the cut disks.
+  // what names the vertices of B or a border pair does not apply to the cut disks (not yet). The planar maps are
+  // those of the cut disks; the compatible meshes are their overlay welded along the cut.
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::b_to_a_locations_t>::value ||
                !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::border_vertex_pair_t>::value)
     return ERROR_WRONG_PARAMETER;
-  if(asks_for_meshes(np, internal_np::compatible_meshes)) return ERROR_WRONG_PARAMETER;
+  const bool compatible = asks_for_meshes(np, internal_np::compatible_meshes);
 
   // the chain: the landmarks in their order, each vertex once
   std::vector<vertex_a> chain_a;
@@ -1252,12 +1328,32 @@ Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const Triang
                                               std::numeric_limits<double>::infinity());
   CGAL::Real_timer timer;
   timer.start();
+  // both borders placed so that the two sides of the cut are placed alike (internal/cross/cut_border.h)
+  Cut_request request;
+  request.compatible = compatible;
+  std::vector<std::pair<std::size_t, std::size_t> > pair_indices;
+  for(const auto& p : pairs) pair_indices.emplace_back(std::size_t(p.first), std::size_t(p.second));
+  auto place_borders = [&]() {
+    Indexed_disk<Disk_a> indexed_a;
+    Indexed_disk<Disk_b> indexed_b;
+    Error_code e = make_indexed_disk(disk_a, boost::graph_traits<Disk_a>::null_halfedge(), indexed_a);
+    if(e != OK) { stats.failed_mesh = 0; return e; }
+    e = make_indexed_disk(disk_b, boost::graph_traits<Disk_b>::null_halfedge(), indexed_b);
+    if(e != OK) { stats.failed_mesh = 1; return e; }
+    std::size_t failed_mesh = std::size_t(-1);
+    e = cut_border_on_square(indexed_a, get(CGAL::vertex_point, disk_a), indexed_b, get(CGAL::vertex_point, disk_b),
+                             pair_indices, cut_twins(cut_a, disk_a.number_of_vertices()),
+                             cut_twins(cut_b, disk_b.number_of_vertices()), request.border_uv_a, request.border_uv_b,
+                             failed_mesh);
+    if(e != OK) stats.failed_mesh = failed_mesh;
+    return e;
+  };
   auto map_disks = [&]() {
-    const auto disk_np = parameters::statistics(&inner,
+    const auto disk_np = parameters::cut_request(&request, parameters::statistics(&inner,
       parameters::composed_distortion(choose_parameter(get_parameter(np, internal_np::composed_distortion), true),
         parameters::matched_maps(choose_parameter(get_parameter(np, internal_np::matched_maps), true),
           parameters::optimization_time_limit(choose_parameter(get_parameter(np, internal_np::optimization_time_limit), 30.),
-            CGAL::parameters::maximum_running_time((std::max)(0., max_seconds - timer.time()))))));
+            CGAL::parameters::maximum_running_time((std::max)(0., max_seconds - timer.time())))))));
     // the planar maps of the cut disks, written by the call that succeeds (the points of a cut disk: the mesh's
     // vertices in their order, then the copies on the cut, then B's chord midpoints)
     if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::planar_maps_t>::value)
@@ -1266,15 +1362,21 @@ Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const Triang
     else
       return cross_parameterization<ConcurrencyTag>(disk_a, disk_b, pairs, located_map, disk_np);
   };
+  ec = place_borders();
+  if(ec != OK) return ec;
   ec = map_disks();
   // Where two paths of the cut run side by side (up and down a limb to a landmark at its tip), the edges
-  // across them join two border vertices of B's disk, and when moving the square's corners cannot put
-  // their ends on two sides, B's map would flatten them: then B's disk is mapped again with those edges split
+  // across them join two border vertices of B's disk, and where both ends lie on one side of the square, B's
+  // map would flatten them: then B's disk is mapped again with those edges split
   // at their midpoints (only then, so that the map of a disk that needs no split is the disk's own)
   if(ec == ERROR_DEGENERATE_CHORD && inner.failed_mesh == 1)
   {
     build_b(true);
-    if(chords_b > 0) ec = map_disks();
+    if(chords_b > 0)
+    {
+      ec = place_borders(); // the same borders, B's midpoints added inside
+      if(ec == OK) ec = map_disks();
+    }
   }
   const std::size_t inner_failed = inner.failed_landmark;
   stats = inner;
@@ -1285,6 +1387,33 @@ Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const Triang
   stats.chords_split_b = chords_b;
   stats.failed_landmark = inner_failed < pair_landmark.size() ? pair_landmark[inner_failed] : std::size_t(-1);
   if(ec != OK) return ec;
+  // the compatible meshes: the overlay of the cut disks' maps welded along the cut (every border point of it is a
+  // vertex of A's or B's disk, named by the vertex of the closed mesh it is a copy of), then certified closed genus 0
+  std::vector<std::array<double, 3> > on_a, on_b;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  if(compatible)
+  {
+    CGAL::Real_timer weld_timer;
+    weld_timer.start();
+    std::vector<std::size_t> mesh_a(cut_a.vertices.size()), mesh_b(cut_b.vertices.size());
+    for(std::size_t i = 0; i < mesh_a.size(); ++i) mesh_a[i] = index_a.at(cut_a.vertices[i]);
+    for(std::size_t i = 0; i < mesh_b.size(); ++i) mesh_b[i] = index_b.at(cut_b.vertices[i]);
+    std::vector<std::array<std::size_t, 2> > origin(request.origins.size(), {{ std::size_t(-1), std::size_t(-1) }});
+    for(std::size_t i = 0; i < origin.size(); ++i)
+    {
+      const std::array<std::size_t, 2>& o = request.origins[i];
+      if(o[0] < mesh_a.size()) origin[i][0] = mesh_a[o[0]];
+      if(o[1] < mesh_b.size()) origin[i][1] = mesh_b[o[1]]; // B's chord midpoints are inside: no origin
+    }
+    on_a.swap(request.on_a);
+    on_b.swap(request.on_b);
+    triangles.swap(request.triangles);
+    ec = weld_cut_overlay(on_a, on_b, triangles, origin, stats.cut_vertices_welded);
+    stats.seconds_compatible += weld_timer.time();
+    if(ec != OK) return ec;
+    stats.compatible_vertices = on_a.size();
+    stats.compatible_faces = triangles.size();
+  }
   // back to the faces of B: the corners of a cut face in the order of the location, as vertices of B (a
   // chord's midpoint gives half its weight to each end), in the face of B that holds the cut face
   const std::vector<face_b>& faces_b = cut_b.faces;
@@ -1311,6 +1440,12 @@ Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const Triang
       add(m[1], l.second[k] / 2);
     }
     put(out, v, Cross_location<TriangleMeshB>(fb, w));
+  }
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::compatible_meshes_t>::value)
+  {
+    const auto meshes = get_parameter(np, internal_np::compatible_meshes);
+    if(meshes.first != nullptr) write_soup(on_a, triangles, *meshes.first);
+    if(meshes.second != nullptr) write_soup(on_b, triangles, *meshes.second);
   }
   return OK;
 }

@@ -528,8 +528,9 @@ int fan_disks()
 }
 
 // Closed genus-0 surfaces: both cut along the chain of landmarks into disks. blobby against itself (every
-// landmark exactly on its partner, the others near themselves) and against its remeshed copy (the error bound
-// of the disks); a genus-3 surface, a closed surface against a disk and a single landmark are refused.
+// landmark exactly on its partner, the map the identity up to rounding; the compatible meshes closed, of one
+// connectivity) and against its remeshed copy (the error bound of the disks); a genus-3 surface, a closed surface
+// against a disk and a single landmark are refused, and the join along the cut refuses what is not closed.
 template <class Mesh>
 int closed_surfaces(const std::string& data_dir)
 {
@@ -551,18 +552,62 @@ int closed_surfaces(const std::string& data_dir)
   CHECK(loc.size() == va.size(), "every vertex located");
   for(const auto& l : landmarks) CHECK(weight_of(b, loc.at(l.first), l.second) == 1., "landmark exactly on its partner");
   const auto error = PE::internal::correspondence_error(a, b, boost::make_assoc_property_map(loc));
-  CHECK(error.first < 2e-3, "mean error " << error.first);
+  // the same cut and the same border on both (the corners avoid flat chords, so B's disk is not split): the identity
+  CHECK(st.chords_split_b == 0 && error.second < 1e-9, "the identity: mean error " << error.first << ", max " << error.second);
   std::cout << "closed " << file << " (" << mesh_name<Mesh>() << ") against itself, 6 landmarks: cut along "
             << st.cut_edges_a << " edges, both disks certified, landmarks exact, mean error " << error.first
             << " of the diagonal, max " << error.second << ", " << st.seconds_total << " s" << std::endl;
-  // the compatible meshes do not apply to the cut disks: refused when asked for, nothing asked with null pointers;
-  // the planar maps are those of the cut disks (the mesh's vertices first, then the copies on the cut)
+  // the compatible meshes: the overlay of the cut disks' maps joined along the cut, two closed genus-0 meshes of one
+  // connectivity, the same locations; the planar maps are those of the cut disks (the mesh's vertices first, then the
+  // copies on the cut); nothing asked with null pointers
   {
-    Location_map<Mesh> none, again;
-    Surface_mesh ca, pa, pb;
-    ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(none),
-           PE::parameters::compatible_meshes(std::make_pair(&ca, static_cast<Surface_mesh*>(nullptr))));
-    CHECK(ec == PE::ERROR_WRONG_PARAMETER && none.empty() && num_vertices(ca) == 0, "compatible meshes of closed surfaces refused");
+    Location_map<Mesh> with_meshes, again;
+    Surface_mesh ca, cb, pa, pb;
+    PE::Cross_parameterization_statistics sm;
+    ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(with_meshes),
+           PE::parameters::compatible_meshes(std::make_pair(&ca, &cb), PE::parameters::statistics(&sm)));
+    CHECK(ec == PE::OK && with_meshes == loc, "closed surfaces with compatible meshes: the same map");
+    CHECK(sm.report_compatible.is_valid() && sm.cut_vertices_welded > 0, "overlays certified, joined along the cut");
+    CHECK(num_vertices(ca) == num_vertices(cb) && num_faces(ca) == num_faces(cb) && num_vertices(ca) == sm.compatible_vertices &&
+          CGAL::is_closed(ca) && CGAL::is_closed(cb) && CGAL::is_valid_polygon_mesh(ca) && CGAL::is_triangle_mesh(ca) &&
+          long(num_vertices(ca)) - long(num_edges(ca)) + long(num_faces(ca)) == 2, "two closed genus-0 meshes");
+    bool same_faces = true;
+    for(auto f : faces(ca))
+    {
+      auto ha = halfedge(f, ca), hb = halfedge(f, cb);
+      for(int k = 0; k < 3; ++k, ha = next(ha, ca), hb = next(hb, cb)) same_faces = same_faces && target(ha, ca) == target(hb, cb);
+    }
+    CHECK(same_faces, "one connectivity");
+    std::set<std::array<double, 3> > points_a;
+    for(auto v : vertices(ca)) points_a.insert({{ ca.point(v).x(), ca.point(v).y(), ca.point(v).z() }});
+    std::size_t kept = 0;
+    for(vd v : vertices(a))
+    {
+      const auto& p = get(CGAL::vertex_point, a, v);
+      kept += points_a.count({{ CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) }});
+    }
+    // (not once each: a vertex of B within rounding of a vertex of A in the plane lands on the same 3D point)
+    CHECK(kept == va.size(), "every vertex of A in A'");
+    std::cout << "closed compatible meshes: " << num_vertices(ca) << " vertices, " << num_faces(ca) << " faces, "
+              << sm.cut_vertices_welded << " joined along the cut, closed, Euler characteristic 2" << std::endl;
+    // two landmarks (the way back the mirror image of the way there) and three (four copies, the corners at them)
+    for(std::size_t k : { std::size_t(2), std::size_t(3) })
+    {
+      const std::vector<std::pair<vd, vd> > few(landmarks.begin(), landmarks.begin() + std::ptrdiff_t(k));
+      Location_map<Mesh> lk;
+      Surface_mesh ka, kb;
+      PE::Cross_parameterization_statistics sk;
+      ec = PE::cross_parameterization(a, b, few, boost::make_assoc_property_map(lk),
+             PE::parameters::compatible_meshes(std::make_pair(&ka, &kb), PE::parameters::statistics(&sk)));
+      CHECK(ec == PE::OK && sk.landmarks_exact && sk.cut_vertices_welded > 0, k << " landmarks: " << PE::get_error_name(ec));
+      CHECK(CGAL::is_closed(ka) && num_vertices(ka) == num_vertices(kb) &&
+            long(num_vertices(ka)) - long(num_edges(ka)) + long(num_faces(ka)) == 2, k << " landmarks: closed genus 0");
+      const auto ek = PE::internal::correspondence_error(a, b, boost::make_assoc_property_map(lk));
+      // (A's map is optimized on its own, to the optimizer's tolerance: 1.6e-9 of the diagonal with three landmarks)
+      CHECK(ek.second < 1e-8, k << " landmarks: the identity, max error " << ek.second);
+      std::cout << k << " landmarks: compatible meshes of " << num_vertices(ka) << " vertices (" << sk.cut_vertices_welded
+                << " joined), max error " << ek.second << std::endl;
+    }
     PE::Cross_parameterization_statistics sp;
     ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(again),
            PE::parameters::compatible_meshes(std::make_pair(static_cast<Surface_mesh*>(nullptr), static_cast<Surface_mesh*>(nullptr)),
@@ -589,6 +634,18 @@ int closed_surfaces(const std::string& data_dir)
   CHECK(error_c.first < 0.02, "mean error against the remeshed copy " << error_c.first);
   std::cout << "closed " << file << " against its remeshed copy (" << sc.vertices_b << " vertices after the cut), 6 landmarks: "
             << "mean error " << error_c.first << ", max " << error_c.second << ", " << sc.seconds_total << " s" << std::endl;
+  // the join along the cut alone: refused, nothing changed, when a border point is of neither map or the joined
+  // triangles are not a closed surface
+  {
+    std::vector<std::array<double, 3> > on_a = { {{0, 0, 0}}, {{1, 0, 0}}, {{0, 1, 0}} }, on_b = on_a;
+    std::vector<std::array<std::size_t, 3> > triangles = { {{0, 1, 2}} };
+    const std::size_t none = std::size_t(-1);
+    std::size_t welded = 7;
+    ec = PE::internal::weld_cut_overlay(on_a, on_b, triangles, { {{none, none}}, {{1, none}}, {{2, none}} }, welded);
+    CHECK(ec == PE::ERROR_INVALID_EMBEDDING && welded == 0 && on_a.size() == 3 && triangles.size() == 1, "a border point of neither map");
+    ec = PE::internal::weld_cut_overlay(on_a, on_b, triangles, { {{0, none}}, {{1, none}}, {{2, none}} }, welded);
+    CHECK(ec == PE::ERROR_INVALID_EMBEDDING && on_a.size() == 3, "a triangle is not closed");
+  }
   // refused: genus 3; a closed surface and a disk; one landmark
   {
     Mesh g;

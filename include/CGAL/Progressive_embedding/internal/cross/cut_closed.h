@@ -220,6 +220,17 @@ std::size_t split_chords(const Cut_disk<TriangleMesh>& cut, Split_soup& out)
   return chords.size();
 }
 
+// per point of `cut` (and of any point added after them): the point that is the same mesh vertex on the other side of
+// the cut, or -1
+template <class TriangleMesh>
+std::vector<std::size_t> cut_twins(const Cut_disk<TriangleMesh>& cut, std::size_t points)
+{
+  std::vector<std::size_t> twin(points, std::size_t(-1));
+  for(std::size_t i = 0; i < cut.copy.size(); ++i)
+    if(cut.copy[i] != std::size_t(-1)) { twin[i] = cut.copy[i]; twin[cut.copy[i]] = i; }
+  return twin;
+}
+
 } // namespace internal
 } // namespace Progressive_embedding
 } // namespace CGAL

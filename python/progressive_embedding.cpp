@@ -780,7 +780,7 @@ py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::objec
         context += st.failed_mesh == 0 ? ", mesh A (V_a, F_a)" : ", mesh B (V_b, F_b)";
       else if(st.closed && ec == PE::ERROR_WRONG_PARAMETER)
         context += ": closed meshes need at least two landmarks (the cut runs through them in their order), and "
-                   "border_vertex_pair and b_to_a do not apply to them";
+                   "border_vertex_pair does not apply to them (no border)";
       throw Pe_failure(ec, context);
     }
     for(std::size_t i = 0; i < in_a.n; ++i) location_to_row(wb.mesh, in_b, located[i], faces[i], &bary[3 * i]);
@@ -1001,7 +1001,7 @@ PYBIND11_MODULE(progressive_embedding, m)
     "computed exactly and rounded once: they sum to 1 up to one rounding; a landmark gets exactly 1 at its\n"
     "partner). Two closed genus-0 meshes are first cut into disks along a chain through the landmarks (at\n"
     "least two, in their order; info 'closed', 'cut_edges_a', 'cut_edges_b', 'chords_split_b'; vertex and face counts are\n"
-    "then those of the cut disks; border_vertex_pair and b_to_a do not apply to them: ERROR_WRONG_PARAMETER;\n"
+    "then those of the cut disks; border_vertex_pair does not apply to them (no border): ERROR_WRONG_PARAMETER;\n"
     "planar_maps gives the maps of the cut disks, the rows of V first, then the copies of the vertices inside\n"
     "the cut; compatible gives two closed meshes, the cut disks' overlay joined along the cut, certified closed\n"
     "with Euler characteristic 2, info 'cut_vertices_welded'). info: 'valid', 'valid_a', 'valid_b', 'landmarks_exact', 'landmarks', 'vertices_a',\n"

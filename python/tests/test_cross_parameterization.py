@@ -293,3 +293,10 @@ def test_closed_surfaces():
     assert len(uv_a) == len(V) + info['cut_edges_a'] - 1 + info['vertices_added_a'] and len(T_a) >= len(F)
     assert signed_areas(uv_a, T_a).min() > 0 and signed_areas(uv_b, T_b).min() > 0
     assert all(np.array_equal(uv_a[a], uv_b[b]) for a, b in landmarks)
+    # the other direction: B's vertices on A's faces, the identity too; a border pair does not apply
+    again, _, info = pe.cross_parameterization(V, F, V, F, landmarks, b_to_a=True)
+    assert np.array_equal(again, faces) and info['located_b_on_a'] == len(V)
+    back_faces, back = info['b_to_a_faces'], info['b_to_a_barycentric']
+    assert_landmarks_exact(back_faces, back, F, [[b, a] for a, b in landmarks])
+    assert np.abs(images(back_faces, back, V, F) - V).max() < 1e-2 * np.ptp(V, axis=0).max()
+    assert 'no border' in raises('ERROR_WRONG_PARAMETER', V, F, V, F, landmarks, border_vertex_pair=[0, 0])

@@ -56,6 +56,7 @@
 #include <iterator>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <type_traits>
 #include <unordered_map>
 #include <unordered_set>
@@ -595,9 +596,10 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 /// order: the shortest edge path from each landmark to the next, avoiding the earlier paths and the other landmarks;
 /// every landmark copy on the cut is a border landmark, and both borders are placed on the square so that the two
 /// sides of every arc of the cut are placed alike (see the user manual, section Closed Surfaces). They need at
-/// least two landmarks; `b_to_a_locations` and `border_vertex_pair` do not apply to them (`ERROR_WRONG_PARAMETER`);
-/// `planar_maps` receives the maps of the cut disks, and `compatible_meshes` the overlay of the cut disks' maps
-/// joined along the cut into two closed meshes.
+/// least two landmarks; `border_vertex_pair` does not apply to them (they have no border: `ERROR_WRONG_PARAMETER`);
+/// `planar_maps` receives the maps of the cut disks, `compatible_meshes` the overlay of the cut disks' maps
+/// joined along the cut into two closed meshes, and `b_to_a_locations` the locations of B's vertices on A's faces
+/// (a vertex of B on the cut is located from its first copy, its place in the cut disk's order).
 ///
 /// Since both maps are one-to-one onto the same square, the composition (A's map, then the inverse of B's) is a
 /// bijection between the two surfaces, piecewise linear on A's refined copy; the output samples it at A's vertices.
@@ -1217,6 +1219,39 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
 #ifndef DOXYGEN_RUNNING
 namespace internal {
 
+// A location on a cut disk brought back to the closed mesh it was cut from: the corners of the disk's face, in the
+// order of the location, as vertices of the mesh (a point `i >= cut.vertices.size()`, the midpoint of a split chord
+// `midpoint[i - cut.vertices.size()]`, gives half its weight to each end), in the mesh's face that holds the disk's
+// face (`face[disk face]` indexes `cut.faces`)
+template <class TriangleMesh, class Disk>
+Cross_location<TriangleMesh> location_on_closed_mesh(const TriangleMesh& tm, const Cut_disk<TriangleMesh>& cut,
+                                                     const std::vector<std::size_t>& face,
+                                                     const std::vector<std::array<std::size_t, 2> >& midpoint,
+                                                     const Disk& disk, const Cross_location<Disk>& l)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex;
+  const std::size_t n_cut = cut.vertices.size();
+  const auto f = cut.faces[face[std::size_t(l.first)]];
+  const auto hc = halfedge(l.first, disk);
+  const std::size_t cut_corner[3] = { std::size_t(source(hc, disk)), std::size_t(target(hc, disk)),
+                                      std::size_t(target(next(hc, disk), disk)) };
+  const auto h = halfedge(f, tm);
+  const vertex corner[3] = { source(h, tm), target(h, tm), target(next(h, tm), tm) };
+  std::array<double, 3> w{{ 0, 0, 0 }};
+  auto add = [&](std::size_t point, double weight) {
+    for(int j = 0; j < 3; ++j)
+      if(corner[j] == cut.vertices[point]) w[j] += weight;
+  };
+  for(int k = 0; k < 3; ++k)
+  {
+    if(cut_corner[k] < n_cut) { add(cut_corner[k], l.second[k]); continue; }
+    const auto& m = midpoint[cut_corner[k] - n_cut];
+    add(m[0], l.second[k] / 2);
+    add(m[1], l.second[k] / 2);
+  }
+  return Cross_location<TriangleMesh>(f, w);
+}
+
 // two closed genus-0 meshes: both cut along the chain of landmarks (cut_closed.h), the cut disks mapped with
 // every landmark copy a border landmark, the locations brought back to the vertices and faces of the meshes
 template <class ConcurrencyTag, class TriangleMeshA, class TriangleMeshB, class LandmarkRange, class LocationMap,
@@ -1228,7 +1263,6 @@ Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const Triang
   using CGAL::parameters::get_parameter;
   typedef typename boost::graph_traits<TriangleMeshA>::vertex_descriptor vertex_a;
   typedef typename boost::graph_traits<TriangleMeshB>::vertex_descriptor vertex_b;
-  typedef typename boost::graph_traits<TriangleMeshB>::face_descriptor face_b;
   typedef typename boost::property_traits<typename boost::property_map<TriangleMeshA, CGAL::vertex_point_t>::const_type>::value_type Point_a;
   typedef typename boost::property_traits<typename boost::property_map<TriangleMeshB, CGAL::vertex_point_t>::const_type>::value_type Point_b;
   typedef CGAL::Surface_mesh<Point_a> Disk_a;
@@ -1239,11 +1273,11 @@ Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const Triang
   Cross_parameterization_statistics& stats = stats_out ? *stats_out : local_stats;
   stats = Cross_parameterization_statistics();
   stats.closed = true;
-  // what names the vertices of B or a border pair does not apply to the cut disks (not yet). The planar maps are
-  // those of the cut disks; the compatible meshes are their overlay welded along the cut.
-  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::b_to_a_locations_t>::value ||
-               !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::border_vertex_pair_t>::value)
+  // a closed mesh has no border: a border pair does not apply. The planar maps are those of the cut disks; the
+  // compatible meshes are their overlay welded along the cut; B's vertices are located on A's cut disk.
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::border_vertex_pair_t>::value)
     return ERROR_WRONG_PARAMETER;
+  constexpr bool backwards = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::b_to_a_locations_t>::value;
   const bool compatible = asks_for_meshes(np, internal_np::compatible_meshes);
 
   // the chain: the landmarks in their order, each vertex once
@@ -1323,6 +1357,7 @@ Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const Triang
   }
   std::vector<Cross_location<Disk_b> > located(disk_a.number_of_vertices());
   auto located_map = boost::make_iterator_property_map(located.begin(), get(CGAL::vertex_index, disk_a));
+  std::vector<Cross_location<Disk_a> > located_b; // B's cut disk's vertices on A's, with b_to_a_locations
   Cross_parameterization_statistics inner;
   const double max_seconds = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
                                               std::numeric_limits<double>::infinity());
@@ -1356,11 +1391,21 @@ Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const Triang
             CGAL::parameters::maximum_running_time((std::max)(0., max_seconds - timer.time())))))));
     // the planar maps of the cut disks, written by the call that succeeds (the points of a cut disk: the mesh's
     // vertices in their order, then the copies on the cut, then B's chord midpoints)
-    if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::planar_maps_t>::value)
-      return cross_parameterization<ConcurrencyTag>(disk_a, disk_b, pairs, located_map,
-                                                    parameters::planar_maps(get_parameter(np, internal_np::planar_maps), disk_np));
+    auto with_planar_maps = [&](const auto& inner_np) {
+      if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::planar_maps_t>::value)
+        return cross_parameterization<ConcurrencyTag>(disk_a, disk_b, pairs, located_map,
+                                                      parameters::planar_maps(get_parameter(np, internal_np::planar_maps), inner_np));
+      else
+        return cross_parameterization<ConcurrencyTag>(disk_a, disk_b, pairs, located_map, inner_np);
+    };
+    if constexpr(backwards)
+    {
+      located_b.assign(disk_b.number_of_vertices(), Cross_location<Disk_a>());
+      return with_planar_maps(parameters::b_to_a_locations(
+        boost::make_iterator_property_map(located_b.begin(), get(CGAL::vertex_index, disk_b)), disk_np));
+    }
     else
-      return cross_parameterization<ConcurrencyTag>(disk_a, disk_b, pairs, located_map, disk_np);
+      return with_planar_maps(disk_np);
   };
   ec = place_borders();
   if(ec != OK) return ec;
@@ -1414,32 +1459,18 @@ Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const Triang
     stats.compatible_vertices = on_a.size();
     stats.compatible_faces = triangles.size();
   }
-  // back to the faces of B: the corners of a cut face in the order of the location, as vertices of B (a
-  // chord's midpoint gives half its weight to each end), in the face of B that holds the cut face
-  const std::vector<face_b>& faces_b = cut_b.faces;
-  const std::size_t n_cut = cut_b.vertices.size();
+  // back to the faces of the closed meshes (A's cut disk has no midpoint and its faces are the cut's)
   for(vertex_a v : vertices(tm_a))
+    put(out, v, location_on_closed_mesh(tm_b, cut_b, soup_b.face, soup_b.midpoint, disk_b, located[index_a.at(v)]));
+  if constexpr(backwards)
   {
-    const Cross_location<Disk_b>& l = located[index_a.at(v)];
-    const face_b fb = faces_b[soup_b.face[std::size_t(l.first)]];
-    const auto hc = halfedge(l.first, disk_b);
-    const std::size_t cut_corner[3] = { std::size_t(source(hc, disk_b)), std::size_t(target(hc, disk_b)),
-                                        std::size_t(target(next(hc, disk_b), disk_b)) };
-    const auto h = halfedge(fb, tm_b);
-    const vertex_b corner[3] = { source(h, tm_b), target(h, tm_b), target(next(h, tm_b), tm_b) };
-    std::array<double, 3> w{{ 0, 0, 0 }};
-    auto add = [&](std::size_t point, double weight) {
-      for(int j = 0; j < 3; ++j)
-        if(corner[j] == cut_b.vertices[point]) w[j] += weight;
-    };
-    for(int k = 0; k < 3; ++k)
-    {
-      if(cut_corner[k] < n_cut) { add(cut_corner[k], l.second[k]); continue; }
-      const auto& m = soup_b.midpoint[cut_corner[k] - n_cut];
-      add(m[0], l.second[k] / 2);
-      add(m[1], l.second[k] / 2);
-    }
-    put(out, v, Cross_location<TriangleMeshB>(fb, w));
+    std::vector<std::size_t> faces_a(cut_a.faces.size());
+    std::iota(faces_a.begin(), faces_a.end(), std::size_t(0));
+    const std::vector<std::array<std::size_t, 2> > no_midpoint;
+    auto out_b = get_parameter(np, internal_np::b_to_a_locations);
+    for(vertex_b v : vertices(tm_b))
+      put(out_b, v, location_on_closed_mesh(tm_a, cut_a, faces_a, no_midpoint, disk_a, located_b[index_b.at(v)]));
+    stats.located_b_on_a = num_vertices(tm_b);
   }
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::compatible_meshes_t>::value)
   {

@@ -557,6 +557,24 @@ int closed_surfaces(const std::string& data_dir)
   std::cout << "closed " << file << " (" << mesh_name<Mesh>() << ") against itself, 6 landmarks: cut along "
             << st.cut_edges_a << " edges, both disks certified, landmarks exact, mean error " << error.first
             << " of the diagonal, max " << error.second << ", " << st.seconds_total << " s" << std::endl;
+  // the other direction: B's vertices located on A's faces, the identity too, every landmark of B on its partner;
+  // a border pair does not apply to closed meshes
+  {
+    Location_map<Mesh> same, back;
+    PE::Cross_parameterization_statistics sb;
+    ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(same),
+           PE::parameters::b_to_a_locations(boost::make_assoc_property_map(back), PE::parameters::statistics(&sb)));
+    CHECK(ec == PE::OK && same == loc && back.size() == vb.size() && sb.located_b_on_a == vb.size(),
+          "closed surfaces with b_to_a_locations: " << PE::get_error_name(ec) << ", " << back.size() << " located");
+    for(const auto& l : landmarks) CHECK(weight_of(a, back.at(l.second), l.first) == 1., "landmark of B exactly on its partner");
+    const auto back_error = PE::internal::correspondence_error(b, a, boost::make_assoc_property_map(back));
+    CHECK(back_error.second < 1e-9, "B onto A: the identity, max error " << back_error.second);
+    std::cout << "closed, B's vertices on A: max error " << back_error.second << std::endl;
+    Location_map<Mesh> none;
+    ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(none),
+                                    PE::parameters::border_vertex_pair(landmarks.front()));
+    CHECK(ec == PE::ERROR_WRONG_PARAMETER && none.empty(), "a border pair on closed meshes refused");
+  }
   // the compatible meshes: the overlay of the cut disks' maps joined along the cut, two closed genus-0 meshes of one
   // connectivity, the same locations; the planar maps are those of the cut disks (the mesh's vertices first, then the
   // copies on the cut); nothing asked with null pointers
@@ -645,6 +663,33 @@ int closed_surfaces(const std::string& data_dir)
     CHECK(ec == PE::ERROR_INVALID_EMBEDDING && welded == 0 && on_a.size() == 3 && triangles.size() == 1, "a border point of neither map");
     ec = PE::internal::weld_cut_overlay(on_a, on_b, triangles, { {{0, none}}, {{1, none}}, {{2, none}} }, welded);
     CHECK(ec == PE::ERROR_INVALID_EMBEDDING && on_a.size() == 3, "a triangle is not closed");
+    // the certificate of the joined triangles: a tetrahedron, and what is not a closed genus-0 surface
+    typedef std::vector<std::array<std::size_t, 3> > Soup;
+    const Soup tetrahedron = { {{0, 2, 1}}, {{0, 1, 3}}, {{1, 2, 3}}, {{0, 3, 2}} };
+    std::vector<std::array<double, 3> > points = { {{0, 0, 0}}, {{1, 0, 0}}, {{0, 1, 0}}, {{0, 0, 1}} };
+    CHECK(PE::internal::is_closed_genus_zero_soup(points, tetrahedron), "a tetrahedron is a closed genus-0 surface");
+    Soup open(tetrahedron.begin(), tetrahedron.end() - 1), flipped = tetrahedron, two = tetrahedron, pinched = tetrahedron;
+    std::swap(flipped[3][1], flipped[3][2]);
+    CHECK(!PE::internal::is_closed_genus_zero_soup(points, open), "a tetrahedron without one face");
+    CHECK(!PE::internal::is_closed_genus_zero_soup(points, flipped), "a tetrahedron with one face the other way");
+    CHECK(!PE::internal::is_closed_genus_zero_soup(points, Soup()), "no triangle");
+    std::vector<std::array<double, 3> > more = points;
+    for(const auto& p : points) more.push_back({{p[0] + 2, p[1], p[2]}});
+    for(const auto& t : tetrahedron) two.push_back({{t[0] + 4, t[1] + 4, t[2] + 4}});
+    CHECK(!PE::internal::is_closed_genus_zero_soup(more, two), "two tetrahedra: two components");
+    CHECK(!PE::internal::is_closed_genus_zero_soup(more, tetrahedron), "points in no triangle");
+    // the second tetrahedron's vertices 1, 2, 3 are points 4, 5, 6, its vertex 0 is the first's
+    for(const auto& t : tetrahedron) pinched.push_back({{t[0] == 0 ? 0 : t[0] + 3, t[1] == 0 ? 0 : t[1] + 3, t[2] == 0 ? 0 : t[2] + 3}});
+    more.resize(7);
+    CHECK(!PE::internal::is_closed_genus_zero_soup(more, pinched), "two tetrahedra sharing a vertex");
+    // a tetrahedron whose vertex 3 is two points on a border: joined into one, the tetrahedron again
+    on_a = points;
+    on_a.push_back(points[3]);
+    on_b = on_a;
+    triangles = { {{0, 2, 1}}, {{0, 1, 3}}, {{1, 2, 4}}, {{0, 3, 2}} };
+    ec = PE::internal::weld_cut_overlay(on_a, on_b, triangles, { {{0, none}}, {{1, none}}, {{2, none}}, {{3, none}}, {{3, none}} }, welded);
+    CHECK(ec == PE::OK && welded == 1 && on_a.size() == 4 && on_b.size() == 4 && triangles == tetrahedron,
+          "a tetrahedron cut at one vertex joined: " << PE::get_error_name(ec) << ", " << welded << " joined");
   }
   // refused: genus 3; a closed surface and a disk; one landmark
   {

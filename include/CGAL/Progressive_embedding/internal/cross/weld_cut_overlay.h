@@ -16,11 +16,15 @@
 
 #include <CGAL/Progressive_embedding/Error_code.h>
 
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+
 #include <array>
 #include <cstddef>
 #include <map>
-#include <numeric>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -28,57 +32,28 @@ namespace CGAL {
 namespace Progressive_embedding {
 namespace internal {
 
-// whether `triangles` (on `n` points, every point used) form a closed, connected, oriented 2-manifold of Euler
-// characteristic 2
-inline bool is_closed_genus_zero_soup(std::size_t n, const std::vector<std::array<std::size_t, 3> >& triangles)
+// whether `triangles` on `points` (every point used) form a closed, connected, oriented 2-manifold of Euler
+// characteristic 2: PMP's test that the soup is a polygon mesh (every edge in at most two triangles, once each way;
+// no pinched vertex), then the mesh it makes closed, of one component, with V - E + F = 2
+inline bool is_closed_genus_zero_soup(const std::vector<std::array<double, 3> >& points,
+                                      const std::vector<std::array<std::size_t, 3> >& triangles)
 {
-  typedef std::pair<std::size_t, std::size_t> Edge;
-  std::map<Edge, std::size_t> triangle_of; // directed edge -> the triangle that has it
-  std::vector<std::size_t> out_degree(n, 0);
-  for(std::size_t t = 0; t < triangles.size(); ++t)
-    for(int k = 0; k < 3; ++k)
-    {
-      const std::size_t u = triangles[t][k], v = triangles[t][(k + 1) % 3];
-      if(u >= n || v >= n || u == v) return false;
-      if(!triangle_of.emplace(Edge(u, v), t).second) return false; // an edge twice the same way
-      ++out_degree[u];
-    }
-  for(const auto& e : triangle_of)
-    if(triangle_of.count(Edge(e.first.second, e.first.first)) == 0) return false; // a border edge
-  // the triangles around each vertex one cycle: from the edge u -> v of a triangle (u, v, w), the next edge out of
-  // u is u -> w
-  std::vector<char> seen_vertex(n, 0);
-  for(const auto& e : triangle_of)
-  {
-    const std::size_t u = e.first.first;
-    if(seen_vertex[u]) continue;
-    seen_vertex[u] = 1;
-    std::size_t v = e.first.second, steps = 0;
-    do
-    {
-      const std::array<std::size_t, 3>& t = triangles[triangle_of.at(Edge(u, v))];
-      int k = 0;
-      while(t[k] != u) ++k;
-      v = t[(k + 2) % 3];
-      ++steps;
-    } while(v != e.first.second && steps <= out_degree[u]);
-    if(steps != out_degree[u]) return false; // a pinched vertex
-  }
-  for(std::size_t i = 0; i < n; ++i) if(!seen_vertex[i]) return false; // a point in no triangle
-  // connected
-  std::vector<std::size_t> parent(n);
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  auto find = [&](std::size_t x) { while(parent[x] != x) x = parent[x] = parent[parent[x]]; return x; };
-  std::size_t components = n;
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  typedef CGAL::Simple_cartesian<double>::Point_3 Point_3;
+  typedef CGAL::Surface_mesh<Point_3> Mesh;
   for(const auto& t : triangles)
-    for(int k = 1; k < 3; ++k)
-    {
-      const std::size_t a = find(t[0]), b = find(t[k]);
-      if(a != b) { parent[a] = b; --components; }
-    }
-  if(components != 1) return false;
-  const long chi = long(n) - long(triangle_of.size() / 2) + long(triangles.size());
-  return chi == 2;
+    for(std::size_t i : t) if(i >= points.size()) return false;
+  if(triangles.empty() || !PMP::is_polygon_soup_a_polygon_mesh(triangles)) return false;
+  std::vector<Point_3> p;
+  p.reserve(points.size());
+  for(const auto& q : points) p.emplace_back(q[0], q[1], q[2]);
+  Mesh mesh;
+  PMP::polygon_soup_to_polygon_mesh(p, triangles, mesh);
+  if(num_vertices(mesh) != points.size() || !CGAL::is_closed(mesh)) return false;
+  for(auto v : vertices(mesh)) if(mesh.is_isolated(v)) return false;
+  auto component = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:component", 0).first;
+  if(PMP::connected_components(mesh, component) != 1) return false;
+  return long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh)) == 2;
 }
 
 // `origin[i]`: the vertex of the closed mesh A and of B that point i is (-1 when it is none). The points on the
@@ -123,9 +98,9 @@ inline Error_code weld_cut_overlay(std::vector<std::array<double, 3> >& on_a, st
   std::vector<std::array<std::size_t, 3> > welded_triangles(triangles.size());
   for(std::size_t t = 0; t < triangles.size(); ++t)
     for(int k = 0; k < 3; ++k) welded_triangles[t][k] = target[triangles[t][k]];
-  if(!is_closed_genus_zero_soup(next, welded_triangles)) { welded = 0; return ERROR_INVALID_EMBEDDING; }
   std::vector<std::array<double, 3> > a(next), b(next);
   for(std::size_t j = 0; j < next; ++j) { a[j] = on_a[kept[j]]; b[j] = on_b[kept[j]]; }
+  if(!is_closed_genus_zero_soup(a, welded_triangles)) { welded = 0; return ERROR_INVALID_EMBEDDING; }
   on_a.swap(a);
   on_b.swap(b);
   triangles.swap(welded_triangles);

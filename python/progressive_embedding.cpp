@@ -855,6 +855,7 @@ py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::objec
   }
   info["matched_b"] = st.matched_b;
   info["matched_status"] = PE::get_error_name(st.matched_status);
+  info["matched_more_distorted"] = st.matched_more_distorted;
   info["vertices_added_b"] = st.vertices_added_b;
   info["seconds_total"] = st.seconds_total;
   info["certificate_a"] = report_dict(st.report_a);
@@ -988,7 +989,8 @@ PYBIND11_MODULE(progressive_embedding, m)
     "A certified map between two disks A = (V_a, F_a) and B = (V_b, F_b) taking every landmark of A exactly\n"
     "onto its partner in B, as `pe cross`: both disks are mapped onto the unit square, B by the certified\n"
     "pipeline, then (matched=True, with interior landmarks) again with its landmarks pinned where that map\n"
-    "put them, as A's is (info 'matched_b', 'matched_status', 'vertices_added_b': B's map is then on a copy of\n"
+    "put them, as A's is (info 'matched_b', 'matched_status', 'matched_more_distorted': kept only if its mean\n"
+    "energy is at most 5% above the first map's, 'vertices_added_b': B's map is then on a copy of\n"
     "B refined by that many vertices, the locations still in B's faces), A with its landmarks pinned at\n"
     "their partners' uv (constrained_embedding(), on a refined copy\n"
     "of A), then (composed=True) optimized for the distortion of the composed map A -> B (info 'composed_status',\n"

@@ -210,6 +210,7 @@ int cmd_cross(const Arguments& a)
   }
   run.result.add("matched_b", st.matched_b);
   run.result.add("matched_status", PE::get_error_name(st.matched_status));
+  run.result.add("matched_more_distorted", st.matched_more_distorted);
   run.result.add("vertices_added_b", st.vertices_added_b);
   run.result.add("seconds_location", st.seconds_location);
 

@@ -257,6 +257,10 @@ struct Cross_parameterization_statistics
   /// the status of `constrained_embedding()` for that map (`OK` when it was not made); on another status, or when
   /// its map is not certified (`ERROR_INVALID_EMBEDDING`), B's first map is kept
   Error_code matched_status = OK;
+  /// `true` when that map was made and certified but its mean distortion energy (`Embedding_report::mean_energy_3d`)
+  /// is more than 5% above that of B's first map, which has the same border and the same landmark positions: it went
+  /// around the landmarks another way, and B's first map is kept (`matched_b` is then `false`)
+  bool matched_more_distorted = false;
   /// vertices added to B's copy by that `constrained_embedding()` and kept after its coarsening: B's map is then on
   /// the refined copy, whose added vertices lie on B's faces (B itself is not changed; its vertices are still
   /// located in A's map and every location is written in B's faces)
@@ -272,6 +276,15 @@ template <class TriangleMeshB>
 using Cross_location = CGAL::Polygon_mesh_processing::Face_location<TriangleMeshB, double>;
 
 namespace internal {
+
+// whether B's matched map may replace its first map: both certified, with the same border and landmark positions;
+// the matched map's mean energy at most 5% above the first's (reports without 3D energies are not compared)
+inline bool matched_map_acceptable(const Embedding_report& first, const Embedding_report& matched)
+{
+  if(!first.has_3d_energy || !matched.has_3d_energy || !std::isfinite(first.mean_energy_3d)) return true;
+  return matched.mean_energy_3d <= 1.05 * first.mean_energy_3d;
+}
+
 
 // What the function on two closed meshes asks of the one on their cut disks (the named parameter cut_request):
 // the borders placed on the square (internal/cross/cut_border.h), and with `compatible` the triangulated overlay as
@@ -578,7 +591,9 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 /// of one surface this lowers the correspondence error (see the user manual). If Steiner vertices remain in B's copy
 /// after the coarsening (`Cross_parameterization_statistics::vertices_added_b`), B's map is on the refined copy: the
 /// vertices of A are located in it and their locations written in the faces of B holding the refined faces. If that
-/// map fails (`Cross_parameterization_statistics::matched_status`), B's first map is kept. Then,
+/// map fails (`Cross_parameterization_statistics::matched_status`), or if its mean distortion energy is more than 5%
+/// above the first map's (which has the same border and pins: the matched map then went around the landmarks another
+/// way, `Cross_parameterization_statistics::matched_more_distorted`), B's first map is kept. Then,
 /// unless `composed_distortion` is `false`, A's map is optimized once more (border and landmarks fixed) for the
 /// distortion of the composed map: each face of A's copy is measured against B's surface instead of the plane, through
 /// the inverse Jacobian of B's map on the face of B that holds the face's uv centroid, so that the energy is the
@@ -1027,8 +1042,13 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   internal::run_pair<ConcurrencyTag>(a_task, matched_task);
   const double after_tasks = timer.time();
   ec = ec_a;
-  // B's matched map, made and certified, replaces the first one
-  if(matched_ran && stats.matched_status == OK)
+  // B's matched map, made and certified, replaces the first one, unless it is more distorted: the first map has the
+  // same border and the same pins, so a matched map well above its energy went around the landmarks another way (a
+  // region wound around them), which A's map, made the other way, does not follow: the composition would carry a gross
+  // error there (seen on two meshes of one statue with 50 landmarks: 2.5% of the diagonal on average, 26% at most)
+  if(matched_ran && stats.matched_status == OK && !internal::matched_map_acceptable(stats.report_b, matched_report))
+    stats.matched_more_distorted = true;
+  if(matched_ran && stats.matched_status == OK && !stats.matched_more_distorted)
   {
     stats.matched_b = true;
     stats.vertices_added_b = work_b.number_of_vertices() - disk_b.number_of_vertices();

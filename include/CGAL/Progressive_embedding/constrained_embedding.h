@@ -259,7 +259,8 @@ namespace Progressive_embedding {
 ///         `ERROR_NON_MANIFOLD`, `ERROR_NOT_A_DISK` (closed mesh), `ERROR_NOT_GENUS_ZERO` (a border, but not a
 ///         connected genus-0 surface), `ERROR_BORDER_TOO_SHORT`), the border errors (`ERROR_NON_CONVEX_BORDER` for a
 ///         border shape, `ERROR_NOT_SELF_OVERLAPPING`, `ERROR_DEGENERATE_BORDER`), `ERROR_WRONG_PARAMETER` (a constrained vertex that is not a vertex of `tm`, a
-///         named parameter out of range), `ERROR_NON_FINITE_COORDINATES`, `ERROR_CONSTRAINT_ON_BORDER`,
+///         named parameter out of range), `ERROR_NON_FINITE_COORDINATES` (a 3D point, a target or a fixed border
+///         position NaN or infinite), `ERROR_CONSTRAINT_ON_BORDER`,
 ///         `ERROR_DUPLICATE_CONSTRAINT` (a vertex or a target given twice), `ERROR_CONSTRAINT_OUTSIDE_DOMAIN`,
 ///         `ERROR_BUDGET_EXHAUSTED` (time or Steiner budget), `ERROR_PATH_TRACING_FAILED`, the errors of the patch
 ///         embeddings (`ERROR_DEGENERATE_CHORD`, `ERROR_COLLAPSE_FAILED`, `ERROR_INSERTION_FAILED`, ...), or

@@ -28,6 +28,7 @@
 #include <CGAL/Progressive_embedding/certified_pipeline.h>
 #include <CGAL/Progressive_embedding/constrained_embedding.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
+#include <CGAL/Progressive_embedding/internal/number_utils.h>
 #include <CGAL/Progressive_embedding/internal/parallel_for.h>
 #include <CGAL/Progressive_embedding/internal/cross/certify_overlay.h>
 #include <CGAL/Progressive_embedding/internal/cross/common_border.h>
@@ -56,7 +57,6 @@
 #include <iterator>
 #include <limits>
 #include <map>
-#include <numeric>
 #include <type_traits>
 #include <unordered_map>
 #include <unordered_set>
@@ -277,6 +277,18 @@ using Cross_location = CGAL::Polygon_mesh_processing::Face_location<TriangleMesh
 
 namespace internal {
 
+// whether every 3D point of `tm` is finite: the border's arc lengths, the landmark paths and the distortion read them
+template <class TriangleMesh>
+bool points_are_finite(const TriangleMesh& tm)
+{
+  for(auto v : vertices(tm))
+  {
+    const auto& p = get(CGAL::vertex_point, tm, v);
+    if(!is_finite_ft(p.x()) || !is_finite_ft(p.y()) || !is_finite_ft(p.z())) return false;
+  }
+  return true;
+}
+
 // whether B's matched map may replace its first map: both certified, with the same border and landmark positions;
 // the matched map's mean energy at most 5% above the first's (reports without 3D energies are not compared)
 inline bool matched_map_acceptable(const Embedding_report& first, const Embedding_report& matched)
@@ -284,7 +296,6 @@ inline bool matched_map_acceptable(const Embedding_report& first, const Embeddin
   if(!first.has_3d_energy || !matched.has_3d_energy || !std::isfinite(first.mean_energy_3d)) return true;
   return matched.mean_energy_3d <= 1.05 * first.mean_energy_3d;
 }
-
 
 // What the function on two closed meshes asks of the one on their cut disks (the named parameter cut_request):
 // the borders placed on the square (internal/cross/cut_border.h), and with `compatible` the triangulated overlay as
@@ -743,7 +754,8 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 /// \return `OK` with every vertex of A located and both maps certified; otherwise, with nothing written to `out`:
 ///         the mesh errors of `tutte_embedding()` for either mesh (`ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH`,
 ///         `ERROR_NON_MANIFOLD`, `ERROR_NOT_A_DISK`, also for a closed mesh against a disk;
-///         `Cross_parameterization_statistics::failed_mesh` says which), for closed meshes `ERROR_NOT_GENUS_ZERO`
+///         `Cross_parameterization_statistics::failed_mesh` says which), `ERROR_NON_FINITE_COORDINATES` (a NaN or
+///         infinite 3D point; `failed_mesh` says which mesh), for closed meshes `ERROR_NOT_GENUS_ZERO`
 ///         and `ERROR_PATH_TRACING_FAILED` (the chain of landmarks cannot go on without crossing itself; with
 ///         `failed_landmark`),
 ///         `ERROR_BORDER_TOO_SHORT` (fewer than four border vertices; `failed_mesh` says which mesh), `ERROR_WRONG_PARAMETER` (a landmark vertex
@@ -834,6 +846,8 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   stats.faces_a = disk_a.number_of_faces();
   stats.vertices_b = disk_b.number_of_vertices();
   stats.faces_b = disk_b.number_of_faces();
+  if(!internal::points_are_finite(tm_a)) { stats.failed_mesh = 0; return finish(ERROR_NON_FINITE_COORDINATES); }
+  if(!internal::points_are_finite(tm_b)) { stats.failed_mesh = 1; return finish(ERROR_NON_FINITE_COORDINATES); }
   std::unordered_map<vertex_a, std::size_t, boost::hash<vertex_a> > index_a;
   std::unordered_map<vertex_b, std::size_t, boost::hash<vertex_b> > index_b;
   for(std::size_t i = 0; i < disk_a.vertices.size(); ++i) index_a.emplace(disk_a.vertices[i], i);
@@ -1048,7 +1062,7 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   // error there (seen on two meshes of one statue with 50 landmarks: 2.5% of the diagonal on average, 26% at most)
   if(matched_ran && stats.matched_status == OK && !internal::matched_map_acceptable(stats.report_b, matched_report))
     stats.matched_more_distorted = true;
-  if(matched_ran && stats.matched_status == OK && !stats.matched_more_distorted)
+  else if(matched_ran && stats.matched_status == OK)
   {
     stats.matched_b = true;
     stats.vertices_added_b = work_b.number_of_vertices() - disk_b.number_of_vertices();
@@ -1241,17 +1255,19 @@ namespace internal {
 
 // A location on a cut disk brought back to the closed mesh it was cut from: the corners of the disk's face, in the
 // order of the location, as vertices of the mesh (a point `i >= cut.vertices.size()`, the midpoint of a split chord
-// `midpoint[i - cut.vertices.size()]`, gives half its weight to each end), in the mesh's face that holds the disk's
-// face (`face[disk face]` indexes `cut.faces`)
+// `(*midpoint)[i - cut.vertices.size()]`, gives half its weight to each end), in the mesh's face that holds the disk's
+// face (`(*face)[disk face]` indexes `cut.faces`). Null `face` and `midpoint`: the disk is the cut itself (its faces
+// in `cut.faces` order, no chord split).
 template <class TriangleMesh, class Disk>
 Cross_location<TriangleMesh> location_on_closed_mesh(const TriangleMesh& tm, const Cut_disk<TriangleMesh>& cut,
-                                                     const std::vector<std::size_t>& face,
-                                                     const std::vector<std::array<std::size_t, 2> >& midpoint,
+                                                     const std::vector<std::size_t>* face,
+                                                     const std::vector<std::array<std::size_t, 2> >* midpoint,
                                                      const Disk& disk, const Cross_location<Disk>& l)
 {
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex;
   const std::size_t n_cut = cut.vertices.size();
-  const auto f = cut.faces[face[std::size_t(l.first)]];
+  const std::size_t disk_face = std::size_t(l.first);
+  const auto f = cut.faces[face != nullptr ? (*face)[disk_face] : disk_face];
   const auto hc = halfedge(l.first, disk);
   const std::size_t cut_corner[3] = { std::size_t(source(hc, disk)), std::size_t(target(hc, disk)),
                                       std::size_t(target(next(hc, disk), disk)) };
@@ -1265,7 +1281,8 @@ Cross_location<TriangleMesh> location_on_closed_mesh(const TriangleMesh& tm, con
   for(int k = 0; k < 3; ++k)
   {
     if(cut_corner[k] < n_cut) { add(cut_corner[k], l.second[k]); continue; }
-    const auto& m = midpoint[cut_corner[k] - n_cut];
+    CGAL_assertion(midpoint != nullptr);
+    const auto& m = (*midpoint)[cut_corner[k] - n_cut];
     add(m[0], l.second[k] / 2);
     add(m[1], l.second[k] / 2);
   }
@@ -1300,6 +1317,8 @@ Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const Triang
   constexpr bool backwards = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::b_to_a_locations_t>::value;
   const bool compatible = asks_for_meshes(np, internal_np::compatible_meshes);
 
+  if(!points_are_finite(tm_a)) { stats.failed_mesh = 0; return ERROR_NON_FINITE_COORDINATES; }
+  if(!points_are_finite(tm_b)) { stats.failed_mesh = 1; return ERROR_NON_FINITE_COORDINATES; }
   // the chain: the landmarks in their order, each vertex once
   std::vector<vertex_a> chain_a;
   std::vector<vertex_b> chain_b;
@@ -1481,15 +1500,12 @@ Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const Triang
   }
   // back to the faces of the closed meshes (A's cut disk has no midpoint and its faces are the cut's)
   for(vertex_a v : vertices(tm_a))
-    put(out, v, location_on_closed_mesh(tm_b, cut_b, soup_b.face, soup_b.midpoint, disk_b, located[index_a.at(v)]));
+    put(out, v, location_on_closed_mesh(tm_b, cut_b, &soup_b.face, &soup_b.midpoint, disk_b, located[index_a.at(v)]));
   if constexpr(backwards)
   {
-    std::vector<std::size_t> faces_a(cut_a.faces.size());
-    std::iota(faces_a.begin(), faces_a.end(), std::size_t(0));
-    const std::vector<std::array<std::size_t, 2> > no_midpoint;
     auto out_b = get_parameter(np, internal_np::b_to_a_locations);
     for(vertex_b v : vertices(tm_b))
-      put(out_b, v, location_on_closed_mesh(tm_a, cut_a, faces_a, no_midpoint, disk_a, located_b[index_b.at(v)]));
+      put(out_b, v, location_on_closed_mesh(tm_a, cut_a, nullptr, nullptr, disk_a, located_b[index_b.at(v)]));
     stats.located_b_on_a = num_vertices(tm_b);
   }
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::compatible_meshes_t>::value)

@@ -548,6 +548,22 @@ PE_TEST_GROUP(constrained_embedding_errors)
   { auto c = C; c[1].second = Point_2(std::numeric_limits<double>::quiet_NaN(), 0.5); RUN(expect(c, PE::ERROR_NON_FINITE_COORDINATES, "NaN target", 1)); }
   { auto c = C; c[1].second = Point_2(5, 5); RUN(expect(c, PE::ERROR_CONSTRAINT_OUTSIDE_DOMAIN, "target outside", 1)); }
   { auto c = C; c[2].second = get(uv, bv); RUN(expect(c, PE::ERROR_CONSTRAINT_OUTSIDE_DOMAIN, "target on the border", 2)); }
+  {
+    // a NaN 3D point (an interior vertex, not constrained): bad input, not a path that cannot be traced
+    Surface_mesh m2 = m;
+    auto uvn = make_uv_map(m2, Point_2());
+    for(auto v : vertices(m2)) put(uvn, v, get(uv, v));
+    for(auto v : vertices(m2))
+      if(!CGAL::is_border(v, m2) && v != C[0].first && v != C[1].first && v != C[2].first)
+      {
+        m2.point(v) = Epick::Point_3(std::numeric_limits<double>::quiet_NaN(), 0, 0);
+        break;
+      }
+    PE::Constrained_embedding_statistics st;
+    const PE::Error_code ec = PE::constrained_embedding(m2, C, uvn, PE::parameters::statistics(&st));
+    std::cout << "NaN 3D point: " << PE::get_error_message(ec) << std::endl;
+    CHECK(ec == PE::ERROR_NON_FINITE_COORDINATES && st.failed_constraint == std::size_t(-1), "a NaN 3D point refused");
+  }
 
   {
     // a fixed border on a figure eight (turning number 0): it bounds no immersed disk (non-convex simple

@@ -32,6 +32,7 @@
 #include <array>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -709,9 +710,20 @@ int closed_surfaces(const std::string& data_dir)
     ec = PE::cross_parameterization(a, b, std::vector<std::pair<vd, vd> >(1, landmarks[0]), boost::make_assoc_property_map(none),
                                     PE::parameters::statistics(&st));
     CHECK(ec == PE::ERROR_WRONG_PARAMETER && none.empty(), "one landmark refused: " << PE::get_error_name(ec));
+    // B read again with a NaN point: its landmarks are its vertices at the same positions in the file
+    Mesh nan_b;
+    CHECK(CGAL::IO::read_polygon_mesh(file, nan_b), "read " << file);
+    const std::vector<vd> vn(vertices(nan_b).begin(), vertices(nan_b).end());
+    std::unordered_map<vd, std::size_t, boost::hash<vd> > index_b;
+    for(std::size_t i = 0; i < vb.size(); ++i) index_b[vb[i]] = i;
+    std::vector<std::pair<vd, vd> > landmarks_n;
+    for(const auto& l : landmarks) landmarks_n.emplace_back(l.first, vn[index_b.at(l.second)]);
+    put(get(CGAL::vertex_point, nan_b), vn[7], Epick::Point_3(std::numeric_limits<double>::quiet_NaN(), 0, 0));
+    ec = PE::cross_parameterization(a, nan_b, landmarks_n, boost::make_assoc_property_map(none), PE::parameters::statistics(&st));
+    CHECK(ec == PE::ERROR_NON_FINITE_COORDINATES && st.failed_mesh == 1 && none.empty(), "a NaN point refused: " << PE::get_error_name(ec));
   }
   std::cout << "closed surfaces refused: genus 3 (ERROR_NOT_GENUS_ZERO), closed against a disk (ERROR_NOT_A_DISK), "
-            << "one landmark (ERROR_WRONG_PARAMETER)" << std::endl;
+            << "one landmark (ERROR_WRONG_PARAMETER), a NaN point in B (ERROR_NON_FINITE_COORDINATES)" << std::endl;
   return EXIT_SUCCESS;
 }
 
@@ -771,6 +783,19 @@ int errors(const std::string& data_dir)
     CGAL::make_triangle(Epick::Point_3(0, 0, 0), Epick::Point_3(1, 0, 0), Epick::Point_3(0, 1, 0), tri);
     RUN(run(tri, b, {}, PE::ERROR_BORDER_TOO_SHORT, none, 0, "A with three border vertices"));
     RUN(run(a, tri, {}, PE::ERROR_BORDER_TOO_SHORT, none, 1, "B with three border vertices"));
+  }
+  {
+    // a NaN 3D point inside A, an infinite one on B's border (not a path that cannot be traced)
+    Mesh nan_a, inf_b;
+    PE::internal::make_grid_disk(6, nan_a);
+    PE::internal::make_grid_disk(6, inf_b);
+    const std::vector<vd> in_nan = interior_vertices(nan_a), in_inf = interior_vertices(inf_b);
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    put(get(CGAL::vertex_point, nan_a), in_nan[in_nan.size() / 2], Epick::Point_3(nan, 0, 0));
+    for(auto v : vertices(inf_b))
+      if(CGAL::is_border(v, inf_b)) { put(get(CGAL::vertex_point, inf_b), v, Epick::Point_3(0, inf, 0)); break; }
+    RUN(run(nan_a, b, { { in_nan[0], ib[0] } }, PE::ERROR_NON_FINITE_COORDINATES, none, 0, "a NaN point in A"));
+    RUN(run(a, inf_b, { { ia[0], in_inf[0] } }, PE::ERROR_NON_FINITE_COORDINATES, none, 1, "an infinite point on B's border"));
   }
   {
     PE::Cross_parameterization_statistics st;

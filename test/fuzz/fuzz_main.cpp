@@ -30,7 +30,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 #include "pe_lines.h"
 #include "check_embedding.h"
 #include "check_immersion.h"
-#include "cross_parameterization.h"
 #include "progressive_embedding.h"
 #include "triangulate_polygon.h"
 
@@ -58,7 +57,6 @@ const Target targets[] = {
   { "pe_polygon_lines", &pe_fuzz::pe_polygon_lines },
   { "check_embedding", &pe_fuzz::check_embedding },
   { "check_immersion", &pe_fuzz::check_immersion },
-  { "cross_parameterization", &pe_fuzz::cross_parameterization },
   { "progressive_embedding", &pe_fuzz::progressive_embedding },
   { "triangulate_polygon", &pe_fuzz::triangulate_polygon },
 };

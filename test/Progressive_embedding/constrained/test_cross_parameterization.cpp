@@ -17,6 +17,7 @@
 #include "registry.h"
 #include "../test_util.h"
 #include "mesh_fixtures.h"
+#include "../../fuzz/cross_parameterization.h"
 
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
@@ -31,7 +32,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <set>
@@ -1135,6 +1139,27 @@ PE_TEST_GROUP(cross_errors)
 {
   RUN(errors<Surface_mesh>(data_dir));
   RUN(errors<Polyhedron>(data_dir));
+  return EXIT_SUCCESS;
+}
+
+// The corpus of the fuzz target (test/fuzz/cross_parameterization.h) replayed: DATA_DIR is the corpus folder
+// (test/fuzz/CMakeLists.txt registers it as ctest's fuzz_cross_parameterization); a finding aborts with its message.
+PE_TEST_GROUP(fuzz_cross_parameterization)
+{
+  std::vector<std::string> files;
+  std::error_code error;
+  for(const auto& e : std::filesystem::directory_iterator(data_dir, error))
+    if(e.is_regular_file() && e.path().filename().string()[0] != '.') files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  CHECK(!error && !files.empty(), "no input in " << data_dir);
+  for(const std::string& f : files)
+  {
+    std::ifstream in(f, std::ios::binary);
+    const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    CHECK(in.good() || in.eof(), "read " << f);
+    pe_fuzz::cross_parameterization(bytes.data(), bytes.size());
+  }
+  std::cout << "cross_parameterization: " << files.size() << " inputs replayed, no finding" << std::endl;
   return EXIT_SUCCESS;
 }
 

@@ -277,18 +277,6 @@ using Cross_location = CGAL::Polygon_mesh_processing::Face_location<TriangleMesh
 
 namespace internal {
 
-// whether every 3D point of `tm` is finite: the border's arc lengths, the landmark paths and the distortion read them
-template <class TriangleMesh>
-bool points_are_finite(const TriangleMesh& tm)
-{
-  for(auto v : vertices(tm))
-  {
-    const auto& p = get(CGAL::vertex_point, tm, v);
-    if(!is_finite_ft(p.x()) || !is_finite_ft(p.y()) || !is_finite_ft(p.z())) return false;
-  }
-  return true;
-}
-
 // whether B's matched map may replace its first map: both certified, with the same border and landmark positions;
 // the matched map's mean energy at most 5% above the first's (reports without 3D energies are not compared)
 inline bool matched_map_acceptable(const Embedding_report& first, const Embedding_report& matched)
@@ -846,8 +834,8 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   stats.faces_a = disk_a.number_of_faces();
   stats.vertices_b = disk_b.number_of_vertices();
   stats.faces_b = disk_b.number_of_faces();
-  if(!internal::points_are_finite(tm_a)) { stats.failed_mesh = 0; return finish(ERROR_NON_FINITE_COORDINATES); }
-  if(!internal::points_are_finite(tm_b)) { stats.failed_mesh = 1; return finish(ERROR_NON_FINITE_COORDINATES); }
+  if(!internal::points_are_finite(tm_a, get(CGAL::vertex_point, tm_a))) { stats.failed_mesh = 0; return finish(ERROR_NON_FINITE_COORDINATES); }
+  if(!internal::points_are_finite(tm_b, get(CGAL::vertex_point, tm_b))) { stats.failed_mesh = 1; return finish(ERROR_NON_FINITE_COORDINATES); }
   std::unordered_map<vertex_a, std::size_t, boost::hash<vertex_a> > index_a;
   std::unordered_map<vertex_b, std::size_t, boost::hash<vertex_b> > index_b;
   for(std::size_t i = 0; i < disk_a.vertices.size(); ++i) index_a.emplace(disk_a.vertices[i], i);
@@ -1317,8 +1305,8 @@ Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const Triang
   constexpr bool backwards = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::b_to_a_locations_t>::value;
   const bool compatible = asks_for_meshes(np, internal_np::compatible_meshes);
 
-  if(!points_are_finite(tm_a)) { stats.failed_mesh = 0; return ERROR_NON_FINITE_COORDINATES; }
-  if(!points_are_finite(tm_b)) { stats.failed_mesh = 1; return ERROR_NON_FINITE_COORDINATES; }
+  if(!points_are_finite(tm_a, get(CGAL::vertex_point, tm_a))) { stats.failed_mesh = 0; return ERROR_NON_FINITE_COORDINATES; }
+  if(!points_are_finite(tm_b, get(CGAL::vertex_point, tm_b))) { stats.failed_mesh = 1; return ERROR_NON_FINITE_COORDINATES; }
   // the chain: the landmarks in their order, each vertex once
   std::vector<vertex_a> chain_a;
   std::vector<vertex_b> chain_b;

@@ -81,6 +81,18 @@ inline bool is_finite_ft(const FT& x)
     return true; // exact rationals are always finite
 }
 
+// whether every 3D point of `tm` (read through `vpm`) is finite: lengths, paths and distortions read them
+template <class TriangleMesh, class VertexPointMap>
+bool points_are_finite(const TriangleMesh& tm, VertexPointMap vpm)
+{
+  for(auto v : vertices(tm))
+  {
+    const auto& p = get(vpm, v);
+    if(!is_finite_ft(p.x()) || !is_finite_ft(p.y()) || !is_finite_ft(p.z())) return false;
+  }
+  return true;
+}
+
 // exact conversion to a rational, for certification.
 inline CGAL::Gmpq to_rational(double d) { return CGAL::Gmpq(d); }
 inline CGAL::Gmpq to_rational(float d) { return CGAL::Gmpq(double(d)); }

@@ -488,12 +488,7 @@ public:
     if(ec != OK) return ec;
     // the 3D points give the paths' lengths and the distortion: a NaN or infinite one is bad input, not a path
     // that cannot be traced
-    for(vertex_descriptor v : vertices(tm))
-    {
-      const auto& p = get(vpm, v);
-      if(!internal::is_finite_ft(p.x()) || !internal::is_finite_ft(p.y()) || !internal::is_finite_ft(p.z()))
-        return ERROR_NON_FINITE_COORDINATES;
-    }
+    if(!internal::points_are_finite(tm, vpm)) return ERROR_NON_FINITE_COORDINATES;
     nv = disk.number_of_vertices();
     nb = disk.border.size();
     if(nb < 3) return ERROR_BORDER_TOO_SHORT;

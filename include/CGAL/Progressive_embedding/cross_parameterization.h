@@ -30,6 +30,7 @@
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 #include <CGAL/Progressive_embedding/internal/number_utils.h>
 #include <CGAL/Progressive_embedding/internal/parallel_for.h>
+#include <CGAL/Progressive_embedding/internal/scaling.h>
 #include <CGAL/Progressive_embedding/internal/cross/certify_overlay.h>
 #include <CGAL/Progressive_embedding/internal/cross/common_border.h>
 #include <CGAL/Progressive_embedding/internal/cross/composed_distortion.h>
@@ -217,7 +218,9 @@ struct Cross_parameterization_statistics
   /// closed meshes: edges of B on the cut
   std::size_t cut_edges_b = 0;
   /// closed meshes: edges of B's cut disk joining two of its border vertices (where two paths of the cut run side by
-  /// side) split at their midpoints, when B's map had failed with `ERROR_DEGENERATE_CHORD` (0 otherwise)
+  /// side) split at their midpoints, when B's map had failed with `ERROR_DEGENERATE_CHORD`; two disks: edges of B
+  /// joining two border vertices of one side of the square, split by B's first map made on a copy of B
+  /// (`constrained_embedding()`), when B itself had no valid map (`ERROR_DEGENERATE_CHORD`); 0 otherwise
   std::size_t chords_split_b = 0;
   /// closed meshes with `compatible_meshes`: vertices of the cut disks' overlay on the cut, joined two by two (the
   /// same vertex of A or of B on both sides of the cut) into one vertex of the compatible meshes
@@ -233,7 +236,8 @@ struct Cross_parameterization_statistics
   Embedding_report report_b;
   /// the certificate of A's map, on A's refined copy (`check_embedding()`)
   Embedding_report report_a;
-  /// what `parameterize_certified()` did for B's map
+  /// what `parameterize_certified()` did for B's map (when it failed with `ERROR_DEGENERATE_CHORD`, B's first map
+  /// was made on a refined copy instead: `chords_split_b`)
   Pipeline_statistics map_b;
   /// what `constrained_embedding()` did for A's map
   Constrained_embedding_statistics map_a;
@@ -261,8 +265,9 @@ struct Cross_parameterization_statistics
   /// is more than 5% above that of B's first map, which has the same border and the same landmark positions: it went
   /// around the landmarks another way, and B's first map is kept (`matched_b` is then `false`)
   bool matched_more_distorted = false;
-  /// vertices added to B's copy by that `constrained_embedding()` and kept after its coarsening: B's map is then on
-  /// the refined copy, whose added vertices lie on B's faces (B itself is not changed; its vertices are still
+  /// vertices added to B's copy by that `constrained_embedding()` and kept after its coarsening (or, when B's first
+  /// map is kept and was made on a refined copy, `chords_split_b`, the vertices added to that copy): B's map is then
+  /// on the refined copy, whose added vertices lie on B's faces (B itself is not changed; its vertices are still
   /// located in A's map and every location is written in B's faces)
   std::size_t vertices_added_b = 0;
 };
@@ -578,7 +583,12 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 /// to the relative positions of B's corners within the arcs between border landmarks).
 ///
 /// B is mapped first, unchanged: Tutte's map of the square border, repaired by progressive embedding if it is not
-/// valid in floating point, then optimized (`parameterize_certified()` with `Optimization_policy::ALWAYS`). The uv of
+/// valid in floating point, then optimized (`parameterize_certified()` with `Optimization_policy::ALWAYS`). Where no
+/// placement of the corners keeps every such edge of B off the sides (e.g. five ears, the edge around each tip
+/// needing a corner at the tip), B itself has no valid map (`ERROR_DEGENERATE_CHORD`): B's first map is then made
+/// on a `Surface_mesh` copy of B by `constrained_embedding()` without landmarks, which splits the flat edges at
+/// Steiner vertices (`Cross_parameterization_statistics::chords_split_b`), and B's map is on that refined copy as
+/// below (`Cross_parameterization_statistics::vertices_added_b`). The uv of
 /// B's landmarks are the targets of A's map: a `Surface_mesh` copy of A is mapped by `constrained_embedding()` with
 /// each landmark of A pinned bit-exactly at the uv of its partner; the copy is refined by Steiner vertices where the
 /// landmark paths need them (`Cross_parameterization_statistics::vertices_added_a`), A itself is not changed.
@@ -968,7 +978,37 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
       parameters::optimization_policy(Optimization_policy::ALWAYS,
         parameters::pipeline_statistics(&stats.map_b,
           CGAL::parameters::maximum_running_time(remaining())))));
-  stats.report_b = check_embedding(tm_b, uv_b);
+  // An interior edge of B joining two border vertices of one side of the square (no placement of the corners kept
+  // it off) is flat in every map of B itself: B's first map is then made on a copy of B by constrained_embedding()
+  // without landmarks, which splits such edges at Steiner vertices. The cut disks of two closed meshes split them
+  // their own way (cross_parameterization_closed()).
+  Work_b first_b;
+  std::unordered_map<vertex_b, wbvertex, boost::hash<vertex_b> > to_first_b;
+  auto uv_first_b = first_b.template add_property_map<wbvertex, Point_2>("v:pe_cross_uv_first_b", Point_2(0, 0)).first;
+  std::vector<Steiner_point<wbvertex> > steiner_first_b;
+  bool first_refined = false;
+  constexpr bool cut_disks = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::cut_request_t>::value;
+  if(ec == ERROR_DEGENERATE_CHORD && !cut_disks)
+  {
+    std::vector<std::pair<vertex_b, wbvertex> > v2v_first;
+    CGAL::copy_face_graph(tm_b, first_b, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v_first)));
+    to_first_b.insert(v2v_first.begin(), v2v_first.end());
+    for(std::size_t k = 0; k < disk_b.border.size(); ++k) uv_first_b[to_first_b.at(disk_b.vertices[disk_b.border[k]])] = border_uv_b[k];
+    Constrained_embedding_statistics first_stats;
+    ec = constrained_embedding(first_b, std::vector<std::pair<wbvertex, Point_2> >(), uv_first_b,
+      parameters::steiner_points(&steiner_first_b,
+      parameters::border_shape(Border_shape::FIXED,
+        parameters::optimization_time_limit((std::min)(optimization_seconds, remaining()),
+          parameters::statistics(&first_stats,
+            CGAL::parameters::maximum_running_time(remaining()))))));
+    first_refined = true;
+    stats.chords_split_b = first_stats.chord_splits;
+  }
+  stats.report_b = first_refined ? check_embedding(first_b, uv_first_b) : check_embedding(tm_b, uv_b);
+  // the uv of vertex `i` of disk_b in B's first map
+  auto first_uv = [&](std::size_t i) {
+    return first_refined ? uv_first_b[to_first_b.at(disk_b.vertices[i])] : get(uv_b, disk_b.vertices[i]);
+  };
   if(ec != OK || !stats.report_b.is_valid())
   {
     stats.seconds_map_b = timer.time() - stats.seconds_validation;
@@ -996,17 +1036,20 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
     CGAL::copy_face_graph(tm_b, work_b, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v_b)));
     to_work_b.insert(v2v_b.begin(), v2v_b.end());
     for(std::size_t k = 0; k < disk_b.border.size(); ++k) uv_wb[to_work_b[disk_b.vertices[disk_b.border[k]]]] = border_uv_b[k];
-    for(const auto& p : pairs) pins.emplace_back(to_work_b[disk_b.vertices[p.second]], get(uv_b, disk_b.vertices[p.second]));
+    for(const auto& p : pairs) pins.emplace_back(to_work_b[disk_b.vertices[p.second]], first_uv(p.second));
   }
   Work work;
   std::vector<std::pair<vertex_a, wvertex> > v2v;
   CGAL::copy_face_graph(tm_a, work, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v)));
   std::unordered_map<vertex_a, wvertex, boost::hash<vertex_a> > to_work(v2v.begin(), v2v.end());
+  // A's copy brought near unit size by an exact power of two when it is beyond 2^+-100 (its squared areas would
+  // overflow or underflow in the composed distortion); its points are scaled back where they are output
+  const auto scaling_a = internal::normalize_points_3(work);
   auto uv_a = work.template add_property_map<wvertex, Point_2>("v:pe_cross_uv", Point_2(0, 0)).first;
   for(std::size_t k = 0; k < disk_a.border.size(); ++k) uv_a[to_work[disk_a.vertices[disk_a.border[k]]]] = border_uv_a[k];
   std::vector<std::pair<wvertex, Point_2> > constraints;
   for(const auto& p : pairs)
-    constraints.emplace_back(to_work[disk_a.vertices[p.first]], get(uv_b, disk_b.vertices[p.second]));
+    constraints.emplace_back(to_work[disk_a.vertices[p.first]], first_uv(p.second));
   std::vector<Steiner_point<wvertex> > steiner;
   double seconds_matched = 0, seconds_constrained_a = 0;
   // each task writes only its own copy, uv map, Steiner list and statistics
@@ -1074,16 +1117,23 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
     }
     else stats.report_b = matched_report;
   }
-  const bool refined_b = stats.matched_b && stats.vertices_added_b > 0;
+  // B's first map, when it is kept and was made on a refined copy, is B's map from here on
+  const bool first_copy_kept = first_refined && !stats.matched_b;
+  if(first_copy_kept) stats.vertices_added_b = first_b.number_of_vertices() - disk_b.number_of_vertices();
+  const bool refined_b = (stats.matched_b && stats.vertices_added_b > 0) || first_copy_kept;
+  const Work_b& refined_mesh_b = first_copy_kept ? first_b : work_b;
+  const auto& refined_uv_b = first_copy_kept ? uv_first_b : uv_wb;
+  const auto& to_refined_b = first_copy_kept ? to_first_b : to_work_b;
+  const auto& refined_steiner_b = first_copy_kept ? steiner_first_b : steiner_b;
   // B's map as the rest uses it: on B, or on its refined copy (vertices, 3D points and faces in `side_b`'s order)
   internal::Indexed_disk<Work_b> side_b;
   std::vector<Point_2> side_uv;
   std::vector<Point_3b> side_points;
   if(refined_b)
   {
-    const Error_code es = internal::make_indexed_disk(work_b, boost::graph_traits<Work_b>::null_halfedge(), side_b);
+    const Error_code es = internal::make_indexed_disk(refined_mesh_b, boost::graph_traits<Work_b>::null_halfedge(), side_b);
     if(es != OK) { stats.failed_mesh = 1; return finish(es); } // cannot happen: a refined disk
-    for(wbvertex v : side_b.vertices) { side_uv.push_back(uv_wb[v]); side_points.push_back(work_b.point(v)); }
+    for(wbvertex v : side_b.vertices) { side_uv.push_back(refined_uv_b[v]); side_points.push_back(refined_mesh_b.point(v)); }
   }
   else
     for(vertex_b v : disk_b.vertices) { side_uv.push_back(get(uv_b, v)); side_points.push_back(get(vpm_b, v)); }
@@ -1098,8 +1148,11 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
     const double before_composed = timer.time();
     std::vector<wvertex> fixed;
     for(const auto& c : constraints) fixed.push_back(c.first);
+    // B's points for its metric only, near unit size like A's (the metric is the same up to rounding)
+    std::vector<Point_3b> metric_points(side_points);
+    internal::normalize_points_3(metric_points);
     stats.composed_status = internal::optimize_composed_distortion(work, uv_a, fixed,
-                              internal::inverse_map_metric(side_uv, side_points, side_faces),
+                              internal::inverse_map_metric(side_uv, metric_points, side_faces),
                               (std::min)(optimization_seconds, remaining()), stats.composed);
     stats.seconds_composed = timer.time() - before_composed;
   }
@@ -1112,7 +1165,7 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   const double before_location = timer.time();
   std::vector<Point_2> map_b(disk_b.number_of_vertices()), queries(disk_a.number_of_vertices());
   for(std::size_t i = 0; i < map_b.size(); ++i)
-    map_b[i] = refined_b ? uv_wb[to_work_b.at(disk_b.vertices[i])] : get(uv_b, disk_b.vertices[i]);
+    map_b[i] = refined_b ? refined_uv_b[to_refined_b.at(disk_b.vertices[i])] : get(uv_b, disk_b.vertices[i]);
   for(std::size_t i = 0; i < queries.size(); ++i) queries[i] = uv_a[to_work[disk_a.vertices[i]]];
   std::vector<face_b> faces_b;
   faces_b.reserve(disk_b.number_of_faces());
@@ -1121,7 +1174,7 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   if(refined_b)
   {
     // located in the refined copy's map, then written in the face of B holding the refined face
-    ec = internal::locate_on_refined_copy(tm_b, disk_b, work_b, uv_wb, to_work_b, steiner_b, queries, locations,
+    ec = internal::locate_on_refined_copy(tm_b, disk_b, refined_mesh_b, refined_uv_b, to_refined_b, refined_steiner_b, queries, locations,
                                           &stats.unlocated);
     if(ec != OK) return finish(ec);
   }
@@ -1181,11 +1234,13 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
     std::vector<wvertex> disk_a_in_work;
     if(origins != nullptr)
       for(vertex_a v : disk_a.vertices) disk_a_in_work.push_back(to_work[v]);
-    ec = refined_b ? internal::compatible_soups(work, uv_a, work_b, side_b, side_uv, stats, on_a, on_b, triangles)
+    ec = refined_b ? internal::compatible_soups(work, uv_a, refined_mesh_b, side_b, side_uv, stats, on_a, on_b, triangles)
                    : internal::compatible_soups(work, uv_a, tm_b, disk_b, map_b, stats, on_a, on_b, triangles, origins,
                                                 &disk_a_in_work);
     stats.seconds_compatible = timer.time() - before_overlay;
     if(ec != OK) return finish(ec);
+    if(scaling_a.exponent() != 0)
+      for(auto& p : on_a) for(double& x : p) x = std::ldexp(x, int(-scaling_a.exponent()));
   }
 
   // the planar maps as flat soups, A's vertices (then B's) first in their meshes' order
@@ -1200,9 +1255,9 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
     internal::planar_soup(work, uv_a, first_a, plane_a, plane_faces_a);
     if(refined_b)
     {
-      std::vector<wbvertex> first_b;
-      for(vertex_b v : disk_b.vertices) first_b.push_back(to_work_b.at(v));
-      internal::planar_soup(work_b, uv_wb, first_b, plane_b, plane_faces_b);
+      std::vector<wbvertex> order_b;
+      for(vertex_b v : disk_b.vertices) order_b.push_back(to_refined_b.at(v));
+      internal::planar_soup(refined_mesh_b, refined_uv_b, order_b, plane_b, plane_faces_b);
     }
     else
       internal::planar_soup(tm_b, uv_b, disk_b.vertices, plane_b, plane_faces_b);

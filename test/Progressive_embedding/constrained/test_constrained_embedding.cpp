@@ -564,6 +564,32 @@ PE_TEST_GROUP(constrained_embedding_errors)
     std::cout << "NaN 3D point: " << PE::get_error_message(ec) << std::endl;
     CHECK(ec == PE::ERROR_NON_FINITE_COORDINATES && st.failed_constraint == std::size_t(-1), "a NaN 3D point refused");
   }
+  {
+    // extreme sizes: the mesh scaled by 2^600 and by 2^-600, where squared 3D lengths overflow or underflow in
+    // double (path costs, arc lengths): the same map as the mesh's own, bit for bit (a power of two is exact)
+    Surface_mesh ref = m;
+    auto uvr = make_uv_map(ref, Point_2());
+    for(auto v : vertices(ref)) put(uvr, v, get(uv, v));
+    CHECK(PE::constrained_embedding(ref, C, uvr) == PE::OK, "the mesh itself");
+    for(const int e : { 600, -600 })
+    {
+      Surface_mesh ms = m;
+      auto uvs = make_uv_map(ms, Point_2());
+      for(auto v : vertices(ms))
+      {
+        put(uvs, v, get(uv, v));
+        const Epick::Point_3 p = ms.point(v);
+        ms.point(v) = Epick::Point_3(std::ldexp(p.x(), e), std::ldexp(p.y(), e), std::ldexp(p.z(), e));
+      }
+      PE::Constrained_embedding_statistics st;
+      const PE::Error_code ec = PE::constrained_embedding(ms, C, uvs, PE::parameters::statistics(&st));
+      CHECK(ec == PE::OK && st.report.is_valid(), "scaled by 2^" << e << ": " << PE::get_error_message(ec));
+      CHECK(ms.number_of_vertices() == ref.number_of_vertices(), "scaled by 2^" << e << ": the same refinement");
+      for(auto v : vertices(ref)) CHECK(get(uvs, v) == get(uvr, v), "scaled by 2^" << e << ": the same uv");
+      std::cout << "mesh scaled by 2^" << e << ": certified, " << ms.number_of_vertices()
+                << " vertices, every uv bit for bit that of the mesh itself" << std::endl;
+    }
+  }
 
   {
     // a fixed border on a figure eight (turning number 0): it bounds no immersed disk (non-convex simple

@@ -532,6 +532,80 @@ int fan_disks()
   return EXIT_SUCCESS;
 }
 
+// A decagon with five ears (each ear's inside edge joins two border vertices around the ear's tip) and a centre
+// vertex: the five tips would all have to be corners of the square, which has four, so whatever the corners one
+// inside edge of B has both ends on one side and B itself has no valid map (this gave ERROR_DEGENERATE_CHORD). B's first map is then made on a copy of B with that edge split; B's map is on the
+// refined copy, matched or not, and every location is still written in B's own faces. A == B and every vertex but
+// the centre on the border: with the centres as landmark, every vertex lands exactly on its own vertex.
+template <class Mesh>
+int eared_decagon(Mesh& m)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vd;
+  std::vector<vd> v;
+  for(int k = 0; k < 11; ++k)
+  {
+    v.push_back(add_vertex(m));
+    const double r = k == 10 ? 0. : 1 + 0.05 * (k % 3);
+    put(CGAL::vertex_point, m, v.back(), Epick::Point_3(r * std::cos(0.6283 * k), r * std::sin(0.6283 * k), 0.02 * (k % 4)));
+  }
+  for(int i = 0; i < 5; ++i)
+  {
+    CHECK(CGAL::Euler::add_face(std::vector<vd>{ v[2 * i], v[2 * i + 1], v[(2 * i + 2) % 10] }, m) != boost::graph_traits<Mesh>::null_face(), "ear");
+    CHECK(CGAL::Euler::add_face(std::vector<vd>{ v[2 * i], v[(2 * i + 2) % 10], v[10] }, m) != boost::graph_traits<Mesh>::null_face(), "inner face");
+  }
+  return EXIT_SUCCESS;
+}
+
+template <class Mesh>
+int eared_disks()
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vd;
+  Mesh a, b;
+  RUN(eared_decagon(a));
+  RUN(eared_decagon(b));
+  const vd centre_a = *std::next(vertices(a).begin(), 10), centre_b = *std::next(vertices(b).begin(), 10);
+  const std::vector<std::pair<vd, vd> > centres{ { centre_a, centre_b } }, none;
+  for(int variant = 0; variant < 3; ++variant) // the matched map, B's first map kept, no landmark
+  {
+    const bool matched = variant == 0;
+    const auto& landmarks = variant == 2 ? none : centres;
+    Location_map<Mesh> loc, back;
+    Mesh ca, cb;
+    PE::Cross_parameterization_statistics st;
+    const PE::Error_code ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(loc),
+      PE::parameters::b_to_a_locations(boost::make_assoc_property_map(back),
+        PE::parameters::matched_maps(matched, PE::parameters::compatible_meshes(std::make_pair(&ca, &cb),
+          PE::parameters::statistics(&st)))));
+    CHECK(ec == PE::OK, "variant " << variant << ": " << PE::get_error_message(ec) << " (failed mesh " << st.failed_mesh << ")");
+    CHECK(st.report_a.is_valid() && st.report_b.is_valid() && st.landmarks_exact, "certified, landmarks exact");
+    CHECK(st.chords_split_b >= 1 && st.vertices_added_b >= 1, "B's map on a refined copy: " << st.chords_split_b
+          << " edges split, " << st.vertices_added_b << " vertices added");
+    CHECK(st.matched_b == (variant == 0), "the matched map used when asked, with a landmark");
+    CHECK(loc.size() == 11 && back.size() == 11 && st.located_b_on_a == 11, "every vertex located both ways");
+    auto vb = vertices(b).begin();
+    int k = 0;
+    for(auto va = vertices(a).begin(); va != vertices(a).end(); ++va, ++vb, ++k)
+    {
+      if(variant == 2 && *va == centre_a) continue; // not a landmark: somewhere inside
+      CHECK(weight_of(b, loc.at(*va), *vb) == 1., "vertex " << k << " of A on its own vertex");
+      CHECK(weight_of(a, back.at(*vb), *va) == 1., "vertex " << k << " of B on its own vertex");
+    }
+    for(const auto& l : { loc.at(centre_a), back.at(centre_b) })
+    {
+      CHECK(l.second[0] >= 0 && l.second[1] >= 0 && l.second[2] >= 0, "a barycentric coordinate below zero");
+      CHECK(std::abs(l.second[0] + l.second[1] + l.second[2] - 1) <= 1e-12, "barycentric coordinates summing to 1");
+    }
+    CHECK(st.report_compatible.is_valid() && num_vertices(ca) == num_vertices(cb) && num_faces(ca) == num_faces(cb)
+          && num_faces(ca) > 10, "compatible meshes certified, of one size");
+    std::cout << "eared decagons (" << mesh_name<Mesh>() << ", " << (variant == 0 ? "matched map" : variant == 1
+              ? "B's first map" : "no landmark") << "): " << st.chords_split_b << " inside edge(s) of B split, "
+              << st.vertices_added_b << " vertex(es) added to B's copy, both maps certified, every "
+              << (variant == 2 ? "border vertex" : "vertex") << " on its own vertex both ways, compatible meshes of "
+              << num_faces(ca) << " faces" << std::endl;
+  }
+  return EXIT_SUCCESS;
+}
+
 // Closed genus-0 surfaces: both cut along the chain of landmarks into disks. blobby against itself (every
 // landmark exactly on its partner, the map the identity up to rounding; the compatible meshes closed, of one
 // connectivity) and against its remeshed copy (the error bound of the disks); a genus-3 surface, a closed surface
@@ -800,6 +874,35 @@ int errors(const std::string& data_dir)
       if(CGAL::is_border(v, inf_b)) { put(get(CGAL::vertex_point, inf_b), v, Epick::Point_3(0, inf, 0)); break; }
     RUN(run(nan_a, b, { { in_nan[0], ib[0] } }, PE::ERROR_NON_FINITE_COORDINATES, none, 0, "a NaN point in A"));
     RUN(run(a, inf_b, { { ia[0], in_inf[0] } }, PE::ERROR_NON_FINITE_COORDINATES, none, 1, "an infinite point on B's border"));
+  }
+  {
+    // extreme sizes are not bad input: A scaled by 2^600 or 2^-600 (squared 3D lengths overflow or underflow in
+    // double) gives the locations of A itself, bit for bit (a power of two is exact)
+    const std::vector<std::pair<vd, vd> > one{ { ia[0], ib[0] } };
+    Location_map<Mesh> ref;
+    PE::Cross_parameterization_statistics st;
+    CHECK(PE::cross_parameterization(a, b, one, boost::make_assoc_property_map(ref), PE::parameters::statistics(&st)) == PE::OK,
+          "A itself");
+    for(const int e : { 600, -600 })
+    {
+      Mesh as;
+      CGAL::copy_face_graph(a, as);
+      for(auto v : vertices(as))
+      {
+        const Epick::Point_3 p = get(CGAL::vertex_point, as, v);
+        put(get(CGAL::vertex_point, as), v, Epick::Point_3(std::ldexp(p.x(), e), std::ldexp(p.y(), e), std::ldexp(p.z(), e)));
+      }
+      Location_map<Mesh> scaled;
+      const std::vector<std::pair<vd, vd> > one_s{ { *std::next(vertices(as).begin(), std::distance(vertices(a).begin(),
+                                                                                                   std::find(vertices(a).begin(), vertices(a).end(), ia[0]))), ib[0] } };
+      const PE::Error_code ec = PE::cross_parameterization(as, b, one_s, boost::make_assoc_property_map(scaled),
+                                                           PE::parameters::statistics(&st));
+      CHECK(ec == PE::OK && st.report_a.is_valid() && st.report_b.is_valid(), "A scaled by 2^" << e << ": " << PE::get_error_name(ec));
+      auto vs = vertices(as).begin();
+      for(auto va = vertices(a).begin(); va != vertices(a).end(); ++va, ++vs)
+        CHECK(scaled.at(*vs) == ref.at(*va), "A scaled by 2^" << e << ": the location of A itself");
+      std::cout << "  " << mesh_name<Mesh>() << ", A scaled by 2^" << e << ": OK, every location bit for bit that of A" << std::endl;
+    }
   }
   {
     PE::Cross_parameterization_statistics st;
@@ -1167,6 +1270,8 @@ PE_TEST_GROUP(cross_compatible)
 {
   RUN(fan_disks<Surface_mesh>());
   RUN(fan_disks<Polyhedron>());
+  RUN(eared_disks<Surface_mesh>());
+  RUN(eared_disks<Polyhedron>());
   RUN(compatible_cases<Surface_mesh>(data_dir));
   RUN(compatible_cases<Polyhedron>(data_dir));
   return EXIT_SUCCESS;

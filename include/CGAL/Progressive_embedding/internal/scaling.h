@@ -15,12 +15,15 @@
 
 #include <CGAL/Progressive_embedding/internal/number_utils.h>
 
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/number_utils.h>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -160,7 +163,70 @@ public:
       if(!s.round_trips(p.x()) || !s.round_trips(p.y())) return Power_of_two_scaling();
     return s;
   }
+
+  // The same for 3D points (x(), y(), z()) whose lengths are squared, and areas squared again, in double: the power
+  // of two that brings the bounding box to an extent in [1/2, 1) when it is outside [2^-100, 2^100] (beyond, a
+  // squared area overflows or underflows), if every coordinate round-trips exactly; the identity otherwise.
+  template <class PointRange>
+  static Power_of_two_scaling normalizing_3(const PointRange& points)
+  {
+    bool first = true;
+    std::array<FT, 3> lo, hi;
+    for(const auto& p : points)
+    {
+      const std::array<FT, 3> c{{ FT(p.x()), FT(p.y()), FT(p.z()) }};
+      for(int i = 0; i < 3; ++i)
+      {
+        if(!is_finite_ft(c[i])) return Power_of_two_scaling();
+        if(first || c[i] < lo[i]) lo[i] = c[i];
+        if(first || hi[i] < c[i]) hi[i] = c[i];
+      }
+      first = false;
+    }
+    if(first) return Power_of_two_scaling();
+    const FT half = make_ft<FT>(0.5);
+    FT e = make_ft<FT>(0);
+    for(int i = 0; i < 3; ++i)
+    {
+      const FT ei = hi[i] * half - lo[i] * half;
+      if(e < ei) e = ei;
+    }
+    if(!(e > make_ft<FT>(0)) || !is_finite_ft(e)) return Power_of_two_scaling();
+    const long k = -(frexp_exponent(e) + 1);
+    if(k >= -100 && k <= 100) return Power_of_two_scaling();
+    const Power_of_two_scaling s(k);
+    for(const auto& p : points)
+      if(!s.round_trips(FT(p.x())) || !s.round_trips(FT(p.y())) || !s.round_trips(FT(p.z()))) return Power_of_two_scaling();
+    return s;
+  }
 };
+
+// Brings the 3D points of a Surface_mesh, or of a vector, near unit size (Power_of_two_scaling::normalizing_3) and
+// returns the scaling (the identity for sizes within 2^+-100): exact, so the geometry is the same up to that factor.
+template <class Point_3>
+Power_of_two_scaling<typename CGAL::Kernel_traits<Point_3>::Kernel::FT> normalize_points_3(std::vector<Point_3>& points)
+{
+  typedef typename CGAL::Kernel_traits<Point_3>::Kernel::FT FT;
+  const auto scaling = Power_of_two_scaling<FT>::normalizing_3(points);
+  if(scaling.exponent() != 0)
+    for(Point_3& p : points)
+      p = Point_3(scaling.forward(FT(p.x())), scaling.forward(FT(p.y())), scaling.forward(FT(p.z())));
+  return scaling;
+}
+
+template <class Mesh>
+auto normalize_points_3(Mesh& mesh) -> decltype(normalize_points_3(std::declval<std::vector<typename Mesh::Point>&>()))
+{
+  std::vector<typename Mesh::Point> points;
+  for(auto v : vertices(mesh)) points.push_back(mesh.point(v));
+  const auto scaling = normalize_points_3(points);
+  if(scaling.exponent() != 0)
+  {
+    std::size_t i = 0;
+    for(auto v : vertices(mesh)) mesh.point(v) = points[i++];
+  }
+  return scaling;
+}
 
 } // namespace internal
 } // namespace Progressive_embedding

@@ -9,6 +9,7 @@
 // the positions on a circle, a square or a triangle, or the fixed positions of the uv map
 // (checked convex, exactly).
 
+#include <CGAL/Progressive_embedding/internal/length_3.h>
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/parameters.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
@@ -82,7 +83,7 @@ std::vector<double> border_arc_length(const Indexed_disk<TriangleMesh>& disk, VP
   {
     const auto& p = get(vpm, disk.vertices[disk.border[k]]);
     const auto& q = get(vpm, disk.vertices[disk.border[(k + 1) % nb]]);
-    length[k] = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q)));
+    length[k] = length_3(p, q);
   }
   return arc_length_parameters(length);
 }

@@ -52,6 +52,7 @@
 #include <CGAL/Progressive_embedding/internal/constrained/holes.h>
 #include <CGAL/Progressive_embedding/internal/constrained/coarsen.h>
 #include <CGAL/Progressive_embedding/internal/constrained/tracer_budgets.h>
+#include <CGAL/Progressive_embedding/internal/scaling.h>
 
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -671,6 +672,9 @@ public:
     to_mesh.clear();
     for(const auto& p : v2v) { to_work.emplace(p.first, p.second); to_mesh.emplace(p.second, p.first); }
     wvpm = get(CGAL::vertex_point, work);
+    // Path costs, arc lengths and areas square 3D lengths in double: a mesh beyond 2^+-100 in size is brought near
+    // 1 by an exact power of two (the caller's mesh keeps its points: the refinement is replayed on them)
+    internal::normalize_points_3(work);
     // holes: fans around new vertices; the pieces of the hole loops are tracked through the splits
     // so that the hole regions (what the fans became) can be removed after the certificate
     loop_pieces.clear();

@@ -37,6 +37,8 @@
 //       Returns false (nothing usable) when the mesh has several border cycles, when a linear solve
 //       fails or when a position is not finite.
 
+#include <CGAL/Progressive_embedding/internal/length_3.h>
+
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/Named_function_parameters.h>
@@ -217,7 +219,7 @@ bool compute_guide_map(const TM& tm, VPM vpm, VertexId vertex_id, std::size_t n_
       loop.push_back(vertex_id(target(h, tm)));
       arc.push_back(s);
       const auto p = get(vpm, source(h, tm)), q = get(vpm, target(h, tm));
-      s += std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q)));
+      s += length_3(p, q);
       h = prev(h, tm);
     } while(h != b0 && ++guard <= border_halfedges);
     ++cycles;

@@ -11,6 +11,7 @@
 // graph) and postconditions (check_traced_paths(), label_patches()), the chord splits, and the order
 // in which the partition's edges are traced. The interface is described at the top of trace_paths.h.
 
+#include <CGAL/Progressive_embedding/internal/length_3.h>
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/internal/constrained/refinement.h>
 
@@ -675,9 +676,7 @@ void tracing_order(VertexPointMap vpm, const Path_network<TM>& net,
   const std::size_t N = nodes.size(), E = edges.size();
   auto node_distance = [&](std::size_t e)
   {
-    const auto p = get(vpm, nodes[edges[e][0]]), q = get(vpm, nodes[edges[e][1]]);
-    typedef typename CGAL::Kernel_traits<typename std::decay<decltype(p)>::type>::Kernel K;
-    return std::sqrt(CGAL::to_double(K().compute_squared_distance_3_object()(p, q)));
+    return length_3(get(vpm, nodes[edges[e][0]]), get(vpm, nodes[edges[e][1]]));
   };
   order.clear();
   // the first border cycle (with its sides) is connected from the start; reaching a node of

@@ -16,6 +16,7 @@
 // joining two border vertices of one side would be flat in any map: B's corners are moved off the
 // quarters where that is needed (separate_chords()).
 
+#include <CGAL/Progressive_embedding/internal/length_3.h>
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 #include <CGAL/Progressive_embedding/internal/tutte_border.h>
@@ -75,7 +76,7 @@ std::vector<double> border_parameters_from(const Indexed_disk<TriangleMesh>& dis
   {
     const auto& p = get(vpm, disk.vertices[disk.border[(start + k) % nb]]);
     const auto& q = get(vpm, disk.vertices[disk.border[(start + k + 1) % nb]]);
-    length[k] = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q)));
+    length[k] = length_3(p, q);
   }
   return arc_length_parameters(length);
 }

@@ -24,6 +24,7 @@
 // goes along the sides through (1, 0), and the way back is its mirror image in the diagonal (x and y exchanged,
 // exact).
 
+#include <CGAL/Progressive_embedding/internal/length_3.h>
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/internal/cross/common_border.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
@@ -64,7 +65,7 @@ Cut_border_cycle cut_border_cycle(const Indexed_disk<Disk>& disk, VPM vpm, std::
     c.position[c.at.back()] = k;
     const auto& p = get(vpm, disk.vertices[disk.border[(first + k) % n]]);
     const auto& q = get(vpm, disk.vertices[disk.border[(first + k + 1) % n]]);
-    c.length.push_back(c.length.back() + std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q))));
+    c.length.push_back(c.length.back() + length_3(p, q));
   }
   return c;
 }

@@ -14,6 +14,7 @@
 // one chain matches the copy on the same side of the other. split_chords() then splits the edges that join
 // two border vertices of a cut disk.
 
+#include <CGAL/Progressive_embedding/internal/length_3.h>
 #include <CGAL/Progressive_embedding/Error_code.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -124,7 +125,7 @@ Error_code cut_along_chain(const TriangleMesh& tm, VPM vpm,
       {
         const std::size_t j = index.at(w);
         if(blocked[j] && j != to) continue;
-        const double d = e.first + std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, v), get(vpm, w))));
+        const double d = e.first + length_3(get(vpm, v), get(vpm, w));
         if(d < distance[j]) { distance[j] = d; parent[j] = e.second; queue.emplace(d, j); }
       }
     }

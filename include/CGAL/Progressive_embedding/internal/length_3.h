@@ -1,0 +1,42 @@
+// Copyright (c) 2026 Progressive_embedding contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// Author(s) : Progressive_embedding contributors
+
+#ifndef CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_LENGTH_3_H
+#define CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_LENGTH_3_H
+
+// The length of a 3D segment in double, for arc lengths and path costs. The usual sqrt of the
+// squared distance overflows for points beyond about 1e154 apart and loses everything below about
+// 1e-154; only then is it computed again from the coordinate differences divided by the largest,
+// so that every other length is the usual value bit for bit.
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace CGAL {
+namespace Progressive_embedding {
+namespace internal {
+
+template <class Point_3>
+double length_3(const Point_3& p, const Point_3& q)
+{
+  typedef typename CGAL::Kernel_traits<Point_3>::Kernel K;
+  const double squared = CGAL::to_double(K().compute_squared_distance_3_object()(p, q));
+  if(squared >= (std::numeric_limits<double>::min)() && squared <= (std::numeric_limits<double>::max)())
+    return std::sqrt(squared);
+  const double d[3] = { CGAL::to_double(q.x() - p.x()), CGAL::to_double(q.y() - p.y()), CGAL::to_double(q.z() - p.z()) };
+  const double m = (std::max)({ std::abs(d[0]), std::abs(d[1]), std::abs(d[2]) });
+  if(!(m > 0) || !std::isfinite(m)) return std::sqrt(squared); // 0, or not finite: as it is
+  const double x = d[0] / m, y = d[1] / m, z = d[2] / m;
+  return m * std::sqrt(x * x + y * y + z * z);
+}
+
+} // namespace internal
+} // namespace Progressive_embedding
+} // namespace CGAL
+
+#endif // CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_LENGTH_3_H

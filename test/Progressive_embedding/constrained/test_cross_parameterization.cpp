@@ -885,8 +885,7 @@ int errors(const std::string& data_dir)
           "A itself");
     for(const int e : { 600, -600 })
     {
-      Mesh as;
-      CGAL::copy_face_graph(a, as);
+      Mesh as(a); // the same order of vertices, faces and halfedges
       for(auto v : vertices(as))
       {
         const Epick::Point_3 p = get(CGAL::vertex_point, as, v);

@@ -1,6 +1,6 @@
 // Tests of distortion.h and optimize_distortion.h: measures against hand-computed values,
 // the identity as the minimum, validity kept in double and MPFR, hard constraints kept
-// bit-exactly, free border kept simple (and kept apart where it closes on itself), budgets.
+// bit-exactly, free border kept simple (and kept apart where it closes on itself), budgets, meshes of any size.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
@@ -16,6 +16,7 @@
 #include <CGAL/Progressive_embedding/tutte_embedding.h>
 #include <CGAL/Progressive_embedding/progressive_embedding.h>
 #include <CGAL/Progressive_embedding/optimize_distortion.h>
+#include <CGAL/Progressive_embedding/certified_pipeline.h>
 #include <CGAL/Progressive_embedding/distortion.h>
 #include <CGAL/Progressive_embedding/Progressive_embedding_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
@@ -500,6 +501,89 @@ void test_parameterizer_optimizes(const std::string& data_dir)
         + std::to_string(r2.mean_energy_3d) + ")");
 }
 
+// Meshes of any size: the pipeline squares 3D lengths and areas in double (the optimizer's reference triangles, the
+// distortion measures, mean value weights), which overflow beyond about 2^255 and underflow below 2^-255; the 3D
+// points are read brought near unit size by a power of two. On mushroom.off scaled by 2^600 and by 2^-600,
+// parameterize_certified() (circular border, optimization always), Tutte's map with mean value weights and a
+// free-border optimization from the first each give the map of the mesh itself, bit for bit.
+void test_any_scale(const std::string& data_dir)
+{
+  SM mushroom;
+  if(!CGAL::IO::read_polygon_mesh(data_dir + "/meshes/mushroom.off", mushroom)) { CHECK(false, "read mushroom.off"); return; }
+  auto scaled = [&mushroom](int k) {
+    SM m = mushroom; // the copy constructor keeps the indices
+    for(SM::Vertex_index v : m.vertices())
+      m.point(v) = K::Point_3(std::ldexp(m.point(v).x(), k), std::ldexp(m.point(v).y(), k), std::ldexp(m.point(v).z(), k));
+    return m;
+  };
+  std::vector<K::Point_2> reference;
+  PE::Pipeline_statistics first;
+  SM optimized;
+  for(int k : { 0, 600, -600 })
+  {
+    SM m = scaled(k);
+    auto uvm = m.add_property_map<SM::Vertex_index, K::Point_2>("uv").first;
+    PE::Pipeline_statistics st;
+    const PE::Error_code ec = PE::parameterize_certified(m, SM::null_halfedge(), uvm,
+      PE::parameters::optimization_policy(PE::Optimization_policy::ALWAYS,
+        PE::parameters::border_shape(PE::Border_shape::CIRCLE, PE::parameters::pipeline_statistics(&st))));
+    std::vector<K::Point_2> uv;
+    for(SM::Vertex_index v : m.vertices()) uv.push_back(uvm[v]);
+    const std::string what = "mushroom.off scaled by 2^" + std::to_string(k);
+    if(k == 0)
+    {
+      CHECK(ec == PE::OK && st.optimized && st.optimization_status == PE::OK && st.report.is_valid()
+            && st.report.has_3d_energy, what + ": optimized (" + std::string(PE::get_error_name(st.optimization_status))
+            + ", " + std::to_string(st.optimization.iterations) + " iterations), certified (mean "
+            + std::to_string(st.optimization.energy_before) + " -> " + std::to_string(st.report.mean_energy_3d) + ")");
+      reference = uv;
+      first = st;
+      optimized = m;
+      continue;
+    }
+    CHECK(ec == PE::OK && st.optimized && st.optimization_status == first.optimization_status
+          && st.report.is_valid() && st.report.has_3d_energy && st.optimization.iterations == first.optimization.iterations
+          && st.report.mean_energy_3d == first.report.mean_energy_3d && uv == reference,
+          what + ": optimized (" + std::string(PE::get_error_name(st.optimization_status)) + ", "
+          + std::to_string(st.optimization.iterations) + " iterations), certified, every uv bit for bit that of the mesh itself");
+  }
+  // Tutte's map with mean value weights (they square 3D lengths): the same map, bit for bit
+  std::vector<K::Point_2> mean_value;
+  for(int k : { 0, 600, -600 })
+  {
+    SM m = scaled(k);
+    auto uvm = m.add_property_map<SM::Vertex_index, K::Point_2>("uv").first;
+    const PE::Error_code ec = PE::tutte_embedding(m, SM::null_halfedge(), uvm,
+      PE::parameters::weights(PE::Weights::MEAN_VALUE, PE::parameters::border_shape(PE::Border_shape::CIRCLE)));
+    std::vector<K::Point_2> uv;
+    for(SM::Vertex_index v : m.vertices()) uv.push_back(uvm[v]);
+    if(k == 0) mean_value = uv;
+    CHECK(ec == PE::OK && uv == mean_value, "mushroom.off scaled by 2^" + std::to_string(k) + ", Tutte's map with mean value weights: "
+          + PE::get_error_name(ec) + (k == 0 ? "" : ", every uv bit for bit that of the mesh itself"));
+  }
+  {
+    // the free border from that map (its border barrier reads 3D lengths too)
+    std::vector<K::Point_2> free_reference;
+    std::size_t free_iterations = 0;
+    for(int k : { 0, 600, -600 })
+    {
+      SM m = optimized;
+      for(SM::Vertex_index v : m.vertices())
+        m.point(v) = K::Point_3(std::ldexp(m.point(v).x(), k), std::ldexp(m.point(v).y(), k), std::ldexp(m.point(v).z(), k));
+      auto uvm = m.property_map<SM::Vertex_index, K::Point_2>("uv").first;
+      PE::Optimization_statistics st;
+      const PE::Error_code ec = PE::optimize_distortion(m, uvm, PE::parameters::free_border(true, PE::parameters::optimization_statistics(&st)));
+      std::vector<K::Point_2> uv;
+      for(SM::Vertex_index v : m.vertices()) uv.push_back(uvm[v]);
+      if(k == 0) { free_reference = uv; free_iterations = st.iterations; }
+      CHECK(ec == PE::OK && st.report.is_valid() && st.report.border_simple && st.energy_after < st.energy_before
+            && st.iterations == free_iterations && uv == free_reference,
+            "mushroom.off scaled by 2^" + std::to_string(k) + ", free border: certified, " + std::to_string(st.iterations)
+            + " iterations, mean " + std::to_string(st.energy_before) + " -> " + std::to_string(st.energy_after) + (k == 0 ? "" : ", every uv bit for bit that of the mesh itself"));
+    }
+  }
+}
+
 template <class Kernel2>
 void test_number_type(const char* name)
 {
@@ -634,7 +718,7 @@ int main(int argc, char** argv)
   test_free_border_stays_simple();
   test_free_border_closing_on_itself();
   test_specific_errors();
-  if(argc > 1) { test_converges_on_real_failure(argv[1]); test_parameterizer_optimizes(argv[1]); }
+  if(argc > 1) { test_converges_on_real_failure(argv[1]); test_parameterizer_optimizes(argv[1]); test_any_scale(argv[1]); }
   else CHECK(false, "the data directory (argument 1) is needed for the real-mesh test");
   test_identity_is_minimum<SM>("Surface_mesh");
   test_identity_is_minimum<Poly>("Polyhedron_3");

@@ -876,32 +876,43 @@ int errors(const std::string& data_dir)
     RUN(run(a, inf_b, { { ia[0], in_inf[0] } }, PE::ERROR_NON_FINITE_COORDINATES, none, 1, "an infinite point on B's border"));
   }
   {
-    // extreme sizes are not bad input: A scaled by 2^600 or 2^-600 (squared 3D lengths overflow or underflow in
-    // double) gives the locations of A itself, bit for bit (a power of two is exact)
+    // extreme sizes are not bad input: A, or A and B, scaled by 2^600 or 2^-600 (squared 3D lengths overflow or
+    // underflow in double) give the locations of A itself, bit for bit (a power of two is exact)
     const std::vector<std::pair<vd, vd> > one{ { ia[0], ib[0] } };
     Location_map<Mesh> ref;
     PE::Cross_parameterization_statistics st;
     CHECK(PE::cross_parameterization(a, b, one, boost::make_assoc_property_map(ref), PE::parameters::statistics(&st)) == PE::OK,
           "A itself");
-    for(const int e : { 600, -600 })
-    {
-      Mesh as(a); // the same order of vertices, faces and halfedges
-      for(auto v : vertices(as))
+    auto scaled_copy = [](const Mesh& m, int e) {
+      Mesh s(m); // the same order of vertices, faces and halfedges
+      for(auto v : vertices(s))
       {
-        const Epick::Point_3 p = get(CGAL::vertex_point, as, v);
-        put(get(CGAL::vertex_point, as), v, Epick::Point_3(std::ldexp(p.x(), e), std::ldexp(p.y(), e), std::ldexp(p.z(), e)));
+        const Epick::Point_3 p = get(CGAL::vertex_point, s, v);
+        put(get(CGAL::vertex_point, s), v, Epick::Point_3(std::ldexp(p.x(), e), std::ldexp(p.y(), e), std::ldexp(p.z(), e)));
       }
-      Location_map<Mesh> scaled;
-      const std::vector<std::pair<vd, vd> > one_s{ { *std::next(vertices(as).begin(), std::distance(vertices(a).begin(),
-                                                                                                   std::find(vertices(a).begin(), vertices(a).end(), ia[0]))), ib[0] } };
-      const PE::Error_code ec = PE::cross_parameterization(as, b, one_s, boost::make_assoc_property_map(scaled),
-                                                           PE::parameters::statistics(&st));
-      CHECK(ec == PE::OK && st.report_a.is_valid() && st.report_b.is_valid(), "A scaled by 2^" << e << ": " << PE::get_error_name(ec));
-      auto vs = vertices(as).begin();
-      for(auto va = vertices(a).begin(); va != vertices(a).end(); ++va, ++vs)
-        CHECK(scaled.at(*vs) == ref.at(*va), "A scaled by 2^" << e << ": the location of A itself");
-      std::cout << "  " << mesh_name<Mesh>() << ", A scaled by 2^" << e << ": OK, every location bit for bit that of A" << std::endl;
-    }
+      return s;
+    };
+    // the same element of a copy: at the same place in the order
+    auto same_place = [](const auto& range, const auto& copy_range, const auto& x) {
+      return *std::next(copy_range.begin(), std::distance(range.begin(), std::find(range.begin(), range.end(), x)));
+    };
+    for(const bool both : { false, true })
+      for(const int e : { 600, -600 })
+      {
+        const std::string what = std::string(both ? "A and B" : "A") + " scaled by 2^" + std::to_string(e);
+        const Mesh as = scaled_copy(a, e), bs = both ? scaled_copy(b, e) : Mesh(b);
+        Location_map<Mesh> scaled;
+        const std::vector<std::pair<vd, vd> > one_s{ { same_place(vertices(a), vertices(as), ia[0]),
+                                                       same_place(vertices(b), vertices(bs), ib[0]) } };
+        const PE::Error_code ec = PE::cross_parameterization(as, bs, one_s, boost::make_assoc_property_map(scaled),
+                                                             PE::parameters::statistics(&st));
+        CHECK(ec == PE::OK && st.report_a.is_valid() && st.report_b.is_valid(), what << ": " << PE::get_error_name(ec));
+        auto vs = vertices(as).begin();
+        for(auto va = vertices(a).begin(); va != vertices(a).end(); ++va, ++vs)
+          CHECK(scaled.count(*vs) == 1 && scaled.at(*vs).first == same_place(faces(b), faces(bs), ref.at(*va).first)
+                && scaled.at(*vs).second == ref.at(*va).second, what << ": the location of A itself");
+        std::cout << "  " << mesh_name<Mesh>() << ", " << what << ": OK, every location bit for bit that of A" << std::endl;
+      }
   }
   {
     PE::Cross_parameterization_statistics st;

@@ -13,6 +13,7 @@
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 #include <CGAL/Progressive_embedding/internal/symmetric_dirichlet.h>
 #include <CGAL/Progressive_embedding/internal/check_passes.h>
+#include <CGAL/Progressive_embedding/internal/scaling.h>
 #include <CGAL/Progressive_embedding/Progressive_embedding_traits_2.h>
 #include <CGAL/Progressive_embedding/Distortion_report.h>
 
@@ -105,6 +106,7 @@ std::vector<Face_distortion> face_distortions(const Indexed_disk<TriangleMesh>& 
     const auto& q = get(vpm, disk.vertices[i]);
     Q[i] = {{ CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()) }};
   }
+  normalize_coordinates_3(Q); // near unit size: squared 3D areas neither overflow nor underflow
   double total3d = 0;
   for(const auto& t : disk.faces)
     total3d += std::sqrt((std::max)(0., reference_from_points<double, 3>(Q[t[0]], Q[t[1]], Q[t[2]]).area2));

@@ -41,6 +41,7 @@
 #include <CGAL/Progressive_embedding/internal/symmetric_dirichlet.h>
 #include <CGAL/Progressive_embedding/internal/block_cg.h>
 #include <CGAL/Progressive_embedding/internal/rotation_svd_2x2.h>
+#include <CGAL/Progressive_embedding/internal/scaling.h>
 
 #include <CGAL/Real_timer.h>
 #include <CGAL/tags.h>
@@ -640,18 +641,23 @@ private:
   // shaped by something); a mesh with no 3D area at all, or non-finite points, is refused.
   Error_code build_frames(double border_area)
   {
+    // the 3D points in double, brought near unit size by a power of two when they are far from it (squared areas
+    // would overflow or underflow); the references are scaled to the uv area below anyway
+    points_3_.resize(nv_);
+    for(std::size_t i = 0; i < nv_; ++i)
+    {
+      const auto& q = get(vpm_, disk_.vertices[i]);
+      points_3_[i] = {{ CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()) }};
+    }
+    for(const auto& t : disk_.faces)
+      for(int c = 0; c < 3; ++c)
+        for(double x : points_3_[t[c]]) if(!std::isfinite(x)) return ERROR_NON_FINITE_COORDINATES;
+    normalize_coordinates_3(points_3_);
     std::vector<Reference_triangle<double> > refs(nf_);
     for(std::size_t f = 0; f < nf_; ++f)
     {
       const auto& t = disk_.faces[f];
-      std::array<std::array<double, 3>, 3> Q;
-      for(int c = 0; c < 3; ++c)
-      {
-        const auto& q = get(vpm_, disk_.vertices[t[c]]);
-        Q[c] = {{ CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()) }};
-        for(double x : Q[c]) if(!std::isfinite(x)) return ERROR_NON_FINITE_COORDINATES;
-      }
-      refs[f] = reference_3d(Q);
+      refs[f] = reference_3d({{ points_3_[t[0]], points_3_[t[1]], points_3_[t[2]] }});
     }
     double k2 = 0;
     const Error_code ec = scale_references(refs, border_area, k2);
@@ -1034,10 +1040,9 @@ private:
     edge_length_.resize(n);
     for(std::size_t k = 0; k < n; ++k)
     {
-      const auto& p = get(vpm_, disk_.vertices[disk_.border[k]]);
-      const auto& q = get(vpm_, disk_.vertices[disk_.border[(k + 1) % n]]);
-      const double ex = CGAL::to_double(q.x()) - CGAL::to_double(p.x()), ey = CGAL::to_double(q.y()) - CGAL::to_double(p.y()),
-                   ez = CGAL::to_double(q.z()) - CGAL::to_double(p.z());
+      const std::array<double, 3>& p = points_3_[disk_.border[k]];
+      const std::array<double, 3>& q = points_3_[disk_.border[(k + 1) % n]];
+      const double ex = q[0] - p[0], ey = q[1] - p[1], ez = q[2] - p[2];
       edge_length_[k] = reference_scale_ * std::sqrt(ex * ex + ey * ey + ez * ez);
     }
     // a border edge of zero 3D length: the mean length instead (its reach must not vanish)
@@ -1323,6 +1328,7 @@ private:
   static constexpr int max_hold_attempts = 4;
   bool barrier_ = false;   // the border barrier is on (free border of a disk)
   double barrier_reach_ = 0.5;           // reach of a pair, relative to the shortest reference edge length
+  std::vector<std::array<double, 3> > points_3_; // the 3D points, normalized (build_frames())
   double reference_scale_ = 1;           // the scale of the reference triangles (on lengths)
   std::vector<long> border_pos_;         // per vertex: its position on the border, -1 inside
   std::vector<double> edge_length_;      // per border edge (from border position k to k + 1): its reference length

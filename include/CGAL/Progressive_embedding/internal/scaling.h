@@ -132,36 +132,13 @@ public:
     return is_finite_ft(y) && same_value(backward(y), x);
   }
 
-  // The power of two that brings the bounding box of `border` (points with x(), y()) to an
-  // extent in [1/2, 1) when it is outside [2^-32, 2^32], if every border coordinate round-trips exactly; the identity otherwise
-  // (empty, degenerate or non-finite border).
+  // The power of two that brings the bounding box of `border` (points with x(), y()) to an extent in [1/2, 1) when
+  // it is outside [2^-32, 2^32], if every border coordinate round-trips exactly; the identity otherwise (empty,
+  // degenerate or non-finite border).
   template <class PointRange>
   static Power_of_two_scaling normalizing(const PointRange& border)
   {
-    bool first = true;
-    FT xmin, xmax, ymin, ymax;
-    for(const auto& p : border)
-    {
-      if(!is_finite_ft(p.x()) || !is_finite_ft(p.y())) return Power_of_two_scaling();
-      if(first) { xmin = xmax = p.x(); ymin = ymax = p.y(); first = false; continue; }
-      if(p.x() < xmin) xmin = p.x();
-      if(xmax < p.x()) xmax = p.x();
-      if(p.y() < ymin) ymin = p.y();
-      if(ymax < p.y()) ymax = p.y();
-    }
-    if(first) return Power_of_two_scaling();
-    // the extents, halved first so that they cannot overflow in floating point
-    const FT half = make_ft<FT>(0.5);
-    const FT ex = xmax * half - xmin * half, ey = ymax * half - ymin * half;
-    const FT e = (ex < ey) ? ey : ex;
-    if(!(e > make_ft<FT>(0)) || !is_finite_ft(e)) return Power_of_two_scaling();
-    const long k = -(frexp_exponent(e) + 1); // the halving above: extent = 2 e
-    // ordinary scales need nothing (and then give the same results as without this normalization)
-    if(k >= -32 && k <= 32) return Power_of_two_scaling();
-    const Power_of_two_scaling s(k);
-    for(const auto& p : border)
-      if(!s.round_trips(p.x()) || !s.round_trips(p.y())) return Power_of_two_scaling();
-    return s;
+    return normalizing_box(border, [](const auto& p) { return std::array<FT, 2>{{ FT(p.x()), FT(p.y()) }}; }, 32);
   }
 
   // The same for 3D points (x(), y(), z()) whose lengths are squared, and areas squared again, in double: the power
@@ -170,12 +147,29 @@ public:
   template <class PointRange>
   static Power_of_two_scaling normalizing_3(const PointRange& points)
   {
+    return normalizing_box(points, [](const auto& p) { return std::array<FT, 3>{{ FT(p.x()), FT(p.y()), FT(p.z()) }}; }, 100);
+  }
+
+  // the same for coordinate triples
+  static Power_of_two_scaling normalizing_coordinates_3(const std::vector<std::array<FT, 3> >& points)
+  {
+    return normalizing_box(points, [](const std::array<FT, 3>& p) { return p; }, 100);
+  }
+
+private:
+  // The power of two that brings the bounding box of the points (`coordinates(p)`: a std::array of FT) to an extent
+  // in [1/2, 1) when it is outside [2^-limit, 2^limit], if every coordinate round-trips exactly; the identity
+  // otherwise (no point, a zero extent or a coordinate that is not finite).
+  template <class PointRange, class Coordinates>
+  static Power_of_two_scaling normalizing_box(const PointRange& points, Coordinates coordinates, long limit)
+  {
+    typedef decltype(coordinates(*std::begin(points))) Array;
     bool first = true;
-    std::array<FT, 3> lo, hi;
+    Array lo, hi;
     for(const auto& p : points)
     {
-      const std::array<FT, 3> c{{ FT(p.x()), FT(p.y()), FT(p.z()) }};
-      for(int i = 0; i < 3; ++i)
+      const Array c = coordinates(p);
+      for(std::size_t i = 0; i < c.size(); ++i)
       {
         if(!is_finite_ft(c[i])) return Power_of_two_scaling();
         if(first || c[i] < lo[i]) lo[i] = c[i];
@@ -184,19 +178,22 @@ public:
       first = false;
     }
     if(first) return Power_of_two_scaling();
+    // the largest extent, halved first so that it cannot overflow in floating point
     const FT half = make_ft<FT>(0.5);
     FT e = make_ft<FT>(0);
-    for(int i = 0; i < 3; ++i)
+    for(std::size_t i = 0; i < lo.size(); ++i)
     {
       const FT ei = hi[i] * half - lo[i] * half;
       if(e < ei) e = ei;
     }
     if(!(e > make_ft<FT>(0)) || !is_finite_ft(e)) return Power_of_two_scaling();
-    const long k = -(frexp_exponent(e) + 1);
-    if(k >= -100 && k <= 100) return Power_of_two_scaling();
+    const long k = -(frexp_exponent(e) + 1); // the halving above: extent = 2 e
+    // ordinary scales need nothing (and then give the same results as without this normalization)
+    if(k >= -limit && k <= limit) return Power_of_two_scaling();
     const Power_of_two_scaling s(k);
     for(const auto& p : points)
-      if(!s.round_trips(FT(p.x())) || !s.round_trips(FT(p.y())) || !s.round_trips(FT(p.z()))) return Power_of_two_scaling();
+      for(const FT& x : coordinates(p))
+        if(!s.round_trips(x)) return Power_of_two_scaling();
     return s;
   }
 };
@@ -212,6 +209,15 @@ Power_of_two_scaling<typename CGAL::Kernel_traits<Point_3>::Kernel::FT> normaliz
     for(Point_3& p : points)
       p = Point_3(scaling.forward(FT(p.x())), scaling.forward(FT(p.y())), scaling.forward(FT(p.z())));
   return scaling;
+}
+
+// The same for coordinate triples in double, e.g. the 3D points a distortion measure reads.
+inline void normalize_coordinates_3(std::vector<std::array<double, 3> >& points)
+{
+  const auto scaling = Power_of_two_scaling<double>::normalizing_coordinates_3(points);
+  if(scaling.exponent() != 0)
+    for(std::array<double, 3>& p : points)
+      for(double& x : p) x = scaling.forward(x);
 }
 
 template <class Mesh>

@@ -16,6 +16,10 @@
 #include <CGAL/Progressive_embedding/parameters.h>
 #include <CGAL/Progressive_embedding/internal/indexed_disk.h>
 #include <CGAL/Progressive_embedding/internal/number_utils.h>
+#include <CGAL/Progressive_embedding/internal/scaling.h>
+
+#include <CGAL/Kernel_traits.h>
+#include <boost/property_map/property_map.hpp>
 
 #include <CGAL/number_utils.h>
 
@@ -47,6 +51,19 @@ Error_code tutte_weights(const Indexed_disk<TriangleMesh>& disk, VPM vpm, Weight
     for(auto& e : adj[i]) if(e.first == j) { e.second += w; return; }
     adj[i].push_back(std::make_pair(j, w));
   };
+  // Mean value weights square 3D lengths: for a mesh far from unit size, the differences are brought near it by the
+  // power of two that normalizes the points (exact; every weight is then scaled by one power of two, which does not
+  // change the solution).
+  typedef typename boost::property_traits<VPM>::value_type Point_3;
+  typedef typename CGAL::Kernel_traits<Point_3>::Kernel::FT FT3;
+  Power_of_two_scaling<FT3> scaling;
+  if(wts != Weights::UNIFORM)
+  {
+    std::vector<Point_3> points;
+    points.reserve(disk.number_of_vertices());
+    for(std::size_t i = 0; i < disk.number_of_vertices(); ++i) points.push_back(get(vpm, disk.vertices[i]));
+    scaling = Power_of_two_scaling<FT3>::normalizing_3(points);
+  }
   for(const auto& t : disk.faces)
   {
     for(int c = 0; c < 3; ++c)
@@ -62,8 +79,9 @@ Error_code tutte_weights(const Indexed_disk<TriangleMesh>& disk, VPM vpm, Weight
       const auto& P = get(vpm, disk.vertices[i]);
       const auto& Q = get(vpm, disk.vertices[j]);
       const auto& R = get(vpm, disk.vertices[k]);
-      const double ax = CGAL::to_double(Q.x() - P.x()), ay = CGAL::to_double(Q.y() - P.y()), az = CGAL::to_double(Q.z() - P.z());
-      const double bx = CGAL::to_double(R.x() - P.x()), by = CGAL::to_double(R.y() - P.y()), bz = CGAL::to_double(R.z() - P.z());
+      auto scaled = [&scaling](const FT3& d) { return CGAL::to_double(scaling.forward(d)); };
+      const double ax = scaled(Q.x() - P.x()), ay = scaled(Q.y() - P.y()), az = scaled(Q.z() - P.z());
+      const double bx = scaled(R.x() - P.x()), by = scaled(R.y() - P.y()), bz = scaled(R.z() - P.z());
       const double la = std::sqrt(ax * ax + ay * ay + az * az), lb = std::sqrt(bx * bx + by * by + bz * bz);
       const double cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
       const double cr = std::sqrt(cx * cx + cy * cy + cz * cz), dt = ax * bx + ay * by + az * bz;

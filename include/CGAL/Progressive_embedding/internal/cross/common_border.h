@@ -24,6 +24,7 @@
 #include <CGAL/assertions.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -33,16 +34,6 @@
 namespace CGAL {
 namespace Progressive_embedding {
 namespace internal {
-
-// the 3D distance between points of two possibly different kernels, in double
-template <class P, class Q>
-double squared_distance_3_double(const P& p, const Q& q)
-{
-  const double dx = CGAL::to_double(p.x()) - CGAL::to_double(q.x());
-  const double dy = CGAL::to_double(p.y()) - CGAL::to_double(q.y());
-  const double dz = CGAL::to_double(p.z()) - CGAL::to_double(q.z());
-  return dx * dx + dy * dy + dz * dz;
-}
 
 // The matched pair of border vertices when none is given: the first border vertex of A in the disk's vertex order
 // (that of vertices(tm_a)) and the border vertex of B nearest to it in 3D; returned as positions on the two border
@@ -55,11 +46,24 @@ std::pair<std::size_t, std::size_t> default_start_pair(const Indexed_disk<MeshA>
   while(!disk_a.on_border[first]) ++first;
   const std::size_t start_a = std::size_t(std::find(disk_a.border.begin(), disk_a.border.end(), first) - disk_a.border.begin());
   const auto& p = get(vpm_a, disk_a.vertices[first]);
-  std::size_t start_b = 0;
-  double best = std::numeric_limits<double>::infinity();
+  // the differences in double (the points may have different kernels), squared after a power of two brings the
+  // largest near 1 when they are far from unit size (the squares would overflow or underflow: no nearest vertex)
+  std::vector<std::array<double, 3> > difference(disk_b.border.size());
+  double largest = 0;
   for(std::size_t k = 0; k < disk_b.border.size(); ++k)
   {
-    const double d = squared_distance_3_double(p, get(vpm_b, disk_b.vertices[disk_b.border[k]]));
+    const auto& q = get(vpm_b, disk_b.vertices[disk_b.border[k]]);
+    difference[k] = {{ CGAL::to_double(p.x()) - CGAL::to_double(q.x()), CGAL::to_double(p.y()) - CGAL::to_double(q.y()),
+                       CGAL::to_double(p.z()) - CGAL::to_double(q.z()) }};
+    for(double d : difference[k]) if(std::abs(d) > largest) largest = std::abs(d);
+  }
+  const int exponent = (std::isfinite(largest) && (largest > 0x1p100 || (largest > 0 && largest < 0x1p-100))) ? -std::ilogb(largest) : 0;
+  std::size_t start_b = 0;
+  double best = std::numeric_limits<double>::infinity();
+  for(std::size_t k = 0; k < difference.size(); ++k)
+  {
+    double d = 0;
+    for(double x : difference[k]) { const double y = std::ldexp(x, exponent); d += y * y; }
     if(d < best) { best = d; start_b = k; }
   }
   return std::make_pair(start_a, start_b);

@@ -648,10 +648,8 @@ private:
     {
       const auto& q = get(vpm_, disk_.vertices[i]);
       points_3_[i] = {{ CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()) }};
+      for(double x : points_3_[i]) if(!std::isfinite(x)) return ERROR_NON_FINITE_COORDINATES; // every vertex is in a face
     }
-    for(const auto& t : disk_.faces)
-      for(int c = 0; c < 3; ++c)
-        for(double x : points_3_[t[c]]) if(!std::isfinite(x)) return ERROR_NON_FINITE_COORDINATES;
     normalize_coordinates_3(points_3_);
     std::vector<Reference_triangle<double> > refs(nf_);
     for(std::size_t f = 0; f < nf_; ++f)

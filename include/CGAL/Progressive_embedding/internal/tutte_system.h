@@ -64,6 +64,7 @@ Error_code tutte_weights(const Indexed_disk<TriangleMesh>& disk, VPM vpm, Weight
     for(std::size_t i = 0; i < disk.number_of_vertices(); ++i) points.push_back(get(vpm, disk.vertices[i]));
     scaling = Power_of_two_scaling<FT3>::normalizing_3(points);
   }
+  auto scaled = [&scaling](const FT3& d) { return CGAL::to_double(scaling.forward(d)); };
   for(const auto& t : disk.faces)
   {
     for(int c = 0; c < 3; ++c)
@@ -79,7 +80,6 @@ Error_code tutte_weights(const Indexed_disk<TriangleMesh>& disk, VPM vpm, Weight
       const auto& P = get(vpm, disk.vertices[i]);
       const auto& Q = get(vpm, disk.vertices[j]);
       const auto& R = get(vpm, disk.vertices[k]);
-      auto scaled = [&scaling](const FT3& d) { return CGAL::to_double(scaling.forward(d)); };
       const double ax = scaled(Q.x() - P.x()), ay = scaled(Q.y() - P.y()), az = scaled(Q.z() - P.z());
       const double bx = scaled(R.x() - P.x()), by = scaled(R.y() - P.y()), bz = scaled(R.z() - P.z());
       const double la = std::sqrt(ax * ax + ay * ay + az * az), lb = std::sqrt(bx * bx + by * by + bz * bz);

@@ -270,7 +270,7 @@ template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class
 Error_code constrained_embedding(TriangleMesh& tm, const ConstraintRange& constraints, VertexUVMap uvm,
                                  const NamedParameters& np = CGAL::parameters::default_values())
 {
-  internal::Constrained_embedder<ConcurrencyTag, TriangleMesh, VertexUVMap, NamedParameters> embedder(tm, uvm, np);
+  internal::Constrained_embedder_for<ConcurrencyTag, TriangleMesh, VertexUVMap, NamedParameters> embedder(tm, uvm, np);
   return embedder.run(constraints);
 }
 

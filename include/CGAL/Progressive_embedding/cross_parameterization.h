@@ -77,7 +77,6 @@ enum compatible_meshes_t { compatible_meshes };
 enum composed_distortion_t { composed_distortion };
 enum matched_maps_t { matched_maps };
 enum planar_maps_t { planar_maps };
-enum cut_request_t { cut_request }; // internal: what the function on two closed meshes asks of the one on their cut disks
 } // namespace internal_np
 
 namespace parameters {
@@ -110,10 +109,6 @@ template <typename T> Named_function_parameters<T, internal_np::matched_maps_t> 
 template <typename T, typename P, typename G, typename B>
 Named_function_parameters<T, internal_np::matched_maps_t, CGAL::Named_function_parameters<P, G, B> >
 matched_maps(const T& t, const CGAL::Named_function_parameters<P, G, B>& np) { return { t, np }; }
-
-template <typename T, typename P, typename G, typename B>
-Named_function_parameters<T, internal_np::cut_request_t, CGAL::Named_function_parameters<P, G, B> >
-cut_request(const T& t, const CGAL::Named_function_parameters<P, G, B>& np) { return { t, np }; }
 
 template <typename T> Named_function_parameters<T, internal_np::planar_maps_t> planar_maps(const T& t)
 { return Named_function_parameters<T, internal_np::planar_maps_t>(t); }
@@ -290,7 +285,7 @@ inline bool matched_map_acceptable(const Embedding_report& first, const Embeddin
   return matched.mean_energy_3d <= 1.05 * first.mean_energy_3d;
 }
 
-// What the function on two closed meshes asks of the one on their cut disks (the named parameter cut_request):
+// What the function on two closed meshes asks of the one on their cut disks (Cross_settings::cut):
 // the borders placed on the square (internal/cross/cut_border.h), and with `compatible` the triangulated overlay as
 // soups with, for each of its points, the vertex of each disk it is (indices in `vertices(tm)` order, or -1).
 struct Cut_request
@@ -563,6 +558,853 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 
 } // namespace internal
 
+#ifndef DOXYGEN_RUNNING
+namespace internal {
+
+// whether the mesh-pair parameter `tag` (compatible_meshes, planar_maps) is given with a pointer that is not null:
+// two null pointers ask for nothing, so that a caller deciding at run time (a binding) can pass the parameter always
+template <class Tag, class NamedParameters>
+bool asks_for_meshes(const NamedParameters& np, Tag tag)
+{
+  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, Tag>::value) return false;
+  else
+  {
+    const auto meshes = CGAL::parameters::get_parameter(np, tag);
+    return meshes.first != nullptr || meshes.second != nullptr;
+  }
+}
+
+// The named parameters of cross_parameterization(), read once by it: the computation below is a template of the two
+// meshes only, so that calls with different parameter packs (and with different location maps) share one
+// instantiation of it; what it computes comes back in a Cross_output, written by the caller once all is certified.
+template <class TriangleMeshA, class TriangleMeshB>
+struct Cross_settings
+{
+  Cross_parameterization_statistics* statistics = nullptr;
+  double max_seconds = std::numeric_limits<double>::infinity();
+  double optimization_seconds = 30;
+  bool has_border_vertex_pair = false;
+  std::pair<typename boost::graph_traits<TriangleMeshA>::vertex_descriptor,
+            typename boost::graph_traits<TriangleMeshB>::vertex_descriptor> border_vertex_pair;
+  bool matched_maps = true;
+  bool composed_distortion = true;
+  bool b_to_a = false;            // b_to_a_locations given
+  bool compatible_meshes = false; // compatible_meshes given with a mesh to write
+  bool planar_maps = false;       // planar_maps given with a mesh to write
+  Cut_request* cut = nullptr;     // set by the function on two closed meshes for their cut disks
+};
+
+template <class TriangleMeshA, class TriangleMeshB>
+struct Cross_output
+{
+  std::vector<typename boost::graph_traits<TriangleMeshA>::vertex_descriptor> vertices_a;
+  std::vector<Cross_location<TriangleMeshB> > locations;   // of vertices_a[i]
+  std::vector<typename boost::graph_traits<TriangleMeshB>::vertex_descriptor> vertices_b;
+  std::vector<Cross_location<TriangleMeshA> > locations_b; // of vertices_b[i], with b_to_a
+  std::vector<std::array<double, 3> > compatible_a, compatible_b; // the compatible meshes: points on A, on B
+  std::vector<std::array<std::size_t, 3> > compatible_triangles;
+  std::vector<std::array<double, 3> > plane_a, plane_b;    // the planar maps
+  std::vector<std::array<std::size_t, 3> > plane_faces_a, plane_faces_b;
+};
+
+template <class TriangleMeshA, class TriangleMeshB, class NamedParameters>
+void read_cross_settings(const NamedParameters& np, Cross_settings<TriangleMeshA, TriangleMeshB>& s)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  s.statistics = choose_parameter(get_parameter(np, internal_np::statistics), static_cast<Cross_parameterization_statistics*>(nullptr));
+  s.max_seconds = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
+                                   std::numeric_limits<double>::infinity());
+  s.optimization_seconds = choose_parameter(get_parameter(np, internal_np::optimization_time_limit), 30.);
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::border_vertex_pair_t>::value)
+  {
+    s.has_border_vertex_pair = true;
+    s.border_vertex_pair = get_parameter(np, internal_np::border_vertex_pair);
+  }
+  s.matched_maps = choose_parameter(get_parameter(np, internal_np::matched_maps), true);
+  s.composed_distortion = choose_parameter(get_parameter(np, internal_np::composed_distortion), true);
+  s.b_to_a = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::b_to_a_locations_t>::value;
+  s.compatible_meshes = asks_for_meshes(np, internal_np::compatible_meshes);
+  s.planar_maps = asks_for_meshes(np, internal_np::planar_maps);
+}
+
+template <class ConcurrencyTag, class TriangleMeshA, class TriangleMeshB>
+Error_code cross_parameterization_closed(
+  const TriangleMeshA& tm_a, const TriangleMeshB& tm_b,
+  const std::vector<std::pair<typename boost::graph_traits<TriangleMeshA>::vertex_descriptor,
+                              typename boost::graph_traits<TriangleMeshB>::vertex_descriptor> >& landmarks,
+  const Cross_settings<TriangleMeshA, TriangleMeshB>& settings, Cross_output<TriangleMeshA, TriangleMeshB>& output);
+
+// cross_parameterization() of two disks (or, both closed, through cross_parameterization_closed())
+template <class ConcurrencyTag, class TriangleMeshA, class TriangleMeshB>
+Error_code cross_parameterization_disks(
+  const TriangleMeshA& tm_a, const TriangleMeshB& tm_b,
+  const std::vector<std::pair<typename boost::graph_traits<TriangleMeshA>::vertex_descriptor,
+                              typename boost::graph_traits<TriangleMeshB>::vertex_descriptor> >& landmarks,
+  const Cross_settings<TriangleMeshA, TriangleMeshB>& settings, Cross_output<TriangleMeshA, TriangleMeshB>& output)
+{
+  typedef boost::graph_traits<TriangleMeshA>                         GTA;
+  typedef boost::graph_traits<TriangleMeshB>                         GTB;
+  typedef typename GTA::vertex_descriptor                            vertex_a;
+  typedef typename GTB::vertex_descriptor                            vertex_b;
+  typedef typename GTB::face_descriptor                              face_b;
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel        K2;
+  typedef K2::Point_2                                                Point_2;
+  typedef typename boost::property_map<TriangleMeshA, CGAL::vertex_point_t>::const_type VPMA;
+  typedef typename boost::property_traits<VPMA>::value_type          Point_3a;
+  typedef CGAL::Surface_mesh<Point_3a>                               Work;
+  typedef typename boost::graph_traits<Work>::vertex_descriptor      wvertex;
+  typedef typename boost::property_map<TriangleMeshB, CGAL::vertex_point_t>::const_type VPMB;
+  typedef typename boost::property_traits<VPMB>::value_type          Point_3b;
+  typedef CGAL::Surface_mesh<Point_3b>                               Work_b;
+  typedef typename boost::graph_traits<Work_b>::vertex_descriptor    wbvertex;
+
+  CGAL::Real_timer timer;
+  timer.start();
+  Cross_parameterization_statistics local_stats;
+  Cross_parameterization_statistics& stats = settings.statistics ? *settings.statistics : local_stats;
+  stats = Cross_parameterization_statistics();
+  auto finish = [&](Error_code ec) { stats.seconds_total = timer.time(); return ec; };
+  const double max_seconds = settings.max_seconds;
+  const double optimization_seconds = settings.optimization_seconds;
+  if(!(max_seconds >= 0) || !(optimization_seconds >= 0)) return finish(ERROR_WRONG_PARAMETER);
+
+  // ---- 1. validation -----------------------------------------------------------------------
+  // two closed surfaces: cut into disks along the chain of landmarks
+  const bool closed_a = internal::is_closed_mesh(tm_a), closed_b = internal::is_closed_mesh(tm_b);
+  if(closed_a && closed_b) return internal::cross_parameterization_closed<ConcurrencyTag>(tm_a, tm_b, landmarks, settings, output);
+  if(closed_a || closed_b) { stats.failed_mesh = closed_a ? 0 : 1; return finish(ERROR_NOT_A_DISK); }
+  const auto vpm_a = get(CGAL::vertex_point, tm_a);
+  const auto vpm_b = get(CGAL::vertex_point, tm_b);
+  internal::Indexed_disk<TriangleMeshA> disk_a;
+  internal::Indexed_disk<TriangleMeshB> disk_b;
+  Error_code ec = internal::make_indexed_disk(tm_a, GTA::null_halfedge(), disk_a);
+  if(ec != OK) { stats.failed_mesh = 0; return finish(ec); }
+  ec = internal::make_indexed_disk(tm_b, GTB::null_halfedge(), disk_b);
+  if(ec != OK) { stats.failed_mesh = 1; return finish(ec); }
+  stats.vertices_a = disk_a.number_of_vertices();
+  stats.faces_a = disk_a.number_of_faces();
+  stats.vertices_b = disk_b.number_of_vertices();
+  stats.faces_b = disk_b.number_of_faces();
+  if(!internal::points_are_finite(tm_a, get(CGAL::vertex_point, tm_a))) { stats.failed_mesh = 0; return finish(ERROR_NON_FINITE_COORDINATES); }
+  if(!internal::points_are_finite(tm_b, get(CGAL::vertex_point, tm_b))) { stats.failed_mesh = 1; return finish(ERROR_NON_FINITE_COORDINATES); }
+  std::unordered_map<vertex_a, std::size_t, boost::hash<vertex_a> > index_a;
+  std::unordered_map<vertex_b, std::size_t, boost::hash<vertex_b> > index_b;
+  for(std::size_t i = 0; i < disk_a.vertices.size(); ++i) index_a.emplace(disk_a.vertices[i], i);
+  for(std::size_t i = 0; i < disk_b.vertices.size(); ++i) index_b.emplace(disk_b.vertices[i], i);
+
+  std::vector<std::pair<std::size_t, std::size_t> > pairs; // interior landmarks as indices into disk_a, disk_b
+  std::vector<std::pair<std::size_t, std::size_t> > border_pairs; // border landmarks, likewise
+  std::vector<std::size_t> border_pair_input; // the position in `landmarks` of each border landmark
+  {
+    std::unordered_set<std::size_t> seen_a, seen_b;
+    std::size_t position = 0;
+    for(const auto& l : landmarks)
+    {
+      stats.failed_landmark = position;
+      const auto ia = index_a.find(l.first);
+      if(ia == index_a.end()) { stats.failed_mesh = 0; return finish(ERROR_WRONG_PARAMETER); }
+      const auto ib = index_b.find(l.second);
+      if(ib == index_b.end()) { stats.failed_mesh = 1; return finish(ERROR_WRONG_PARAMETER); }
+      // a border landmark needs a partner on the other border
+      const bool border_a = disk_a.on_border[ia->second], border_b = disk_b.on_border[ib->second];
+      if(border_a != border_b) { stats.failed_mesh = border_a ? 0 : 1; return finish(ERROR_CONSTRAINT_ON_BORDER); }
+      if(!seen_a.insert(ia->second).second) { stats.failed_mesh = 0; return finish(ERROR_DUPLICATE_CONSTRAINT); }
+      if(!seen_b.insert(ib->second).second) { stats.failed_mesh = 1; return finish(ERROR_DUPLICATE_CONSTRAINT); }
+      if(border_a) { border_pairs.emplace_back(ia->second, ib->second); border_pair_input.push_back(position); }
+      else pairs.emplace_back(ia->second, ib->second);
+      ++position;
+    }
+    stats.failed_landmark = std::size_t(-1);
+    stats.landmarks = pairs.size() + border_pairs.size();
+    stats.border_landmarks = border_pairs.size();
+  }
+
+  // ---- 2. the common border ------------------------------------------------------------------
+  // positions of the matched vertices on their border cycles
+  std::vector<std::size_t> border_pos_a(disk_a.number_of_vertices(), std::size_t(-1));
+  std::vector<std::size_t> border_pos_b(disk_b.number_of_vertices(), std::size_t(-1));
+  for(std::size_t k = 0; k < disk_a.border.size(); ++k) border_pos_a[disk_a.border[k]] = k;
+  for(std::size_t k = 0; k < disk_b.border.size(); ++k) border_pos_b[disk_b.border[k]] = k;
+  std::size_t start_a = 0, start_b = 0;
+  typedef std::pair<vertex_a, vertex_b> Vertex_pair;
+  if(settings.has_border_vertex_pair)
+  {
+    const Vertex_pair given = settings.border_vertex_pair;
+    const auto ia = index_a.find(given.first);
+    if(ia == index_a.end() || border_pos_a[ia->second] == std::size_t(-1)) { stats.failed_mesh = 0; return finish(ERROR_WRONG_PARAMETER); }
+    const auto ib = index_b.find(given.second);
+    if(ib == index_b.end() || border_pos_b[ib->second] == std::size_t(-1)) { stats.failed_mesh = 1; return finish(ERROR_WRONG_PARAMETER); }
+    start_a = border_pos_a[ia->second];
+    start_b = border_pos_b[ib->second];
+    // the pair is matched like a border landmark; a vertex of it in another landmark must have the same partner
+    bool listed = false;
+    for(const auto& bp : border_pairs)
+    {
+      if(bp.first == ia->second && bp.second == ib->second) listed = true;
+      else if(bp.first == ia->second) { stats.failed_mesh = 0; return finish(ERROR_DUPLICATE_CONSTRAINT); }
+      else if(bp.second == ib->second) { stats.failed_mesh = 1; return finish(ERROR_DUPLICATE_CONSTRAINT); }
+    }
+    if(!listed && !border_pairs.empty())
+    {
+      border_pairs.emplace_back(ia->second, ib->second);
+      border_pair_input.push_back(std::size_t(-1));
+    }
+  }
+  else if(!border_pairs.empty())
+  {
+    // the first border landmark at the corner (0,0)
+    start_a = border_pos_a[border_pairs.front().first];
+    start_b = border_pos_b[border_pairs.front().second];
+  }
+  else
+  {
+    const std::pair<std::size_t, std::size_t> start = internal::default_start_pair(disk_a, vpm_a, disk_b, vpm_b);
+    start_a = start.first;
+    start_b = start.second;
+  }
+  // a square needs four border vertices on each mesh: say which one has fewer
+  if(disk_a.border.size() < 4) { stats.failed_mesh = 0; return finish(ERROR_BORDER_TOO_SHORT); }
+  if(disk_b.border.size() < 4) { stats.failed_mesh = 1; return finish(ERROR_BORDER_TOO_SHORT); }
+  std::vector<Point_2> border_uv_a, border_uv_b;
+  if(border_pairs.size() < 2)
+    ec = internal::common_square_border(disk_a, vpm_a, start_a, disk_b, vpm_b, start_b, border_uv_a, border_uv_b);
+  else
+  {
+    // border landmarks: in the same order along both borders (each counterclockwise, from the start pair)
+    const std::size_t na = disk_a.border.size(), nb = disk_b.border.size();
+    std::vector<std::pair<std::size_t, std::size_t> > matched; // positions from the start
+    for(const auto& bp : border_pairs)
+      matched.emplace_back((border_pos_a[bp.first] + na - start_a) % na, (border_pos_b[bp.second] + nb - start_b) % nb);
+    std::vector<std::size_t> order(matched.size());
+    for(std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return matched[x].first < matched[y].first; });
+    std::vector<std::pair<std::size_t, std::size_t> > sorted;
+    for(std::size_t k : order)
+    {
+      if(!sorted.empty() && matched[k].second <= sorted.back().second)
+      {
+        stats.failed_landmark = border_pair_input[k]; // -1 for border_vertex_pair
+        stats.failed_mesh = 1;
+        return finish(ERROR_WRONG_PARAMETER); // not in A's order along B's border
+      }
+      sorted.push_back(matched[k]);
+    }
+    // the cut disks of two closed meshes come with their borders placed
+    if(settings.cut != nullptr)
+    {
+      const internal::Cut_request* request = settings.cut;
+      if(request->border_uv_a.size() != disk_a.number_of_vertices() || request->border_uv_b.size() != disk_b.number_of_vertices())
+        return finish(ERROR_WRONG_PARAMETER);
+      border_uv_a.resize(na);
+      border_uv_b.resize(nb);
+      for(std::size_t k = 0; k < na; ++k) border_uv_a[k] = request->border_uv_a[disk_a.border[k]];
+      for(std::size_t k = 0; k < nb; ++k) border_uv_b[k] = request->border_uv_b[disk_b.border[k]];
+    }
+    else
+      ec = internal::common_square_border_through(disk_a, vpm_a, start_a, disk_b, vpm_b, start_b, sorted,
+                                                  border_uv_a, border_uv_b);
+    if(ec == ERROR_BORDER_TOO_SHORT) stats.failed_mesh = 0;
+  }
+  if(ec != OK) return finish(ec);
+  stats.seconds_validation = timer.time();
+  auto remaining = [&]() { const double r = max_seconds - timer.time(); return r > 0 ? r : 0.; };
+
+  // ---- 3. B's map -------------------------------------------------------------------------------
+  std::unordered_map<vertex_b, Point_2, boost::hash<vertex_b> > uv_b_storage;
+  for(std::size_t i = 0; i < disk_b.vertices.size(); ++i) uv_b_storage[disk_b.vertices[i]] = Point_2(0, 0);
+  boost::associative_property_map<std::unordered_map<vertex_b, Point_2, boost::hash<vertex_b> > > uv_b(uv_b_storage);
+  for(std::size_t k = 0; k < disk_b.border.size(); ++k) put(uv_b, disk_b.vertices[disk_b.border[k]], border_uv_b[k]);
+  ec = parameterize_certified(tm_b, GTB::null_halfedge(), uv_b,
+    parameters::border_shape(Border_shape::FIXED,
+      parameters::optimization_policy(Optimization_policy::ALWAYS,
+        parameters::pipeline_statistics(&stats.map_b,
+          CGAL::parameters::maximum_running_time(remaining())))));
+  // An interior edge of B joining two border vertices of one side of the square (no placement of the corners kept
+  // it off) is flat in every map of B itself: B's first map is then made on a copy of B by constrained_embedding()
+  // without landmarks, which splits such edges at Steiner vertices. The cut disks of two closed meshes split them
+  // their own way (cross_parameterization_closed()).
+  Work_b first_b;
+  std::unordered_map<vertex_b, wbvertex, boost::hash<vertex_b> > to_first_b;
+  auto uv_first_b = first_b.template add_property_map<wbvertex, Point_2>("v:pe_cross_uv_first_b", Point_2(0, 0)).first;
+  std::vector<Steiner_point<wbvertex> > steiner_first_b;
+  bool first_refined = false;
+  const bool cut_disks = settings.cut != nullptr;
+  if(ec == ERROR_DEGENERATE_CHORD && !cut_disks)
+  {
+    std::vector<std::pair<vertex_b, wbvertex> > v2v_first;
+    CGAL::copy_face_graph(tm_b, first_b, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v_first)));
+    to_first_b.insert(v2v_first.begin(), v2v_first.end());
+    for(std::size_t k = 0; k < disk_b.border.size(); ++k) uv_first_b[to_first_b.at(disk_b.vertices[disk_b.border[k]])] = border_uv_b[k];
+    Constrained_embedding_statistics first_stats;
+    ec = constrained_embedding(first_b, std::vector<std::pair<wbvertex, Point_2> >(), uv_first_b,
+      parameters::steiner_points(&steiner_first_b,
+      parameters::border_shape(Border_shape::FIXED,
+        parameters::optimization_time_limit((std::min)(optimization_seconds, remaining()),
+          parameters::statistics(&first_stats,
+            CGAL::parameters::maximum_running_time(remaining()))))));
+    first_refined = true;
+    stats.chords_split_b = first_stats.chord_splits;
+  }
+  stats.report_b = first_refined ? check_embedding(first_b, uv_first_b) : check_embedding(tm_b, uv_b);
+  // the uv of vertex `i` of disk_b in B's first map
+  auto first_uv = [&](std::size_t i) {
+    return first_refined ? uv_first_b[to_first_b.at(disk_b.vertices[i])] : get(uv_b, disk_b.vertices[i]);
+  };
+  if(ec != OK || !stats.report_b.is_valid())
+  {
+    stats.seconds_map_b = timer.time() - stats.seconds_validation;
+    stats.failed_mesh = 1;
+    return finish(ec != OK ? ec : ERROR_INVALID_EMBEDDING);
+  }
+  const double seconds_first_b = timer.time() - stats.seconds_validation;
+  // ---- 4. B's map made again the way A's is made, and A's map ---------------------------------------
+  // B's matched map: constrained_embedding() on a copy of B, B's landmarks pinned where the first map put them. A's
+  // map starts from the same kind of map with the same pins and is optimized the same way, so that the two maps
+  // settle at the same place where the energy is flat (see the documentation). The copy may be refined by Steiner
+  // vertices (on B's faces) that the coarsening could not remove: B's map is then on the copy.
+  // A's map: constrained_embedding() on a copy of A, A's landmarks pinned at the uv of their partners in B's first
+  // map (the same points). The two do not depend on each other: with CGAL::Parallel_tag they run side by side.
+  Work_b work_b;
+  std::vector<std::pair<vertex_b, wbvertex> > v2v_b;
+  std::unordered_map<vertex_b, wbvertex, boost::hash<vertex_b> > to_work_b;
+  auto uv_wb = work_b.template add_property_map<wbvertex, Point_2>("v:pe_cross_uv_b", Point_2(0, 0)).first;
+  std::vector<Steiner_point<wbvertex> > steiner_b;
+  Embedding_report matched_report;
+  const bool make_matched = !pairs.empty() && settings.matched_maps;
+  std::vector<std::pair<wbvertex, Point_2> > pins;
+  if(make_matched)
+  {
+    CGAL::copy_face_graph(tm_b, work_b, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v_b)));
+    to_work_b.insert(v2v_b.begin(), v2v_b.end());
+    for(std::size_t k = 0; k < disk_b.border.size(); ++k) uv_wb[to_work_b[disk_b.vertices[disk_b.border[k]]]] = border_uv_b[k];
+    for(const auto& p : pairs) pins.emplace_back(to_work_b[disk_b.vertices[p.second]], first_uv(p.second));
+  }
+  Work work;
+  std::vector<std::pair<vertex_a, wvertex> > v2v;
+  CGAL::copy_face_graph(tm_a, work, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v)));
+  std::unordered_map<vertex_a, wvertex, boost::hash<vertex_a> > to_work(v2v.begin(), v2v.end());
+  // A's copy brought near unit size by an exact power of two when it is beyond 2^+-100 (its squared areas would
+  // overflow or underflow in the composed distortion); its points are scaled back where they are output
+  const auto scaling_a = internal::normalize_points_3(work);
+  auto uv_a = work.template add_property_map<wvertex, Point_2>("v:pe_cross_uv", Point_2(0, 0)).first;
+  for(std::size_t k = 0; k < disk_a.border.size(); ++k) uv_a[to_work[disk_a.vertices[disk_a.border[k]]]] = border_uv_a[k];
+  std::vector<std::pair<wvertex, Point_2> > constraints;
+  for(const auto& p : pairs)
+    constraints.emplace_back(to_work[disk_a.vertices[p.first]], first_uv(p.second));
+  std::vector<Steiner_point<wvertex> > steiner;
+  double seconds_matched = 0, seconds_constrained_a = 0;
+  // each task writes only its own copy, uv map, Steiner list and statistics
+  bool matched_ran = false;
+  auto matched_task = [&]() {
+    if(!make_matched || !(remaining() > 0)) return;
+    matched_ran = true;
+    const double t0 = timer.time();
+    stats.matched_status = constrained_embedding(work_b, pins, uv_wb,
+      parameters::steiner_points(&steiner_b,
+      parameters::border_shape(Border_shape::FIXED,
+        parameters::optimization_time_limit((std::min)(optimization_seconds, remaining()),
+          parameters::statistics(&stats.map_b_matched,
+            CGAL::parameters::maximum_running_time(remaining()))))));
+    if(stats.matched_status == OK)
+    {
+      matched_report = check_embedding(work_b, uv_wb);
+      if(!matched_report.is_valid()) stats.matched_status = ERROR_INVALID_EMBEDDING;
+    }
+    seconds_matched = timer.time() - t0;
+  };
+  Error_code ec_a = OK;
+  auto a_task = [&]() {
+    const double t0 = timer.time();
+    ec_a = constrained_embedding(work, constraints, uv_a,
+      parameters::steiner_points(&steiner,
+      parameters::border_shape(Border_shape::FIXED,
+        parameters::optimization_time_limit((std::min)(optimization_seconds, remaining()),
+          parameters::statistics(&stats.map_a,
+            CGAL::parameters::maximum_running_time(remaining()))))));
+    seconds_constrained_a = timer.time() - t0;
+  };
+  // A's map first when they run one after the other: it is needed, B's matched map is not (under a time budget, what
+  // is left after A's map goes to it)
+  internal::run_pair<ConcurrencyTag>(a_task, matched_task);
+  const double after_tasks = timer.time();
+  ec = ec_a;
+  // B's matched map, made and certified, replaces the first one, unless it is more distorted: the first map has the
+  // same border and the same pins, so a matched map well above its energy went around the landmarks another way (a
+  // region wound around them), which A's map, made the other way, does not follow: the composition would carry a gross
+  // error there (seen on two meshes of one statue with 50 landmarks: 2.5% of the diagonal on average, 26% at most)
+  if(matched_ran && stats.matched_status == OK && !internal::matched_map_acceptable(stats.report_b, matched_report))
+    stats.matched_more_distorted = true;
+  else if(matched_ran && stats.matched_status == OK)
+  {
+    stats.matched_b = true;
+    stats.vertices_added_b = work_b.number_of_vertices() - disk_b.number_of_vertices();
+    if(stats.vertices_added_b == 0)
+    {
+      // the same map on B itself (certified again there; should that fail, B's first map is kept)
+      std::vector<Point_2> first(v2v_b.size());
+      for(std::size_t i = 0; i < v2v_b.size(); ++i)
+      {
+        first[i] = get(uv_b, v2v_b[i].first);
+        put(uv_b, v2v_b[i].first, uv_wb[v2v_b[i].second]);
+      }
+      const Embedding_report report = check_embedding(tm_b, uv_b);
+      if(report.is_valid()) stats.report_b = report;
+      else
+      {
+        for(std::size_t i = 0; i < v2v_b.size(); ++i) put(uv_b, v2v_b[i].first, first[i]);
+        stats.matched_b = false;
+        stats.matched_status = ERROR_INVALID_EMBEDDING;
+      }
+    }
+    else stats.report_b = matched_report;
+  }
+  // B's first map, when it is kept and was made on a refined copy, is B's map from here on
+  const bool first_copy_kept = first_refined && !stats.matched_b;
+  if(first_copy_kept) stats.vertices_added_b = first_b.number_of_vertices() - disk_b.number_of_vertices();
+  const bool refined_b = (stats.matched_b && stats.vertices_added_b > 0) || first_copy_kept;
+  const Work_b& refined_mesh_b = first_copy_kept ? first_b : work_b;
+  const auto& refined_uv_b = first_copy_kept ? uv_first_b : uv_wb;
+  const auto& to_refined_b = first_copy_kept ? to_first_b : to_work_b;
+  const auto& refined_steiner_b = first_copy_kept ? steiner_first_b : steiner_b;
+  // B's map as the rest uses it: on B, or on its refined copy (vertices, 3D points and faces in `side_b`'s order)
+  internal::Indexed_disk<Work_b> side_b;
+  std::vector<Point_2> side_uv;
+  std::vector<Point_3b> side_points;
+  if(refined_b)
+  {
+    const Error_code es = internal::make_indexed_disk(refined_mesh_b, boost::graph_traits<Work_b>::null_halfedge(), side_b);
+    if(es != OK) { stats.failed_mesh = 1; return finish(es); } // cannot happen: a refined disk
+    for(wbvertex v : side_b.vertices) { side_uv.push_back(refined_uv_b[v]); side_points.push_back(refined_mesh_b.point(v)); }
+  }
+  else
+    for(vertex_b v : disk_b.vertices) { side_uv.push_back(get(uv_b, v)); side_points.push_back(get(vpm_b, v)); }
+  const std::vector<std::array<std::size_t, 3> >& side_faces = refined_b ? side_b.faces : disk_b.faces;
+  stats.seconds_map_b = seconds_first_b + seconds_matched;
+  // no collect_garbage(): the descriptors of `steiner` stay valid (number_of_vertices() skips the removed ones)
+  stats.vertices_added_a = work.number_of_vertices() - disk_a.number_of_vertices();
+  // A's map measured against B's surface rather than the plane (internal/cross/composed_distortion.h); on failure
+  // the map stays as constrained_embedding() left it
+  if(ec == OK && settings.composed_distortion && remaining() > 0)
+  {
+    const double before_composed = timer.time();
+    std::vector<wvertex> fixed;
+    for(const auto& c : constraints) fixed.push_back(c.first);
+    // B's points for its metric only, near unit size like A's (the metric is the same up to rounding)
+    std::vector<Point_3b> metric_points(side_points);
+    internal::normalize_points_3(metric_points);
+    stats.composed_status = internal::optimize_composed_distortion(work, uv_a, fixed,
+                              internal::inverse_map_metric(side_uv, metric_points, side_faces),
+                              (std::min)(optimization_seconds, remaining()), stats.composed);
+    stats.seconds_composed = timer.time() - before_composed;
+  }
+  if(ec == OK) stats.report_a = check_embedding(work, uv_a);
+  stats.seconds_map_a = seconds_constrained_a + (timer.time() - after_tasks);
+  if(ec != OK) { stats.failed_mesh = 0; return finish(ec); }
+  if(!stats.report_a.is_valid()) { stats.failed_mesh = 0; return finish(ERROR_INVALID_EMBEDDING); }
+
+  // ---- 5. every vertex of A located in B's map -------------------------------------------------
+  const double before_location = timer.time();
+  std::vector<Point_2> map_b(disk_b.number_of_vertices()), queries(disk_a.number_of_vertices());
+  for(std::size_t i = 0; i < map_b.size(); ++i)
+    map_b[i] = refined_b ? refined_uv_b[to_refined_b.at(disk_b.vertices[i])] : get(uv_b, disk_b.vertices[i]);
+  for(std::size_t i = 0; i < queries.size(); ++i) queries[i] = uv_a[to_work[disk_a.vertices[i]]];
+  std::vector<face_b> faces_b;
+  faces_b.reserve(disk_b.number_of_faces());
+  for(face_b f : faces(tm_b)) faces_b.push_back(f);
+  std::vector<Cross_location<TriangleMeshB> > locations;
+  if(refined_b)
+  {
+    // located in the refined copy's map, then written in the face of B holding the refined face
+    ec = internal::locate_on_refined_copy(tm_b, disk_b, refined_mesh_b, refined_uv_b, to_refined_b, refined_steiner_b, queries, locations,
+                                          &stats.unlocated);
+    if(ec != OK) return finish(ec);
+  }
+  else
+  {
+    std::vector<internal::Map_location> located;
+    stats.unlocated = internal::locate_in_map(map_b, disk_b.faces, queries, located);
+    if(stats.unlocated > 0) return finish(ERROR_INVALID_EMBEDDING);
+    for(const internal::Map_location& l : located) locations.emplace_back(faces_b[l.face], l.barycentric);
+  }
+  for(const auto& l : locations)
+  {
+    const int zeros = int(l.second[0] == 0) + int(l.second[1] == 0) + int(l.second[2] == 0);
+    if(zeros == 2) ++stats.located_on_vertex;
+    else if(zeros == 1) ++stats.located_on_edge;
+    else ++stats.located_in_face;
+  }
+  stats.landmarks_exact = true;
+  std::vector<std::pair<std::size_t, std::size_t> > all_pairs(pairs);
+  all_pairs.insert(all_pairs.end(), border_pairs.begin(), border_pairs.end());
+  for(const auto& p : all_pairs)
+  {
+    const auto& l = locations[p.first];
+    const auto h = halfedge(l.first, tm_b);
+    const std::array<vertex_b, 3> corners{{ source(h, tm_b), target(h, tm_b), target(next(h, tm_b), tm_b) }};
+    bool at_partner = false;
+    for(int i = 0; i < 3; ++i)
+      if(corners[i] == disk_b.vertices[p.second] && l.second[i] == 1.) at_partner = true;
+    if(!at_partner) stats.landmarks_exact = false;
+  }
+  if(!stats.landmarks_exact) return finish(ERROR_INVALID_EMBEDDING);
+  // the other direction: B's vertices located on A's refined copy, then on A's faces
+  const bool backwards = settings.b_to_a;
+  std::vector<Cross_location<TriangleMeshA> > back;
+  if(backwards)
+  {
+    ec = internal::locate_on_refined_copy(tm_a, disk_a, work, uv_a, to_work, steiner, map_b, back);
+    if(ec != OK) return finish(ec);
+    stats.located_b_on_a = back.size();
+  }
+  stats.seconds_location = timer.time() - before_location;
+
+  // ---- 6. the compatible meshes: the overlay of the two maps, triangulated and certified ----------
+  internal::Cut_request* request = settings.cut;
+  const bool compatible = settings.compatible_meshes || (request && request->compatible);
+  std::vector<std::array<double, 3> > on_a, on_b;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  if(compatible)
+  {
+    const double before_overlay = timer.time();
+    // the cut disks have no interior landmark, so B's map is never on a refined copy and its vertices are the disk's
+    std::vector<std::array<std::size_t, 2> >* origins = request && request->compatible ? &request->origins : nullptr;
+    if(origins != nullptr && refined_b) return finish(ERROR_WRONG_PARAMETER);
+    std::vector<wvertex> disk_a_in_work;
+    if(origins != nullptr)
+      for(vertex_a v : disk_a.vertices) disk_a_in_work.push_back(to_work[v]);
+    ec = refined_b ? internal::compatible_soups(work, uv_a, refined_mesh_b, side_b, side_uv, stats, on_a, on_b, triangles)
+                   : internal::compatible_soups(work, uv_a, tm_b, disk_b, map_b, stats, on_a, on_b, triangles, origins,
+                                                &disk_a_in_work);
+    stats.seconds_compatible = timer.time() - before_overlay;
+    if(ec != OK) return finish(ec);
+    if(scaling_a.exponent() != 0)
+      for(auto& p : on_a) for(double& x : p) x = std::ldexp(x, int(-scaling_a.exponent()));
+  }
+
+  // the planar maps as flat soups, A's vertices (then B's) first in their meshes' order
+  const bool planar = settings.planar_maps;
+  std::vector<std::array<double, 3> > plane_a, plane_b;
+  std::vector<std::array<std::size_t, 3> > plane_faces_a, plane_faces_b;
+  if(planar)
+  {
+    std::vector<wvertex> first_a;
+    for(vertex_a v : disk_a.vertices) first_a.push_back(to_work[v]);
+    internal::planar_soup(work, uv_a, first_a, plane_a, plane_faces_a);
+    if(refined_b)
+    {
+      std::vector<wbvertex> order_b;
+      for(vertex_b v : disk_b.vertices) order_b.push_back(to_refined_b.at(v));
+      internal::planar_soup(refined_mesh_b, refined_uv_b, order_b, plane_b, plane_faces_b);
+    }
+    else
+      internal::planar_soup(tm_b, uv_b, disk_b.vertices, plane_b, plane_faces_b);
+  }
+
+  // ---- 7. the output, handed to the caller (who writes it) only now that everything is certified ---------
+  output.vertices_a = disk_a.vertices;
+  output.locations.swap(locations);
+  if(backwards)
+  {
+    output.vertices_b = disk_b.vertices;
+    output.locations_b.swap(back);
+  }
+  if(request && request->compatible)
+  {
+    request->on_a.swap(on_a);
+    request->on_b.swap(on_b);
+    request->triangles.swap(triangles);
+  }
+  else
+  {
+    output.compatible_a.swap(on_a);
+    output.compatible_b.swap(on_b);
+    output.compatible_triangles.swap(triangles);
+  }
+  output.plane_a.swap(plane_a);
+  output.plane_b.swap(plane_b);
+  output.plane_faces_a.swap(plane_faces_a);
+  output.plane_faces_b.swap(plane_faces_b);
+  return finish(OK);
+}
+
+} // namespace internal
+#endif
+
+#ifndef DOXYGEN_RUNNING
+namespace internal {
+
+// A location on a cut disk brought back to the closed mesh it was cut from: the corners of the disk's face, in the
+// order of the location, as vertices of the mesh (a point `i >= cut.vertices.size()`, the midpoint of a split chord
+// `(*midpoint)[i - cut.vertices.size()]`, gives half its weight to each end), in the mesh's face that holds the disk's
+// face (`(*face)[disk face]` indexes `cut.faces`). Null `face` and `midpoint`: the disk is the cut itself (its faces
+// in `cut.faces` order, no chord split).
+template <class TriangleMesh, class Disk>
+Cross_location<TriangleMesh> location_on_closed_mesh(const TriangleMesh& tm, const Cut_disk<TriangleMesh>& cut,
+                                                     const std::vector<std::size_t>* face,
+                                                     const std::vector<std::array<std::size_t, 2> >* midpoint,
+                                                     const Disk& disk, const Cross_location<Disk>& l)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex;
+  const std::size_t n_cut = cut.vertices.size();
+  const std::size_t disk_face = std::size_t(l.first);
+  const auto f = cut.faces[face != nullptr ? (*face)[disk_face] : disk_face];
+  const auto hc = halfedge(l.first, disk);
+  const std::size_t cut_corner[3] = { std::size_t(source(hc, disk)), std::size_t(target(hc, disk)),
+                                      std::size_t(target(next(hc, disk), disk)) };
+  const auto h = halfedge(f, tm);
+  const vertex corner[3] = { source(h, tm), target(h, tm), target(next(h, tm), tm) };
+  std::array<double, 3> w{{ 0, 0, 0 }};
+  auto add = [&](std::size_t point, double weight) {
+    for(int j = 0; j < 3; ++j)
+      if(corner[j] == cut.vertices[point]) w[j] += weight;
+  };
+  for(int k = 0; k < 3; ++k)
+  {
+    if(cut_corner[k] < n_cut) { add(cut_corner[k], l.second[k]); continue; }
+    CGAL_assertion(midpoint != nullptr);
+    const auto& m = (*midpoint)[cut_corner[k] - n_cut];
+    add(m[0], l.second[k] / 2);
+    add(m[1], l.second[k] / 2);
+  }
+  return Cross_location<TriangleMesh>(f, w);
+}
+
+// two closed genus-0 meshes: both cut along the chain of landmarks (cut_closed.h), the cut disks mapped with
+// every landmark copy a border landmark, the locations brought back to the vertices and faces of the meshes
+template <class ConcurrencyTag, class TriangleMeshA, class TriangleMeshB>
+Error_code cross_parameterization_closed(
+  const TriangleMeshA& tm_a, const TriangleMeshB& tm_b,
+  const std::vector<std::pair<typename boost::graph_traits<TriangleMeshA>::vertex_descriptor,
+                              typename boost::graph_traits<TriangleMeshB>::vertex_descriptor> >& landmarks,
+  const Cross_settings<TriangleMeshA, TriangleMeshB>& settings, Cross_output<TriangleMeshA, TriangleMeshB>& output)
+{
+  typedef typename boost::graph_traits<TriangleMeshA>::vertex_descriptor vertex_a;
+  typedef typename boost::graph_traits<TriangleMeshB>::vertex_descriptor vertex_b;
+  typedef typename boost::property_traits<typename boost::property_map<TriangleMeshA, CGAL::vertex_point_t>::const_type>::value_type Point_a;
+  typedef typename boost::property_traits<typename boost::property_map<TriangleMeshB, CGAL::vertex_point_t>::const_type>::value_type Point_b;
+  typedef CGAL::Surface_mesh<Point_a> Disk_a;
+  typedef CGAL::Surface_mesh<Point_b> Disk_b;
+  Cross_parameterization_statistics local_stats;
+  Cross_parameterization_statistics& stats = settings.statistics ? *settings.statistics : local_stats;
+  stats = Cross_parameterization_statistics();
+  stats.closed = true;
+  // a closed mesh has no border: a border pair does not apply. The planar maps are those of the cut disks; the
+  // compatible meshes are their overlay welded along the cut; B's vertices are located on A's cut disk.
+  if(settings.has_border_vertex_pair) return ERROR_WRONG_PARAMETER;
+  const bool backwards = settings.b_to_a;
+  const bool compatible = settings.compatible_meshes;
+
+  if(!points_are_finite(tm_a, get(CGAL::vertex_point, tm_a))) { stats.failed_mesh = 0; return ERROR_NON_FINITE_COORDINATES; }
+  if(!points_are_finite(tm_b, get(CGAL::vertex_point, tm_b))) { stats.failed_mesh = 1; return ERROR_NON_FINITE_COORDINATES; }
+  // the chain: the landmarks in their order, each vertex once
+  std::vector<vertex_a> chain_a;
+  std::vector<vertex_b> chain_b;
+  {
+    std::unordered_set<vertex_a, boost::hash<vertex_a> > seen_a;
+    std::unordered_set<vertex_b, boost::hash<vertex_b> > seen_b;
+    std::unordered_set<vertex_a, boost::hash<vertex_a> > all_a(vertices(tm_a).begin(), vertices(tm_a).end());
+    std::unordered_set<vertex_b, boost::hash<vertex_b> > all_b(vertices(tm_b).begin(), vertices(tm_b).end());
+    for(const auto& l : landmarks)
+    {
+      stats.failed_landmark = chain_a.size();
+      if(all_a.count(l.first) == 0) { stats.failed_mesh = 0; return ERROR_WRONG_PARAMETER; }
+      if(all_b.count(l.second) == 0) { stats.failed_mesh = 1; return ERROR_WRONG_PARAMETER; }
+      if(!seen_a.insert(l.first).second) { stats.failed_mesh = 0; return ERROR_DUPLICATE_CONSTRAINT; }
+      if(!seen_b.insert(l.second).second) { stats.failed_mesh = 1; return ERROR_DUPLICATE_CONSTRAINT; }
+      chain_a.push_back(l.first);
+      chain_b.push_back(l.second);
+    }
+    stats.failed_landmark = std::size_t(-1);
+    stats.landmarks = chain_a.size();
+    if(chain_a.size() < 2) return ERROR_WRONG_PARAMETER; // a cut needs two landmarks
+  }
+  Cut_disk<TriangleMeshA> cut_a;
+  Cut_disk<TriangleMeshB> cut_b;
+  std::size_t failed = std::size_t(-1);
+  Error_code ec = cut_along_chain(tm_a, get(CGAL::vertex_point, tm_a), chain_a, cut_a, failed);
+  if(ec != OK) { stats.failed_mesh = 0; stats.failed_landmark = failed; return ec; }
+  ec = cut_along_chain(tm_b, get(CGAL::vertex_point, tm_b), chain_b, cut_b, failed);
+  if(ec != OK) { stats.failed_mesh = 1; stats.failed_landmark = failed; return ec; }
+  Disk_a disk_a;
+  {
+    std::vector<Point_a> pa;
+    for(vertex_a v : cut_a.vertices) pa.push_back(get(CGAL::vertex_point, tm_a, v));
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pa, cut_a.triangles, disk_a);
+  }
+  // B's cut disk as cut, or with its chords split (see below)
+  Disk_b disk_b;
+  Split_soup soup_b;
+  std::size_t chords_b = 0;
+  auto build_b = [&](bool split) {
+    std::vector<Point_b> pb;
+    for(vertex_b v : cut_b.vertices) pb.push_back(get(CGAL::vertex_point, tm_b, v));
+    if(split) chords_b = split_chords(cut_b, soup_b);
+    else
+    {
+      soup_b.triangles = cut_b.triangles;
+      soup_b.face.resize(cut_b.triangles.size());
+      for(std::size_t t = 0; t < soup_b.face.size(); ++t) soup_b.face[t] = t;
+      soup_b.midpoint.clear();
+    }
+    for(const auto& m : soup_b.midpoint) pb.push_back(CGAL::midpoint(pb[m[0]], pb[m[1]]));
+    disk_b.clear();
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pb, soup_b.triangles, disk_b);
+  };
+  build_b(false);
+  // every landmark a border landmark of the cut disks, each copy matched to the copy on the same side
+  std::unordered_map<vertex_a, std::size_t, boost::hash<vertex_a> > index_a;
+  std::unordered_map<vertex_b, std::size_t, boost::hash<vertex_b> > index_b;
+  for(std::size_t i = 0; i < cut_a.copy.size(); ++i) index_a.emplace(cut_a.vertices[i], i);
+  for(std::size_t i = 0; i < cut_b.copy.size(); ++i) index_b.emplace(cut_b.vertices[i], i);
+  typedef typename Disk_a::Vertex_index dva;
+  typedef typename Disk_b::Vertex_index dvb;
+  std::vector<std::pair<dva, dvb> > pairs;
+  std::vector<std::size_t> pair_landmark;
+  for(std::size_t k = 0; k < chain_a.size(); ++k)
+  {
+    const std::size_t ia = index_a.at(chain_a[k]), ib = index_b.at(chain_b[k]);
+    pairs.emplace_back(dva(ia), dvb(ib));
+    pair_landmark.push_back(k);
+    if(cut_a.copy[ia] != std::size_t(-1) && cut_b.copy[ib] != std::size_t(-1))
+    {
+      pairs.emplace_back(dva(cut_a.copy[ia]), dvb(cut_b.copy[ib]));
+      pair_landmark.push_back(k);
+    }
+  }
+  std::vector<Cross_location<Disk_b> > located(disk_a.number_of_vertices());
+  std::vector<Cross_location<Disk_a> > located_b; // B's cut disk's vertices on A's, with b_to_a_locations
+  Cross_output<Disk_a, Disk_b> inner_output;
+  Cross_parameterization_statistics inner;
+  const double max_seconds = settings.max_seconds;
+  CGAL::Real_timer timer;
+  timer.start();
+  // both borders placed so that the two sides of the cut are placed alike (internal/cross/cut_border.h)
+  Cut_request request;
+  request.compatible = compatible;
+  std::vector<std::pair<std::size_t, std::size_t> > pair_indices;
+  for(const auto& p : pairs) pair_indices.emplace_back(std::size_t(p.first), std::size_t(p.second));
+  auto place_borders = [&]() {
+    Indexed_disk<Disk_a> indexed_a;
+    Indexed_disk<Disk_b> indexed_b;
+    Error_code e = make_indexed_disk(disk_a, boost::graph_traits<Disk_a>::null_halfedge(), indexed_a);
+    if(e != OK) { stats.failed_mesh = 0; return e; }
+    e = make_indexed_disk(disk_b, boost::graph_traits<Disk_b>::null_halfedge(), indexed_b);
+    if(e != OK) { stats.failed_mesh = 1; return e; }
+    std::size_t failed_mesh = std::size_t(-1);
+    e = cut_border_on_square(indexed_a, get(CGAL::vertex_point, disk_a), indexed_b, get(CGAL::vertex_point, disk_b),
+                             pair_indices, cut_twins(cut_a, disk_a.number_of_vertices()),
+                             cut_twins(cut_b, disk_b.number_of_vertices()), request.border_uv_a, request.border_uv_b,
+                             failed_mesh);
+    if(e != OK) stats.failed_mesh = failed_mesh;
+    return e;
+  };
+  auto map_disks = [&]() {
+    Cross_settings<Disk_a, Disk_b> disk_settings;
+    disk_settings.cut = &request;
+    disk_settings.statistics = &inner;
+    disk_settings.composed_distortion = settings.composed_distortion;
+    disk_settings.matched_maps = settings.matched_maps;
+    disk_settings.optimization_seconds = settings.optimization_seconds;
+    disk_settings.max_seconds = (std::max)(0., max_seconds - timer.time());
+    disk_settings.b_to_a = backwards;
+    // the planar maps are those of the cut disks (the points of a cut disk: the mesh's vertices in their order,
+    // then the copies on the cut, then B's chord midpoints)
+    disk_settings.planar_maps = settings.planar_maps;
+    inner_output = Cross_output<Disk_a, Disk_b>();
+    const Error_code e = cross_parameterization_disks<ConcurrencyTag>(disk_a, disk_b, pairs, disk_settings, inner_output);
+    if(e != OK) return e;
+    for(std::size_t i = 0; i < inner_output.vertices_a.size(); ++i)
+      located[std::size_t(inner_output.vertices_a[i])] = inner_output.locations[i];
+    if(backwards)
+    {
+      located_b.assign(disk_b.number_of_vertices(), Cross_location<Disk_a>());
+      for(std::size_t i = 0; i < inner_output.vertices_b.size(); ++i)
+        located_b[std::size_t(inner_output.vertices_b[i])] = inner_output.locations_b[i];
+    }
+    return OK;
+  };
+  ec = place_borders();
+  if(ec != OK) return ec;
+  ec = map_disks();
+  // Where two paths of the cut run side by side (up and down a limb to a landmark at its tip), the edges
+  // across them join two border vertices of B's disk, and where both ends lie on one side of the square, B's
+  // map would flatten them: then B's disk is mapped again with those edges split
+  // at their midpoints (only then, so that the map of a disk that needs no split is the disk's own)
+  if(ec == ERROR_DEGENERATE_CHORD && inner.failed_mesh == 1)
+  {
+    build_b(true);
+    if(chords_b > 0)
+    {
+      ec = place_borders(); // the same borders, B's midpoints added inside
+      if(ec == OK) ec = map_disks();
+    }
+  }
+  const std::size_t inner_failed = inner.failed_landmark;
+  stats = inner;
+  stats.closed = true;
+  stats.landmarks = chain_a.size();
+  stats.cut_edges_a = cut_a.path_edges;
+  stats.cut_edges_b = cut_b.path_edges;
+  stats.chords_split_b = chords_b;
+  stats.failed_landmark = inner_failed < pair_landmark.size() ? pair_landmark[inner_failed] : std::size_t(-1);
+  if(ec != OK) return ec;
+  // the compatible meshes: the overlay of the cut disks' maps welded along the cut (every border point of it is a
+  // vertex of A's or B's disk, named by the vertex of the closed mesh it is a copy of), then certified closed genus 0
+  std::vector<std::array<double, 3> > on_a, on_b;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  if(compatible)
+  {
+    CGAL::Real_timer weld_timer;
+    weld_timer.start();
+    std::vector<std::size_t> mesh_a(cut_a.vertices.size()), mesh_b(cut_b.vertices.size());
+    for(std::size_t i = 0; i < mesh_a.size(); ++i) mesh_a[i] = index_a.at(cut_a.vertices[i]);
+    for(std::size_t i = 0; i < mesh_b.size(); ++i) mesh_b[i] = index_b.at(cut_b.vertices[i]);
+    std::vector<std::array<std::size_t, 2> > origin(request.origins.size(), {{ std::size_t(-1), std::size_t(-1) }});
+    for(std::size_t i = 0; i < origin.size(); ++i)
+    {
+      const std::array<std::size_t, 2>& o = request.origins[i];
+      if(o[0] < mesh_a.size()) origin[i][0] = mesh_a[o[0]];
+      if(o[1] < mesh_b.size()) origin[i][1] = mesh_b[o[1]]; // B's chord midpoints are inside: no origin
+    }
+    on_a.swap(request.on_a);
+    on_b.swap(request.on_b);
+    triangles.swap(request.triangles);
+    ec = weld_cut_overlay(on_a, on_b, triangles, origin, stats.cut_vertices_welded);
+    stats.seconds_compatible += weld_timer.time();
+    if(ec != OK) return ec;
+    stats.compatible_vertices = on_a.size();
+    stats.compatible_faces = triangles.size();
+  }
+  // back to the faces of the closed meshes (A's cut disk has no midpoint and its faces are the cut's)
+  for(vertex_a v : vertices(tm_a))
+  {
+    output.vertices_a.push_back(v);
+    output.locations.push_back(location_on_closed_mesh(tm_b, cut_b, &soup_b.face, &soup_b.midpoint, disk_b,
+                                                       located[index_a.at(v)]));
+  }
+  if(backwards)
+  {
+    for(vertex_b v : vertices(tm_b))
+    {
+      output.vertices_b.push_back(v);
+      output.locations_b.push_back(location_on_closed_mesh(tm_a, cut_a, nullptr, nullptr, disk_a, located_b[index_b.at(v)]));
+    }
+    stats.located_b_on_a = num_vertices(tm_b);
+  }
+  output.compatible_a.swap(on_a);
+  output.compatible_b.swap(on_b);
+  output.compatible_triangles.swap(triangles);
+  output.plane_a.swap(inner_output.plane_a);
+  output.plane_b.swap(inner_output.plane_b);
+  output.plane_faces_a.swap(inner_output.plane_faces_a);
+  output.plane_faces_b.swap(inner_output.plane_faces_b);
+  return OK;
+}
+
+} // namespace internal
+#endif
+
 /// \ingroup PkgProgressiveEmbeddingMainFunctions
 ///
 /// computes a bijective map between two triangulated disks `tm_a` (A) and `tm_b` (B) in which every landmark vertex
@@ -768,800 +1610,51 @@ Error_code locate_on_refined_copy(const TriangleMeshA& tm_a, const Indexed_disk<
 ///         the triangulated overlay, for closed meshes also of the overlay joined along the cut), for closed meshes
 ///         `ERROR_NOT_A_DISK` when the cut is a single edge (two landmarks joined by an edge: the cut opens nothing) and
 ///         `ERROR_DEGENERATE_BORDER` when two points of an arc of the cut cannot be kept apart in double.
-#ifndef DOXYGEN_RUNNING
-namespace internal {
-
-// whether the mesh-pair parameter `tag` (compatible_meshes, planar_maps) is given with a pointer that is not null:
-// two null pointers ask for nothing, so that a caller deciding at run time (a binding) can pass the parameter always
-template <class Tag, class NamedParameters>
-bool asks_for_meshes(const NamedParameters& np, Tag tag)
-{
-  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, Tag>::value) return false;
-  else
-  {
-    const auto meshes = CGAL::parameters::get_parameter(np, tag);
-    return meshes.first != nullptr || meshes.second != nullptr;
-  }
-}
-
-template <class ConcurrencyTag, class TriangleMeshA, class TriangleMeshB, class LandmarkRange, class LocationMap,
-          class NamedParameters>
-Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const TriangleMeshB& tm_b, const LandmarkRange& landmarks,
-                                         LocationMap out, const NamedParameters& np);
-} // namespace internal
-#endif
-
 template <typename ConcurrencyTag = CGAL::Sequential_tag, class TriangleMeshA, class TriangleMeshB,
           class LandmarkRange, class LocationMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB& tm_b, const LandmarkRange& landmarks,
                                   LocationMap out, const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  typedef boost::graph_traits<TriangleMeshA>                         GTA;
-  typedef boost::graph_traits<TriangleMeshB>                         GTB;
-  typedef typename GTA::vertex_descriptor                            vertex_a;
-  typedef typename GTB::vertex_descriptor                            vertex_b;
-  typedef typename GTB::face_descriptor                              face_b;
-  typedef CGAL::Exact_predicates_inexact_constructions_kernel        K2;
-  typedef K2::Point_2                                                Point_2;
-  typedef typename boost::property_map<TriangleMeshA, CGAL::vertex_point_t>::const_type VPMA;
-  typedef typename boost::property_traits<VPMA>::value_type          Point_3a;
-  typedef CGAL::Surface_mesh<Point_3a>                               Work;
-  typedef typename boost::graph_traits<Work>::vertex_descriptor      wvertex;
-  typedef typename boost::property_map<TriangleMeshB, CGAL::vertex_point_t>::const_type VPMB;
-  typedef typename boost::property_traits<VPMB>::value_type          Point_3b;
-  typedef CGAL::Surface_mesh<Point_3b>                               Work_b;
-  typedef typename boost::graph_traits<Work_b>::vertex_descriptor    wbvertex;
-
   CGAL::Real_timer timer;
   timer.start();
-  Cross_parameterization_statistics local_stats;
-  Cross_parameterization_statistics* stats_out =
-    choose_parameter(get_parameter(np, internal_np::statistics), static_cast<Cross_parameterization_statistics*>(nullptr));
-  Cross_parameterization_statistics& stats = stats_out ? *stats_out : local_stats;
-  stats = Cross_parameterization_statistics();
-  auto finish = [&](Error_code ec) { stats.seconds_total = timer.time(); return ec; };
-  const double max_seconds = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
-                                              std::numeric_limits<double>::infinity());
-  const double optimization_seconds = choose_parameter(get_parameter(np, internal_np::optimization_time_limit), 30.);
-  if(!(max_seconds >= 0) || !(optimization_seconds >= 0)) return finish(ERROR_WRONG_PARAMETER);
-
-  // ---- 1. validation -----------------------------------------------------------------------
-  // two closed surfaces: cut into disks along the chain of landmarks
-  const bool closed_a = internal::is_closed_mesh(tm_a), closed_b = internal::is_closed_mesh(tm_b);
-  if(closed_a && closed_b) return internal::cross_parameterization_closed<ConcurrencyTag>(tm_a, tm_b, landmarks, out, np);
-  if(closed_a || closed_b) { stats.failed_mesh = closed_a ? 0 : 1; return finish(ERROR_NOT_A_DISK); }
-  const auto vpm_a = get(CGAL::vertex_point, tm_a);
-  const auto vpm_b = get(CGAL::vertex_point, tm_b);
-  internal::Indexed_disk<TriangleMeshA> disk_a;
-  internal::Indexed_disk<TriangleMeshB> disk_b;
-  Error_code ec = internal::make_indexed_disk(tm_a, GTA::null_halfedge(), disk_a);
-  if(ec != OK) { stats.failed_mesh = 0; return finish(ec); }
-  ec = internal::make_indexed_disk(tm_b, GTB::null_halfedge(), disk_b);
-  if(ec != OK) { stats.failed_mesh = 1; return finish(ec); }
-  stats.vertices_a = disk_a.number_of_vertices();
-  stats.faces_a = disk_a.number_of_faces();
-  stats.vertices_b = disk_b.number_of_vertices();
-  stats.faces_b = disk_b.number_of_faces();
-  if(!internal::points_are_finite(tm_a, get(CGAL::vertex_point, tm_a))) { stats.failed_mesh = 0; return finish(ERROR_NON_FINITE_COORDINATES); }
-  if(!internal::points_are_finite(tm_b, get(CGAL::vertex_point, tm_b))) { stats.failed_mesh = 1; return finish(ERROR_NON_FINITE_COORDINATES); }
-  std::unordered_map<vertex_a, std::size_t, boost::hash<vertex_a> > index_a;
-  std::unordered_map<vertex_b, std::size_t, boost::hash<vertex_b> > index_b;
-  for(std::size_t i = 0; i < disk_a.vertices.size(); ++i) index_a.emplace(disk_a.vertices[i], i);
-  for(std::size_t i = 0; i < disk_b.vertices.size(); ++i) index_b.emplace(disk_b.vertices[i], i);
-
-  std::vector<std::pair<std::size_t, std::size_t> > pairs; // interior landmarks as indices into disk_a, disk_b
-  std::vector<std::pair<std::size_t, std::size_t> > border_pairs; // border landmarks, likewise
-  std::vector<std::size_t> border_pair_input; // the position in `landmarks` of each border landmark
-  {
-    std::unordered_set<std::size_t> seen_a, seen_b;
-    std::size_t position = 0;
-    for(const auto& l : landmarks)
-    {
-      stats.failed_landmark = position;
-      const auto ia = index_a.find(l.first);
-      if(ia == index_a.end()) { stats.failed_mesh = 0; return finish(ERROR_WRONG_PARAMETER); }
-      const auto ib = index_b.find(l.second);
-      if(ib == index_b.end()) { stats.failed_mesh = 1; return finish(ERROR_WRONG_PARAMETER); }
-      // a border landmark needs a partner on the other border
-      const bool border_a = disk_a.on_border[ia->second], border_b = disk_b.on_border[ib->second];
-      if(border_a != border_b) { stats.failed_mesh = border_a ? 0 : 1; return finish(ERROR_CONSTRAINT_ON_BORDER); }
-      if(!seen_a.insert(ia->second).second) { stats.failed_mesh = 0; return finish(ERROR_DUPLICATE_CONSTRAINT); }
-      if(!seen_b.insert(ib->second).second) { stats.failed_mesh = 1; return finish(ERROR_DUPLICATE_CONSTRAINT); }
-      if(border_a) { border_pairs.emplace_back(ia->second, ib->second); border_pair_input.push_back(position); }
-      else pairs.emplace_back(ia->second, ib->second);
-      ++position;
-    }
-    stats.failed_landmark = std::size_t(-1);
-    stats.landmarks = pairs.size() + border_pairs.size();
-    stats.border_landmarks = border_pairs.size();
-  }
-
-  // ---- 2. the common border ------------------------------------------------------------------
-  // positions of the matched vertices on their border cycles
-  std::vector<std::size_t> border_pos_a(disk_a.number_of_vertices(), std::size_t(-1));
-  std::vector<std::size_t> border_pos_b(disk_b.number_of_vertices(), std::size_t(-1));
-  for(std::size_t k = 0; k < disk_a.border.size(); ++k) border_pos_a[disk_a.border[k]] = k;
-  for(std::size_t k = 0; k < disk_b.border.size(); ++k) border_pos_b[disk_b.border[k]] = k;
-  std::size_t start_a = 0, start_b = 0;
-  typedef std::pair<vertex_a, vertex_b> Vertex_pair;
-  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::border_vertex_pair_t>::value)
-  {
-    const Vertex_pair given = get_parameter(np, internal_np::border_vertex_pair);
-    const auto ia = index_a.find(given.first);
-    if(ia == index_a.end() || border_pos_a[ia->second] == std::size_t(-1)) { stats.failed_mesh = 0; return finish(ERROR_WRONG_PARAMETER); }
-    const auto ib = index_b.find(given.second);
-    if(ib == index_b.end() || border_pos_b[ib->second] == std::size_t(-1)) { stats.failed_mesh = 1; return finish(ERROR_WRONG_PARAMETER); }
-    start_a = border_pos_a[ia->second];
-    start_b = border_pos_b[ib->second];
-    // the pair is matched like a border landmark; a vertex of it in another landmark must have the same partner
-    bool listed = false;
-    for(const auto& bp : border_pairs)
-    {
-      if(bp.first == ia->second && bp.second == ib->second) listed = true;
-      else if(bp.first == ia->second) { stats.failed_mesh = 0; return finish(ERROR_DUPLICATE_CONSTRAINT); }
-      else if(bp.second == ib->second) { stats.failed_mesh = 1; return finish(ERROR_DUPLICATE_CONSTRAINT); }
-    }
-    if(!listed && !border_pairs.empty())
-    {
-      border_pairs.emplace_back(ia->second, ib->second);
-      border_pair_input.push_back(std::size_t(-1));
-    }
-  }
-  else if(!border_pairs.empty())
-  {
-    // the first border landmark at the corner (0,0)
-    start_a = border_pos_a[border_pairs.front().first];
-    start_b = border_pos_b[border_pairs.front().second];
-  }
-  else
-  {
-    const std::pair<std::size_t, std::size_t> start = internal::default_start_pair(disk_a, vpm_a, disk_b, vpm_b);
-    start_a = start.first;
-    start_b = start.second;
-  }
-  // a square needs four border vertices on each mesh: say which one has fewer
-  if(disk_a.border.size() < 4) { stats.failed_mesh = 0; return finish(ERROR_BORDER_TOO_SHORT); }
-  if(disk_b.border.size() < 4) { stats.failed_mesh = 1; return finish(ERROR_BORDER_TOO_SHORT); }
-  std::vector<Point_2> border_uv_a, border_uv_b;
-  if(border_pairs.size() < 2)
-    ec = internal::common_square_border(disk_a, vpm_a, start_a, disk_b, vpm_b, start_b, border_uv_a, border_uv_b);
-  else
-  {
-    // border landmarks: in the same order along both borders (each counterclockwise, from the start pair)
-    const std::size_t na = disk_a.border.size(), nb = disk_b.border.size();
-    std::vector<std::pair<std::size_t, std::size_t> > matched; // positions from the start
-    for(const auto& bp : border_pairs)
-      matched.emplace_back((border_pos_a[bp.first] + na - start_a) % na, (border_pos_b[bp.second] + nb - start_b) % nb);
-    std::vector<std::size_t> order(matched.size());
-    for(std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return matched[x].first < matched[y].first; });
-    std::vector<std::pair<std::size_t, std::size_t> > sorted;
-    for(std::size_t k : order)
-    {
-      if(!sorted.empty() && matched[k].second <= sorted.back().second)
-      {
-        stats.failed_landmark = border_pair_input[k]; // -1 for border_vertex_pair
-        stats.failed_mesh = 1;
-        return finish(ERROR_WRONG_PARAMETER); // not in A's order along B's border
-      }
-      sorted.push_back(matched[k]);
-    }
-    // the cut disks of two closed meshes come with their borders placed
-    if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::cut_request_t>::value)
-    {
-      const internal::Cut_request* request = get_parameter(np, internal_np::cut_request);
-      if(request->border_uv_a.size() != disk_a.number_of_vertices() || request->border_uv_b.size() != disk_b.number_of_vertices())
-        return finish(ERROR_WRONG_PARAMETER);
-      border_uv_a.resize(na);
-      border_uv_b.resize(nb);
-      for(std::size_t k = 0; k < na; ++k) border_uv_a[k] = request->border_uv_a[disk_a.border[k]];
-      for(std::size_t k = 0; k < nb; ++k) border_uv_b[k] = request->border_uv_b[disk_b.border[k]];
-    }
-    else
-      ec = internal::common_square_border_through(disk_a, vpm_a, start_a, disk_b, vpm_b, start_b, sorted,
-                                                  border_uv_a, border_uv_b);
-    if(ec == ERROR_BORDER_TOO_SHORT) stats.failed_mesh = 0;
-  }
-  if(ec != OK) return finish(ec);
-  stats.seconds_validation = timer.time();
-  auto remaining = [&]() { const double r = max_seconds - timer.time(); return r > 0 ? r : 0.; };
-
-  // ---- 3. B's map -------------------------------------------------------------------------------
-  std::unordered_map<vertex_b, Point_2, boost::hash<vertex_b> > uv_b_storage;
-  for(std::size_t i = 0; i < disk_b.vertices.size(); ++i) uv_b_storage[disk_b.vertices[i]] = Point_2(0, 0);
-  boost::associative_property_map<std::unordered_map<vertex_b, Point_2, boost::hash<vertex_b> > > uv_b(uv_b_storage);
-  for(std::size_t k = 0; k < disk_b.border.size(); ++k) put(uv_b, disk_b.vertices[disk_b.border[k]], border_uv_b[k]);
-  ec = parameterize_certified(tm_b, GTB::null_halfedge(), uv_b,
-    parameters::border_shape(Border_shape::FIXED,
-      parameters::optimization_policy(Optimization_policy::ALWAYS,
-        parameters::pipeline_statistics(&stats.map_b,
-          CGAL::parameters::maximum_running_time(remaining())))));
-  // An interior edge of B joining two border vertices of one side of the square (no placement of the corners kept
-  // it off) is flat in every map of B itself: B's first map is then made on a copy of B by constrained_embedding()
-  // without landmarks, which splits such edges at Steiner vertices. The cut disks of two closed meshes split them
-  // their own way (cross_parameterization_closed()).
-  Work_b first_b;
-  std::unordered_map<vertex_b, wbvertex, boost::hash<vertex_b> > to_first_b;
-  auto uv_first_b = first_b.template add_property_map<wbvertex, Point_2>("v:pe_cross_uv_first_b", Point_2(0, 0)).first;
-  std::vector<Steiner_point<wbvertex> > steiner_first_b;
-  bool first_refined = false;
-  constexpr bool cut_disks = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::cut_request_t>::value;
-  if(ec == ERROR_DEGENERATE_CHORD && !cut_disks)
-  {
-    std::vector<std::pair<vertex_b, wbvertex> > v2v_first;
-    CGAL::copy_face_graph(tm_b, first_b, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v_first)));
-    to_first_b.insert(v2v_first.begin(), v2v_first.end());
-    for(std::size_t k = 0; k < disk_b.border.size(); ++k) uv_first_b[to_first_b.at(disk_b.vertices[disk_b.border[k]])] = border_uv_b[k];
-    Constrained_embedding_statistics first_stats;
-    ec = constrained_embedding(first_b, std::vector<std::pair<wbvertex, Point_2> >(), uv_first_b,
-      parameters::steiner_points(&steiner_first_b,
-      parameters::border_shape(Border_shape::FIXED,
-        parameters::optimization_time_limit((std::min)(optimization_seconds, remaining()),
-          parameters::statistics(&first_stats,
-            CGAL::parameters::maximum_running_time(remaining()))))));
-    first_refined = true;
-    stats.chords_split_b = first_stats.chord_splits;
-  }
-  stats.report_b = first_refined ? check_embedding(first_b, uv_first_b) : check_embedding(tm_b, uv_b);
-  // the uv of vertex `i` of disk_b in B's first map
-  auto first_uv = [&](std::size_t i) {
-    return first_refined ? uv_first_b[to_first_b.at(disk_b.vertices[i])] : get(uv_b, disk_b.vertices[i]);
-  };
-  if(ec != OK || !stats.report_b.is_valid())
-  {
-    stats.seconds_map_b = timer.time() - stats.seconds_validation;
-    stats.failed_mesh = 1;
-    return finish(ec != OK ? ec : ERROR_INVALID_EMBEDDING);
-  }
-  const double seconds_first_b = timer.time() - stats.seconds_validation;
-  // ---- 4. B's map made again the way A's is made, and A's map ---------------------------------------
-  // B's matched map: constrained_embedding() on a copy of B, B's landmarks pinned where the first map put them. A's
-  // map starts from the same kind of map with the same pins and is optimized the same way, so that the two maps
-  // settle at the same place where the energy is flat (see the documentation). The copy may be refined by Steiner
-  // vertices (on B's faces) that the coarsening could not remove: B's map is then on the copy.
-  // A's map: constrained_embedding() on a copy of A, A's landmarks pinned at the uv of their partners in B's first
-  // map (the same points). The two do not depend on each other: with CGAL::Parallel_tag they run side by side.
-  Work_b work_b;
-  std::vector<std::pair<vertex_b, wbvertex> > v2v_b;
-  std::unordered_map<vertex_b, wbvertex, boost::hash<vertex_b> > to_work_b;
-  auto uv_wb = work_b.template add_property_map<wbvertex, Point_2>("v:pe_cross_uv_b", Point_2(0, 0)).first;
-  std::vector<Steiner_point<wbvertex> > steiner_b;
-  Embedding_report matched_report;
-  const bool make_matched = !pairs.empty() && choose_parameter(get_parameter(np, internal_np::matched_maps), true);
-  std::vector<std::pair<wbvertex, Point_2> > pins;
-  if(make_matched)
-  {
-    CGAL::copy_face_graph(tm_b, work_b, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v_b)));
-    to_work_b.insert(v2v_b.begin(), v2v_b.end());
-    for(std::size_t k = 0; k < disk_b.border.size(); ++k) uv_wb[to_work_b[disk_b.vertices[disk_b.border[k]]]] = border_uv_b[k];
-    for(const auto& p : pairs) pins.emplace_back(to_work_b[disk_b.vertices[p.second]], first_uv(p.second));
-  }
-  Work work;
-  std::vector<std::pair<vertex_a, wvertex> > v2v;
-  CGAL::copy_face_graph(tm_a, work, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v)));
-  std::unordered_map<vertex_a, wvertex, boost::hash<vertex_a> > to_work(v2v.begin(), v2v.end());
-  // A's copy brought near unit size by an exact power of two when it is beyond 2^+-100 (its squared areas would
-  // overflow or underflow in the composed distortion); its points are scaled back where they are output
-  const auto scaling_a = internal::normalize_points_3(work);
-  auto uv_a = work.template add_property_map<wvertex, Point_2>("v:pe_cross_uv", Point_2(0, 0)).first;
-  for(std::size_t k = 0; k < disk_a.border.size(); ++k) uv_a[to_work[disk_a.vertices[disk_a.border[k]]]] = border_uv_a[k];
-  std::vector<std::pair<wvertex, Point_2> > constraints;
-  for(const auto& p : pairs)
-    constraints.emplace_back(to_work[disk_a.vertices[p.first]], first_uv(p.second));
-  std::vector<Steiner_point<wvertex> > steiner;
-  double seconds_matched = 0, seconds_constrained_a = 0;
-  // each task writes only its own copy, uv map, Steiner list and statistics
-  bool matched_ran = false;
-  auto matched_task = [&]() {
-    if(!make_matched || !(remaining() > 0)) return;
-    matched_ran = true;
-    const double t0 = timer.time();
-    stats.matched_status = constrained_embedding(work_b, pins, uv_wb,
-      parameters::steiner_points(&steiner_b,
-      parameters::border_shape(Border_shape::FIXED,
-        parameters::optimization_time_limit((std::min)(optimization_seconds, remaining()),
-          parameters::statistics(&stats.map_b_matched,
-            CGAL::parameters::maximum_running_time(remaining()))))));
-    if(stats.matched_status == OK)
-    {
-      matched_report = check_embedding(work_b, uv_wb);
-      if(!matched_report.is_valid()) stats.matched_status = ERROR_INVALID_EMBEDDING;
-    }
-    seconds_matched = timer.time() - t0;
-  };
-  Error_code ec_a = OK;
-  auto a_task = [&]() {
-    const double t0 = timer.time();
-    ec_a = constrained_embedding(work, constraints, uv_a,
-      parameters::steiner_points(&steiner,
-      parameters::border_shape(Border_shape::FIXED,
-        parameters::optimization_time_limit((std::min)(optimization_seconds, remaining()),
-          parameters::statistics(&stats.map_a,
-            CGAL::parameters::maximum_running_time(remaining()))))));
-    seconds_constrained_a = timer.time() - t0;
-  };
-  // A's map first when they run one after the other: it is needed, B's matched map is not (under a time budget, what
-  // is left after A's map goes to it)
-  internal::run_pair<ConcurrencyTag>(a_task, matched_task);
-  const double after_tasks = timer.time();
-  ec = ec_a;
-  // B's matched map, made and certified, replaces the first one, unless it is more distorted: the first map has the
-  // same border and the same pins, so a matched map well above its energy went around the landmarks another way (a
-  // region wound around them), which A's map, made the other way, does not follow: the composition would carry a gross
-  // error there (seen on two meshes of one statue with 50 landmarks: 2.5% of the diagonal on average, 26% at most)
-  if(matched_ran && stats.matched_status == OK && !internal::matched_map_acceptable(stats.report_b, matched_report))
-    stats.matched_more_distorted = true;
-  else if(matched_ran && stats.matched_status == OK)
-  {
-    stats.matched_b = true;
-    stats.vertices_added_b = work_b.number_of_vertices() - disk_b.number_of_vertices();
-    if(stats.vertices_added_b == 0)
-    {
-      // the same map on B itself (certified again there; should that fail, B's first map is kept)
-      std::vector<Point_2> first(v2v_b.size());
-      for(std::size_t i = 0; i < v2v_b.size(); ++i)
-      {
-        first[i] = get(uv_b, v2v_b[i].first);
-        put(uv_b, v2v_b[i].first, uv_wb[v2v_b[i].second]);
-      }
-      const Embedding_report report = check_embedding(tm_b, uv_b);
-      if(report.is_valid()) stats.report_b = report;
-      else
-      {
-        for(std::size_t i = 0; i < v2v_b.size(); ++i) put(uv_b, v2v_b[i].first, first[i]);
-        stats.matched_b = false;
-        stats.matched_status = ERROR_INVALID_EMBEDDING;
-      }
-    }
-    else stats.report_b = matched_report;
-  }
-  // B's first map, when it is kept and was made on a refined copy, is B's map from here on
-  const bool first_copy_kept = first_refined && !stats.matched_b;
-  if(first_copy_kept) stats.vertices_added_b = first_b.number_of_vertices() - disk_b.number_of_vertices();
-  const bool refined_b = (stats.matched_b && stats.vertices_added_b > 0) || first_copy_kept;
-  const Work_b& refined_mesh_b = first_copy_kept ? first_b : work_b;
-  const auto& refined_uv_b = first_copy_kept ? uv_first_b : uv_wb;
-  const auto& to_refined_b = first_copy_kept ? to_first_b : to_work_b;
-  const auto& refined_steiner_b = first_copy_kept ? steiner_first_b : steiner_b;
-  // B's map as the rest uses it: on B, or on its refined copy (vertices, 3D points and faces in `side_b`'s order)
-  internal::Indexed_disk<Work_b> side_b;
-  std::vector<Point_2> side_uv;
-  std::vector<Point_3b> side_points;
-  if(refined_b)
-  {
-    const Error_code es = internal::make_indexed_disk(refined_mesh_b, boost::graph_traits<Work_b>::null_halfedge(), side_b);
-    if(es != OK) { stats.failed_mesh = 1; return finish(es); } // cannot happen: a refined disk
-    for(wbvertex v : side_b.vertices) { side_uv.push_back(refined_uv_b[v]); side_points.push_back(refined_mesh_b.point(v)); }
-  }
-  else
-    for(vertex_b v : disk_b.vertices) { side_uv.push_back(get(uv_b, v)); side_points.push_back(get(vpm_b, v)); }
-  const std::vector<std::array<std::size_t, 3> >& side_faces = refined_b ? side_b.faces : disk_b.faces;
-  stats.seconds_map_b = seconds_first_b + seconds_matched;
-  // no collect_garbage(): the descriptors of `steiner` stay valid (number_of_vertices() skips the removed ones)
-  stats.vertices_added_a = work.number_of_vertices() - disk_a.number_of_vertices();
-  // A's map measured against B's surface rather than the plane (internal/cross/composed_distortion.h); on failure
-  // the map stays as constrained_embedding() left it
-  if(ec == OK && choose_parameter(get_parameter(np, internal_np::composed_distortion), true) && remaining() > 0)
-  {
-    const double before_composed = timer.time();
-    std::vector<wvertex> fixed;
-    for(const auto& c : constraints) fixed.push_back(c.first);
-    // B's points for its metric only, near unit size like A's (the metric is the same up to rounding)
-    std::vector<Point_3b> metric_points(side_points);
-    internal::normalize_points_3(metric_points);
-    stats.composed_status = internal::optimize_composed_distortion(work, uv_a, fixed,
-                              internal::inverse_map_metric(side_uv, metric_points, side_faces),
-                              (std::min)(optimization_seconds, remaining()), stats.composed);
-    stats.seconds_composed = timer.time() - before_composed;
-  }
-  if(ec == OK) stats.report_a = check_embedding(work, uv_a);
-  stats.seconds_map_a = seconds_constrained_a + (timer.time() - after_tasks);
-  if(ec != OK) { stats.failed_mesh = 0; return finish(ec); }
-  if(!stats.report_a.is_valid()) { stats.failed_mesh = 0; return finish(ERROR_INVALID_EMBEDDING); }
-
-  // ---- 5. every vertex of A located in B's map -------------------------------------------------
-  const double before_location = timer.time();
-  std::vector<Point_2> map_b(disk_b.number_of_vertices()), queries(disk_a.number_of_vertices());
-  for(std::size_t i = 0; i < map_b.size(); ++i)
-    map_b[i] = refined_b ? refined_uv_b[to_refined_b.at(disk_b.vertices[i])] : get(uv_b, disk_b.vertices[i]);
-  for(std::size_t i = 0; i < queries.size(); ++i) queries[i] = uv_a[to_work[disk_a.vertices[i]]];
-  std::vector<face_b> faces_b;
-  faces_b.reserve(disk_b.number_of_faces());
-  for(face_b f : faces(tm_b)) faces_b.push_back(f);
-  std::vector<Cross_location<TriangleMeshB> > locations;
-  if(refined_b)
-  {
-    // located in the refined copy's map, then written in the face of B holding the refined face
-    ec = internal::locate_on_refined_copy(tm_b, disk_b, refined_mesh_b, refined_uv_b, to_refined_b, refined_steiner_b, queries, locations,
-                                          &stats.unlocated);
-    if(ec != OK) return finish(ec);
-  }
-  else
-  {
-    std::vector<internal::Map_location> located;
-    stats.unlocated = internal::locate_in_map(map_b, disk_b.faces, queries, located);
-    if(stats.unlocated > 0) return finish(ERROR_INVALID_EMBEDDING);
-    for(const internal::Map_location& l : located) locations.emplace_back(faces_b[l.face], l.barycentric);
-  }
-  for(const auto& l : locations)
-  {
-    const int zeros = int(l.second[0] == 0) + int(l.second[1] == 0) + int(l.second[2] == 0);
-    if(zeros == 2) ++stats.located_on_vertex;
-    else if(zeros == 1) ++stats.located_on_edge;
-    else ++stats.located_in_face;
-  }
-  stats.landmarks_exact = true;
-  std::vector<std::pair<std::size_t, std::size_t> > all_pairs(pairs);
-  all_pairs.insert(all_pairs.end(), border_pairs.begin(), border_pairs.end());
-  for(const auto& p : all_pairs)
-  {
-    const auto& l = locations[p.first];
-    const auto h = halfedge(l.first, tm_b);
-    const std::array<vertex_b, 3> corners{{ source(h, tm_b), target(h, tm_b), target(next(h, tm_b), tm_b) }};
-    bool at_partner = false;
-    for(int i = 0; i < 3; ++i)
-      if(corners[i] == disk_b.vertices[p.second] && l.second[i] == 1.) at_partner = true;
-    if(!at_partner) stats.landmarks_exact = false;
-  }
-  if(!stats.landmarks_exact) return finish(ERROR_INVALID_EMBEDDING);
-  // the other direction: B's vertices located on A's refined copy, then on A's faces
-  constexpr bool backwards = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::b_to_a_locations_t>::value;
-  std::vector<Cross_location<TriangleMeshA> > back;
-  if constexpr(backwards)
-  {
-    ec = internal::locate_on_refined_copy(tm_a, disk_a, work, uv_a, to_work, steiner, map_b, back);
-    if(ec != OK) return finish(ec);
-    stats.located_b_on_a = back.size();
-  }
-  stats.seconds_location = timer.time() - before_location;
-
-  // ---- 6. the compatible meshes: the overlay of the two maps, triangulated and certified ----------
-  constexpr bool compatible_given = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::compatible_meshes_t>::value;
-  internal::Cut_request* request = nullptr;
-  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::cut_request_t>::value)
-    request = get_parameter(np, internal_np::cut_request);
-  const bool compatible = internal::asks_for_meshes(np, internal_np::compatible_meshes) || (request && request->compatible);
-  std::vector<std::array<double, 3> > on_a, on_b;
-  std::vector<std::array<std::size_t, 3> > triangles;
-  if(compatible)
-  {
-    const double before_overlay = timer.time();
-    // the cut disks have no interior landmark, so B's map is never on a refined copy and its vertices are the disk's
-    std::vector<std::array<std::size_t, 2> >* origins = request && request->compatible ? &request->origins : nullptr;
-    if(origins != nullptr && refined_b) return finish(ERROR_WRONG_PARAMETER);
-    std::vector<wvertex> disk_a_in_work;
-    if(origins != nullptr)
-      for(vertex_a v : disk_a.vertices) disk_a_in_work.push_back(to_work[v]);
-    ec = refined_b ? internal::compatible_soups(work, uv_a, refined_mesh_b, side_b, side_uv, stats, on_a, on_b, triangles)
-                   : internal::compatible_soups(work, uv_a, tm_b, disk_b, map_b, stats, on_a, on_b, triangles, origins,
-                                                &disk_a_in_work);
-    stats.seconds_compatible = timer.time() - before_overlay;
-    if(ec != OK) return finish(ec);
-    if(scaling_a.exponent() != 0)
-      for(auto& p : on_a) for(double& x : p) x = std::ldexp(x, int(-scaling_a.exponent()));
-  }
-
-  // the planar maps as flat soups, A's vertices (then B's) first in their meshes' order
-  constexpr bool planar_given = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::planar_maps_t>::value;
-  const bool planar = internal::asks_for_meshes(np, internal_np::planar_maps);
-  std::vector<std::array<double, 3> > plane_a, plane_b;
-  std::vector<std::array<std::size_t, 3> > plane_faces_a, plane_faces_b;
-  if(planar)
-  {
-    std::vector<wvertex> first_a;
-    for(vertex_a v : disk_a.vertices) first_a.push_back(to_work[v]);
-    internal::planar_soup(work, uv_a, first_a, plane_a, plane_faces_a);
-    if(refined_b)
-    {
-      std::vector<wbvertex> order_b;
-      for(vertex_b v : disk_b.vertices) order_b.push_back(to_refined_b.at(v));
-      internal::planar_soup(refined_mesh_b, refined_uv_b, order_b, plane_b, plane_faces_b);
-    }
-    else
-      internal::planar_soup(tm_b, uv_b, disk_b.vertices, plane_b, plane_faces_b);
-  }
-
-  // ---- 7. the output, written only now that everything is certified --------------------------------
-  for(std::size_t i = 0; i < locations.size(); ++i) put(out, disk_a.vertices[i], locations[i]);
-  if constexpr(backwards)
+  internal::Cross_settings<TriangleMeshA, TriangleMeshB> settings;
+  internal::read_cross_settings(np, settings);
+  std::vector<std::pair<typename boost::graph_traits<TriangleMeshA>::vertex_descriptor,
+                        typename boost::graph_traits<TriangleMeshB>::vertex_descriptor> > pairs;
+  for(const auto& l : landmarks) pairs.emplace_back(l.first, l.second);
+  internal::Cross_output<TriangleMeshA, TriangleMeshB> output;
+  const Error_code ec = internal::cross_parameterization_disks<ConcurrencyTag>(tm_a, tm_b, pairs, settings, output);
+  if(ec != OK) return ec;
+  // the output, written only now that everything is certified
+  const double before_write = timer.time();
+  for(std::size_t i = 0; i < output.vertices_a.size(); ++i) put(out, output.vertices_a[i], output.locations[i]);
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::b_to_a_locations_t>::value)
   {
     auto out_b = get_parameter(np, internal_np::b_to_a_locations);
-    for(std::size_t i = 0; i < back.size(); ++i) put(out_b, disk_b.vertices[i], back[i]);
-  }
-  if constexpr(compatible_given)
-  {
-    const double before_write = timer.time();
-    const auto meshes = get_parameter(np, internal_np::compatible_meshes);
-    if(meshes.first != nullptr) internal::write_soup(on_a, triangles, *meshes.first);
-    if(meshes.second != nullptr) internal::write_soup(on_b, triangles, *meshes.second);
-    stats.seconds_compatible += timer.time() - before_write;
-  }
-  if(request && request->compatible)
-  {
-    request->on_a.swap(on_a);
-    request->on_b.swap(on_b);
-    request->triangles.swap(triangles);
-  }
-  if constexpr(planar_given)
-  {
-    const auto maps = get_parameter(np, internal_np::planar_maps);
-    if(maps.first != nullptr) internal::write_soup(plane_a, plane_faces_a, *maps.first);
-    if(maps.second != nullptr) internal::write_soup(plane_b, plane_faces_b, *maps.second);
-  }
-  return finish(OK);
-}
-
-#ifndef DOXYGEN_RUNNING
-namespace internal {
-
-// A location on a cut disk brought back to the closed mesh it was cut from: the corners of the disk's face, in the
-// order of the location, as vertices of the mesh (a point `i >= cut.vertices.size()`, the midpoint of a split chord
-// `(*midpoint)[i - cut.vertices.size()]`, gives half its weight to each end), in the mesh's face that holds the disk's
-// face (`(*face)[disk face]` indexes `cut.faces`). Null `face` and `midpoint`: the disk is the cut itself (its faces
-// in `cut.faces` order, no chord split).
-template <class TriangleMesh, class Disk>
-Cross_location<TriangleMesh> location_on_closed_mesh(const TriangleMesh& tm, const Cut_disk<TriangleMesh>& cut,
-                                                     const std::vector<std::size_t>* face,
-                                                     const std::vector<std::array<std::size_t, 2> >* midpoint,
-                                                     const Disk& disk, const Cross_location<Disk>& l)
-{
-  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex;
-  const std::size_t n_cut = cut.vertices.size();
-  const std::size_t disk_face = std::size_t(l.first);
-  const auto f = cut.faces[face != nullptr ? (*face)[disk_face] : disk_face];
-  const auto hc = halfedge(l.first, disk);
-  const std::size_t cut_corner[3] = { std::size_t(source(hc, disk)), std::size_t(target(hc, disk)),
-                                      std::size_t(target(next(hc, disk), disk)) };
-  const auto h = halfedge(f, tm);
-  const vertex corner[3] = { source(h, tm), target(h, tm), target(next(h, tm), tm) };
-  std::array<double, 3> w{{ 0, 0, 0 }};
-  auto add = [&](std::size_t point, double weight) {
-    for(int j = 0; j < 3; ++j)
-      if(corner[j] == cut.vertices[point]) w[j] += weight;
-  };
-  for(int k = 0; k < 3; ++k)
-  {
-    if(cut_corner[k] < n_cut) { add(cut_corner[k], l.second[k]); continue; }
-    CGAL_assertion(midpoint != nullptr);
-    const auto& m = (*midpoint)[cut_corner[k] - n_cut];
-    add(m[0], l.second[k] / 2);
-    add(m[1], l.second[k] / 2);
-  }
-  return Cross_location<TriangleMesh>(f, w);
-}
-
-// two closed genus-0 meshes: both cut along the chain of landmarks (cut_closed.h), the cut disks mapped with
-// every landmark copy a border landmark, the locations brought back to the vertices and faces of the meshes
-template <class ConcurrencyTag, class TriangleMeshA, class TriangleMeshB, class LandmarkRange, class LocationMap,
-          class NamedParameters>
-Error_code cross_parameterization_closed(const TriangleMeshA& tm_a, const TriangleMeshB& tm_b, const LandmarkRange& landmarks,
-                                         LocationMap out, const NamedParameters& np)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef typename boost::graph_traits<TriangleMeshA>::vertex_descriptor vertex_a;
-  typedef typename boost::graph_traits<TriangleMeshB>::vertex_descriptor vertex_b;
-  typedef typename boost::property_traits<typename boost::property_map<TriangleMeshA, CGAL::vertex_point_t>::const_type>::value_type Point_a;
-  typedef typename boost::property_traits<typename boost::property_map<TriangleMeshB, CGAL::vertex_point_t>::const_type>::value_type Point_b;
-  typedef CGAL::Surface_mesh<Point_a> Disk_a;
-  typedef CGAL::Surface_mesh<Point_b> Disk_b;
-  Cross_parameterization_statistics local_stats;
-  Cross_parameterization_statistics* stats_out =
-    choose_parameter(get_parameter(np, internal_np::statistics), static_cast<Cross_parameterization_statistics*>(nullptr));
-  Cross_parameterization_statistics& stats = stats_out ? *stats_out : local_stats;
-  stats = Cross_parameterization_statistics();
-  stats.closed = true;
-  // a closed mesh has no border: a border pair does not apply. The planar maps are those of the cut disks; the
-  // compatible meshes are their overlay welded along the cut; B's vertices are located on A's cut disk.
-  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::border_vertex_pair_t>::value)
-    return ERROR_WRONG_PARAMETER;
-  constexpr bool backwards = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::b_to_a_locations_t>::value;
-  const bool compatible = asks_for_meshes(np, internal_np::compatible_meshes);
-
-  if(!points_are_finite(tm_a, get(CGAL::vertex_point, tm_a))) { stats.failed_mesh = 0; return ERROR_NON_FINITE_COORDINATES; }
-  if(!points_are_finite(tm_b, get(CGAL::vertex_point, tm_b))) { stats.failed_mesh = 1; return ERROR_NON_FINITE_COORDINATES; }
-  // the chain: the landmarks in their order, each vertex once
-  std::vector<vertex_a> chain_a;
-  std::vector<vertex_b> chain_b;
-  {
-    std::unordered_set<vertex_a, boost::hash<vertex_a> > seen_a;
-    std::unordered_set<vertex_b, boost::hash<vertex_b> > seen_b;
-    std::unordered_set<vertex_a, boost::hash<vertex_a> > all_a(vertices(tm_a).begin(), vertices(tm_a).end());
-    std::unordered_set<vertex_b, boost::hash<vertex_b> > all_b(vertices(tm_b).begin(), vertices(tm_b).end());
-    for(const auto& l : landmarks)
-    {
-      stats.failed_landmark = chain_a.size();
-      if(all_a.count(l.first) == 0) { stats.failed_mesh = 0; return ERROR_WRONG_PARAMETER; }
-      if(all_b.count(l.second) == 0) { stats.failed_mesh = 1; return ERROR_WRONG_PARAMETER; }
-      if(!seen_a.insert(l.first).second) { stats.failed_mesh = 0; return ERROR_DUPLICATE_CONSTRAINT; }
-      if(!seen_b.insert(l.second).second) { stats.failed_mesh = 1; return ERROR_DUPLICATE_CONSTRAINT; }
-      chain_a.push_back(l.first);
-      chain_b.push_back(l.second);
-    }
-    stats.failed_landmark = std::size_t(-1);
-    stats.landmarks = chain_a.size();
-    if(chain_a.size() < 2) return ERROR_WRONG_PARAMETER; // a cut needs two landmarks
-  }
-  Cut_disk<TriangleMeshA> cut_a;
-  Cut_disk<TriangleMeshB> cut_b;
-  std::size_t failed = std::size_t(-1);
-  Error_code ec = cut_along_chain(tm_a, get(CGAL::vertex_point, tm_a), chain_a, cut_a, failed);
-  if(ec != OK) { stats.failed_mesh = 0; stats.failed_landmark = failed; return ec; }
-  ec = cut_along_chain(tm_b, get(CGAL::vertex_point, tm_b), chain_b, cut_b, failed);
-  if(ec != OK) { stats.failed_mesh = 1; stats.failed_landmark = failed; return ec; }
-  Disk_a disk_a;
-  {
-    std::vector<Point_a> pa;
-    for(vertex_a v : cut_a.vertices) pa.push_back(get(CGAL::vertex_point, tm_a, v));
-    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pa, cut_a.triangles, disk_a);
-  }
-  // B's cut disk as cut, or with its chords split (see below)
-  Disk_b disk_b;
-  Split_soup soup_b;
-  std::size_t chords_b = 0;
-  auto build_b = [&](bool split) {
-    std::vector<Point_b> pb;
-    for(vertex_b v : cut_b.vertices) pb.push_back(get(CGAL::vertex_point, tm_b, v));
-    if(split) chords_b = split_chords(cut_b, soup_b);
-    else
-    {
-      soup_b.triangles = cut_b.triangles;
-      soup_b.face.resize(cut_b.triangles.size());
-      for(std::size_t t = 0; t < soup_b.face.size(); ++t) soup_b.face[t] = t;
-      soup_b.midpoint.clear();
-    }
-    for(const auto& m : soup_b.midpoint) pb.push_back(CGAL::midpoint(pb[m[0]], pb[m[1]]));
-    disk_b.clear();
-    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pb, soup_b.triangles, disk_b);
-  };
-  build_b(false);
-  // every landmark a border landmark of the cut disks, each copy matched to the copy on the same side
-  std::unordered_map<vertex_a, std::size_t, boost::hash<vertex_a> > index_a;
-  std::unordered_map<vertex_b, std::size_t, boost::hash<vertex_b> > index_b;
-  for(std::size_t i = 0; i < cut_a.copy.size(); ++i) index_a.emplace(cut_a.vertices[i], i);
-  for(std::size_t i = 0; i < cut_b.copy.size(); ++i) index_b.emplace(cut_b.vertices[i], i);
-  typedef typename Disk_a::Vertex_index dva;
-  typedef typename Disk_b::Vertex_index dvb;
-  std::vector<std::pair<dva, dvb> > pairs;
-  std::vector<std::size_t> pair_landmark;
-  for(std::size_t k = 0; k < chain_a.size(); ++k)
-  {
-    const std::size_t ia = index_a.at(chain_a[k]), ib = index_b.at(chain_b[k]);
-    pairs.emplace_back(dva(ia), dvb(ib));
-    pair_landmark.push_back(k);
-    if(cut_a.copy[ia] != std::size_t(-1) && cut_b.copy[ib] != std::size_t(-1))
-    {
-      pairs.emplace_back(dva(cut_a.copy[ia]), dvb(cut_b.copy[ib]));
-      pair_landmark.push_back(k);
-    }
-  }
-  std::vector<Cross_location<Disk_b> > located(disk_a.number_of_vertices());
-  auto located_map = boost::make_iterator_property_map(located.begin(), get(CGAL::vertex_index, disk_a));
-  std::vector<Cross_location<Disk_a> > located_b; // B's cut disk's vertices on A's, with b_to_a_locations
-  Cross_parameterization_statistics inner;
-  const double max_seconds = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
-                                              std::numeric_limits<double>::infinity());
-  CGAL::Real_timer timer;
-  timer.start();
-  // both borders placed so that the two sides of the cut are placed alike (internal/cross/cut_border.h)
-  Cut_request request;
-  request.compatible = compatible;
-  std::vector<std::pair<std::size_t, std::size_t> > pair_indices;
-  for(const auto& p : pairs) pair_indices.emplace_back(std::size_t(p.first), std::size_t(p.second));
-  auto place_borders = [&]() {
-    Indexed_disk<Disk_a> indexed_a;
-    Indexed_disk<Disk_b> indexed_b;
-    Error_code e = make_indexed_disk(disk_a, boost::graph_traits<Disk_a>::null_halfedge(), indexed_a);
-    if(e != OK) { stats.failed_mesh = 0; return e; }
-    e = make_indexed_disk(disk_b, boost::graph_traits<Disk_b>::null_halfedge(), indexed_b);
-    if(e != OK) { stats.failed_mesh = 1; return e; }
-    std::size_t failed_mesh = std::size_t(-1);
-    e = cut_border_on_square(indexed_a, get(CGAL::vertex_point, disk_a), indexed_b, get(CGAL::vertex_point, disk_b),
-                             pair_indices, cut_twins(cut_a, disk_a.number_of_vertices()),
-                             cut_twins(cut_b, disk_b.number_of_vertices()), request.border_uv_a, request.border_uv_b,
-                             failed_mesh);
-    if(e != OK) stats.failed_mesh = failed_mesh;
-    return e;
-  };
-  auto map_disks = [&]() {
-    const auto disk_np = parameters::cut_request(&request, parameters::statistics(&inner,
-      parameters::composed_distortion(choose_parameter(get_parameter(np, internal_np::composed_distortion), true),
-        parameters::matched_maps(choose_parameter(get_parameter(np, internal_np::matched_maps), true),
-          parameters::optimization_time_limit(choose_parameter(get_parameter(np, internal_np::optimization_time_limit), 30.),
-            CGAL::parameters::maximum_running_time((std::max)(0., max_seconds - timer.time())))))));
-    // the planar maps of the cut disks, written by the call that succeeds (the points of a cut disk: the mesh's
-    // vertices in their order, then the copies on the cut, then B's chord midpoints)
-    auto with_planar_maps = [&](const auto& inner_np) {
-      if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::planar_maps_t>::value)
-        return cross_parameterization<ConcurrencyTag>(disk_a, disk_b, pairs, located_map,
-                                                      parameters::planar_maps(get_parameter(np, internal_np::planar_maps), inner_np));
-      else
-        return cross_parameterization<ConcurrencyTag>(disk_a, disk_b, pairs, located_map, inner_np);
-    };
-    if constexpr(backwards)
-    {
-      located_b.assign(disk_b.number_of_vertices(), Cross_location<Disk_a>());
-      return with_planar_maps(parameters::b_to_a_locations(
-        boost::make_iterator_property_map(located_b.begin(), get(CGAL::vertex_index, disk_b)), disk_np));
-    }
-    else
-      return with_planar_maps(disk_np);
-  };
-  ec = place_borders();
-  if(ec != OK) return ec;
-  ec = map_disks();
-  // Where two paths of the cut run side by side (up and down a limb to a landmark at its tip), the edges
-  // across them join two border vertices of B's disk, and where both ends lie on one side of the square, B's
-  // map would flatten them: then B's disk is mapped again with those edges split
-  // at their midpoints (only then, so that the map of a disk that needs no split is the disk's own)
-  if(ec == ERROR_DEGENERATE_CHORD && inner.failed_mesh == 1)
-  {
-    build_b(true);
-    if(chords_b > 0)
-    {
-      ec = place_borders(); // the same borders, B's midpoints added inside
-      if(ec == OK) ec = map_disks();
-    }
-  }
-  const std::size_t inner_failed = inner.failed_landmark;
-  stats = inner;
-  stats.closed = true;
-  stats.landmarks = chain_a.size();
-  stats.cut_edges_a = cut_a.path_edges;
-  stats.cut_edges_b = cut_b.path_edges;
-  stats.chords_split_b = chords_b;
-  stats.failed_landmark = inner_failed < pair_landmark.size() ? pair_landmark[inner_failed] : std::size_t(-1);
-  if(ec != OK) return ec;
-  // the compatible meshes: the overlay of the cut disks' maps welded along the cut (every border point of it is a
-  // vertex of A's or B's disk, named by the vertex of the closed mesh it is a copy of), then certified closed genus 0
-  std::vector<std::array<double, 3> > on_a, on_b;
-  std::vector<std::array<std::size_t, 3> > triangles;
-  if(compatible)
-  {
-    CGAL::Real_timer weld_timer;
-    weld_timer.start();
-    std::vector<std::size_t> mesh_a(cut_a.vertices.size()), mesh_b(cut_b.vertices.size());
-    for(std::size_t i = 0; i < mesh_a.size(); ++i) mesh_a[i] = index_a.at(cut_a.vertices[i]);
-    for(std::size_t i = 0; i < mesh_b.size(); ++i) mesh_b[i] = index_b.at(cut_b.vertices[i]);
-    std::vector<std::array<std::size_t, 2> > origin(request.origins.size(), {{ std::size_t(-1), std::size_t(-1) }});
-    for(std::size_t i = 0; i < origin.size(); ++i)
-    {
-      const std::array<std::size_t, 2>& o = request.origins[i];
-      if(o[0] < mesh_a.size()) origin[i][0] = mesh_a[o[0]];
-      if(o[1] < mesh_b.size()) origin[i][1] = mesh_b[o[1]]; // B's chord midpoints are inside: no origin
-    }
-    on_a.swap(request.on_a);
-    on_b.swap(request.on_b);
-    triangles.swap(request.triangles);
-    ec = weld_cut_overlay(on_a, on_b, triangles, origin, stats.cut_vertices_welded);
-    stats.seconds_compatible += weld_timer.time();
-    if(ec != OK) return ec;
-    stats.compatible_vertices = on_a.size();
-    stats.compatible_faces = triangles.size();
-  }
-  // back to the faces of the closed meshes (A's cut disk has no midpoint and its faces are the cut's)
-  for(vertex_a v : vertices(tm_a))
-    put(out, v, location_on_closed_mesh(tm_b, cut_b, &soup_b.face, &soup_b.midpoint, disk_b, located[index_a.at(v)]));
-  if constexpr(backwards)
-  {
-    auto out_b = get_parameter(np, internal_np::b_to_a_locations);
-    for(vertex_b v : vertices(tm_b))
-      put(out_b, v, location_on_closed_mesh(tm_a, cut_a, nullptr, nullptr, disk_a, located_b[index_b.at(v)]));
-    stats.located_b_on_a = num_vertices(tm_b);
+    for(std::size_t i = 0; i < output.vertices_b.size(); ++i) put(out_b, output.vertices_b[i], output.locations_b[i]);
   }
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::compatible_meshes_t>::value)
   {
     const auto meshes = get_parameter(np, internal_np::compatible_meshes);
-    if(meshes.first != nullptr) write_soup(on_a, triangles, *meshes.first);
-    if(meshes.second != nullptr) write_soup(on_b, triangles, *meshes.second);
+    if(meshes.first != nullptr) internal::write_soup(output.compatible_a, output.compatible_triangles, *meshes.first);
+    if(meshes.second != nullptr) internal::write_soup(output.compatible_b, output.compatible_triangles, *meshes.second);
+  }
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::planar_maps_t>::value)
+  {
+    const auto maps = get_parameter(np, internal_np::planar_maps);
+    if(maps.first != nullptr) internal::write_soup(output.plane_a, output.plane_faces_a, *maps.first);
+    if(maps.second != nullptr) internal::write_soup(output.plane_b, output.plane_faces_b, *maps.second);
+  }
+  if(settings.statistics != nullptr)
+  {
+    const double written = timer.time() - before_write;
+    if(settings.compatible_meshes) settings.statistics->seconds_compatible += written;
+    settings.statistics->seconds_total += written;
   }
   return OK;
 }
 
-} // namespace internal
-#endif
 
 /// \ingroup PkgProgressiveEmbeddingMainFunctions
 ///

@@ -688,7 +688,7 @@ PE_TEST_GROUP(constrained_embedding_phases)
   const Snapshot<Surface_mesh, decltype(uv)> before(m, uv);
   PE::Constrained_embedding_statistics st;
   const auto np = PE::parameters::statistics(&st).optimization_time_limit(5.);
-  typedef PE::internal::Constrained_embedder<CGAL::Sequential_tag, Surface_mesh, decltype(uv), decltype(np)> Embedder;
+  typedef PE::internal::Constrained_embedder_for<CGAL::Sequential_tag, Surface_mesh, decltype(uv), decltype(np)> Embedder;
   Embedder e(m, uv, np);
   CHECK(&e.stats == &st, "the caller's statistics");
   CHECK(e.read_parameters() == PE::OK && e.optimize && e.coarsen && e.optimization_seconds == 5., "parameters read");
@@ -743,7 +743,7 @@ PE_TEST_GROUP(constrained_embedding_phases)
   for(auto v : vertices(m2)) if(CGAL::is_border(v, m2)) { bad.emplace_back(v, Point_2(0.5, 0.5)); break; }
   PE::Constrained_embedding_statistics st2;
   const auto np2 = PE::parameters::statistics(&st2);
-  PE::internal::Constrained_embedder<CGAL::Sequential_tag, Surface_mesh, decltype(uv2), decltype(np2)> e2(m2, uv2, np2);
+  PE::internal::Constrained_embedder_for<CGAL::Sequential_tag, Surface_mesh, decltype(uv2), decltype(np2)> e2(m2, uv2, np2);
   CHECK(e2.run(bad) == PE::ERROR_CONSTRAINT_ON_BORDER && st2.failed_constraint == 0 && st2.paths == 0, "stopped in validate");
   return EXIT_SUCCESS;
 }

@@ -7,7 +7,7 @@
 
 // The pipeline of constrained_embedding() (MatchMaker++) as a class with one method per phase:
 //
-//   read_parameters()   the named parameters (budgets, flags, traits); ERROR_WRONG_PARAMETER when out of range
+//   read_parameters()   the named parameters (read by the constructor) checked; ERROR_WRONG_PARAMETER when out of range
 //   validate()          the caller's mesh indexed (a disk, or a genus-0 surface with holes), the constraints
 //                       checked (interior, distinct, finite), the border placed (fixed or a shape)
 //   make_partition()    the domain cut into convex polygons (a clockwise border mirrored; an immersed disk cut
@@ -247,18 +247,16 @@ Error_code hull_corners(const std::vector<Point_2>& P, ExactOrientation orient, 
   return (forward || backward) ? OK : ERROR_NON_CONVEX_BORDER;
 }
 
-// face_patch_map of constrained_embedding(): nothing to write without it
+// face_patch_map of constrained_embedding(), through `put_patch(f, patch)` (the writer the constructor of
+// Constrained_embedder made for the caller's map; empty: no map, nothing written)
 template <class TriangleMesh, class Work, class CopyToMesh, class Labels>
-void write_face_patch_map(const TriangleMesh&, const Work&, const CopyToMesh&, const Labels&, CGAL::internal_np::Param_not_found)
-{}
-
-template <class TriangleMesh, class Work, class CopyToMesh, class Labels, class FacePatchMap>
 void write_face_patch_map(const TriangleMesh& tm, const Work& work, const CopyToMesh& copy_to_mesh, const Labels& labels,
-                          FacePatchMap fpm)
+                          const std::function<void(typename boost::graph_traits<TriangleMesh>::face_descriptor,
+                                                   std::size_t)>& put_patch)
 {
+  if(!put_patch) return;
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   typedef typename boost::graph_traits<Work>::vertex_descriptor         wvertex;
-  typedef typename boost::property_traits<FacePatchMap>::value_type     Value;
   std::unordered_map<vertex_descriptor, wvertex, boost::hash<vertex_descriptor> > to_copy;
   for(const auto& p : copy_to_mesh) to_copy.emplace(p.second, p.first);
   for(auto f : faces(tm))
@@ -268,24 +266,28 @@ void write_face_patch_map(const TriangleMesh& tm, const Work& work, const CopyTo
     if(a == to_copy.end() || b == to_copy.end()) continue; // cannot happen: every vertex of tm has its copy
     const auto wh = halfedge(a->second, b->second, work);
     if(!wh.second || CGAL::is_border(wh.first, work)) continue; // cannot happen: same connectivity
-    put(fpm, f, static_cast<Value>(get(labels, face(wh.first, work))));
+    put_patch(f, static_cast<std::size_t>(get(labels, face(wh.first, work))));
   }
 }
 
-template <class ConcurrencyTag, class TriangleMesh, class VertexUVMap, class NamedParameters>
+// The class is a template of the mesh, the maps and the traits only, not of the named parameters: the
+// constructor reads them once (the maps it writes through type-erased writers), so that calls with different
+// parameter packs share one instantiation of the whole pipeline (a test program passes dozens of packs).
+// Constrained_embedder_for<ConcurrencyTag, TriangleMesh, VertexUVMap, NamedParameters> names the class
+// constrained_embedding() makes for a pack.
+template <class ConcurrencyTag, class TriangleMesh, class VertexUVMap, class VertexPointMap, class GeomTraits>
 class Constrained_embedder
 {
 public:
   typedef boost::graph_traits<TriangleMesh>                                       GT;
   typedef typename GT::vertex_descriptor                                          vertex_descriptor;
   typedef typename GT::halfedge_descriptor                                        halfedge_descriptor;
-  typedef typename Uv_map_types<VertexUVMap>::Traits                              Default_traits;
-  typedef typename CGAL::internal_np::Lookup_named_param_def<
-            CGAL::internal_np::geom_traits_t, NamedParameters, Default_traits>::type Traits;
+  typedef typename GT::face_descriptor                                            face_descriptor;
+  typedef GeomTraits                                                              Traits;
   typedef typename Traits::Point_2                                                Point_2;
   static_assert(std::is_same<Point_2, typename Uv_map_types<VertexUVMap>::Point_2>::value,
                 "the geom_traits' Point_2 must be the value type of the uv map");
-  typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::type   VPM;
+  typedef VertexPointMap                                                          VPM;
   typedef typename boost::property_traits<VPM>::value_type                        Point_3;
   typedef typename CGAL::Kernel_traits<Point_3>::Kernel                           K3;
   typedef CGAL::Surface_mesh<Point_3>                                             Work;
@@ -296,10 +298,9 @@ public:
   typedef typename Work::template Property_map<wface, std::size_t>                Work_patch;
   typedef typename Work::template Property_map<wvertex, int>                      Work_turns;
 
-  // ---- the caller's objects and parameters ----
+  // ---- the caller's objects and parameters (read by the constructor) ----
   TriangleMesh& tm;
   VertexUVMap uvm;
-  const NamedParameters& np;
   VPM vpm;
   Traits traits;
   typename Traits::Exact_orientation_2 orient;
@@ -313,6 +314,11 @@ public:
   Constrained_embedding_statistics& stats;
   std::vector<Steiner_point<vertex_descriptor> >* steiner_out = nullptr;
   std::function<bool(const Constrained_embedding_progress&)> progress; // the `phase_callback`
+  std::size_t max_steiner_vertices = std::size_t(-1); // `maximum_steiner_vertices`; -1: not given
+  // the border positions (`bpos`) of `disk` as the named parameters place them (place_border())
+  std::function<Error_code(const Indexed_disk<TriangleMesh>&, VertexUVMap, VPM, const Traits&, std::vector<Point_2>&)> border_placer;
+  std::function<int(vertex_descriptor)> rotation_index; // `vertex_rotation_index_map`; empty: not given
+  std::function<void(face_descriptor, std::size_t)> put_patch; // `face_patch_map`; empty: not given
   bool stopped = false;                     // the callback stopped the optimization
 
   // ---- validate(): the indexed mesh, the constraints, the border ----
@@ -359,16 +365,48 @@ public:
   Work_turns work_turns;
   std::vector<Vertex_removal<wvertex> > removals;
 
-  Constrained_embedder(TriangleMesh& tm_, VertexUVMap uvm_, const NamedParameters& np_)
-    : tm(tm_), uvm(uvm_), np(np_),
-      vpm(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np_, CGAL::internal_np::vertex_point),
+  // reads every named parameter (their values are checked by read_parameters(), the first phase); `np` must
+  // outlive the object (the border placement reads it when validate() runs)
+  template <class NamedParameters>
+  Constrained_embedder(TriangleMesh& tm_, VertexUVMap uvm_, const NamedParameters& np)
+    : tm(tm_), uvm(uvm_),
+      vpm(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
                                              get_property_map(CGAL::vertex_point, tm_))),
-      traits(CGAL::parameters::choose_parameter<Traits>(CGAL::parameters::get_parameter(np_, CGAL::internal_np::geom_traits))),
+      traits(CGAL::parameters::choose_parameter<Traits>(CGAL::parameters::get_parameter(np, CGAL::internal_np::geom_traits))),
       orient(traits.exact_orientation_2_object()),
-      stats(*CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np_, internal_np::statistics), &local_stats))
+      stats(*CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::statistics), &local_stats))
   {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
     timer.start();
     stats = Constrained_embedding_statistics();
+    steiner_out = choose_parameter(get_parameter(np, internal_np::steiner_points),
+                                   static_cast<std::vector<Steiner_point<vertex_descriptor> >*>(nullptr));
+    shape = choose_parameter(get_parameter(np, internal_np::border_shape), Border_shape::FIXED);
+    wts = choose_parameter(get_parameter(np, internal_np::weights), Weights::UNIFORM);
+    optimize = choose_parameter(get_parameter(np, internal_np::optimize), true);
+    coarsen = choose_parameter(get_parameter(np, internal_np::coarsen), true);
+    kinetic = choose_parameter(get_parameter(np, internal_np::kinetic_tracing), true);
+    verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+    max_seconds = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
+                                   std::numeric_limits<double>::infinity());
+    optimization_seconds = choose_parameter(get_parameter(np, internal_np::optimization_time_limit),
+                                            std::numeric_limits<double>::infinity());
+    progress = choose_parameter(get_parameter(np, internal_np::phase_callback),
+                                std::function<bool(const Constrained_embedding_progress&)>());
+    max_steiner_vertices = choose_parameter(get_parameter(np, internal_np::maximum_steiner_vertices), std::size_t(-1));
+    border_placer = [&np](const Indexed_disk<TriangleMesh>& d, VertexUVMap u, VPM p, const Traits& gt, std::vector<Point_2>& out)
+                    { return internal::place_border(d, u, p, gt, np, out); };
+    typedef typename CGAL::internal_np::Lookup_named_param_def<internal_np::vertex_rotation_index_map_t, NamedParameters,
+                                                               CGAL::internal_np::Param_not_found>::type Turn_map;
+    if constexpr(!std::is_same<Turn_map, CGAL::internal_np::Param_not_found>::value)
+      rotation_index = [turns = get_parameter(np, internal_np::vertex_rotation_index_map)](vertex_descriptor v)
+                       { return internal::read_rotation_index(turns, v); };
+    typedef typename CGAL::internal_np::Lookup_named_param_def<internal_np::face_patch_map_t, NamedParameters,
+                                                               CGAL::internal_np::Param_not_found>::type Patch_map;
+    if constexpr(!std::is_same<Patch_map, CGAL::internal_np::Param_not_found>::value)
+      put_patch = [fpm = get_parameter(np, internal_np::face_patch_map)](face_descriptor f, std::size_t patch)
+                  { put(fpm, f, static_cast<typename boost::property_traits<Patch_map>::value_type>(patch)); };
   }
 
   double remaining() const { return (std::max)(0., max_seconds - timer.time()); }
@@ -419,26 +457,11 @@ public:
     return ec;
   }
 
-  Error_code read_parameters()
+  // the values of the named parameters the constructor read
+  Error_code read_parameters() const
   {
-    using CGAL::parameters::choose_parameter;
-    using CGAL::parameters::get_parameter;
-    steiner_out = choose_parameter(get_parameter(np, internal_np::steiner_points),
-                                   static_cast<std::vector<Steiner_point<vertex_descriptor> >*>(nullptr));
-    shape = choose_parameter(get_parameter(np, internal_np::border_shape), Border_shape::FIXED);
-    wts = choose_parameter(get_parameter(np, internal_np::weights), Weights::UNIFORM);
-    optimize = choose_parameter(get_parameter(np, internal_np::optimize), true);
-    coarsen = choose_parameter(get_parameter(np, internal_np::coarsen), true);
-    kinetic = choose_parameter(get_parameter(np, internal_np::kinetic_tracing), true);
-    verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
-    max_seconds = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
-                                   std::numeric_limits<double>::infinity());
     if(!(max_seconds >= 0)) return ERROR_WRONG_PARAMETER;
-    optimization_seconds = choose_parameter(get_parameter(np, internal_np::optimization_time_limit),
-                                            std::numeric_limits<double>::infinity());
     if(!(optimization_seconds >= 0)) return ERROR_WRONG_PARAMETER;
-    progress = choose_parameter(get_parameter(np, internal_np::phase_callback),
-                                std::function<bool(const Constrained_embedding_progress&)>());
     return OK;
   }
 
@@ -446,7 +469,6 @@ public:
   template <class ConstraintRange>
   Error_code validate(const ConstraintRange& constraints)
   {
-    using CGAL::parameters::get_parameter;
     const double t0 = timer.time();
     disk = internal::Indexed_disk<TriangleMesh>();
     Error_code ec = internal::make_indexed_disk(tm, GT::null_halfedge(), disk);
@@ -519,25 +541,20 @@ public:
       }
     }
     bpos.clear();
-    ec = internal::place_border(disk, uvm, vpm, traits, np, bpos);
+    ec = border_placer(disk, uvm, vpm, traits, bpos);
     // a fixed border that is not convex (read in full before the test): a simple polygon gives an
     // embedding, a weakly self-overlapping one an immersion (step 2 decides which)
     // rotation indices of the border vertices (a fixed border that wraps around some of them)
     border_turns.clear();
     total_turns = 0;
-    if(shape == Border_shape::FIXED && !holes)
+    if(shape == Border_shape::FIXED && !holes && rotation_index)
     {
-      typedef typename CGAL::internal_np::Lookup_named_param_def<internal_np::vertex_rotation_index_map_t, NamedParameters,
-                                                                 CGAL::internal_np::Param_not_found>::type Turn_map;
-      if constexpr(!std::is_same<Turn_map, CGAL::internal_np::Param_not_found>::value)
+      border_turns.resize(nb);
+      for(std::size_t k = 0; k < nb; ++k)
       {
-        border_turns.resize(nb);
-        for(std::size_t k = 0; k < nb; ++k)
-        {
-          border_turns[k] = internal::read_rotation_index(get_parameter(np, internal_np::vertex_rotation_index_map), disk.vertices[disk.border[k]]);
-          if(border_turns[k] < 0) return ERROR_WRONG_PARAMETER;
-          total_turns += border_turns[k];
-        }
+        border_turns[k] = rotation_index(disk.vertices[disk.border[k]]);
+        if(border_turns[k] < 0) return ERROR_WRONG_PARAMETER;
+        total_turns += border_turns[k];
       }
     }
     non_convex = (ec == ERROR_NON_CONVEX_BORDER || (ec == OK && total_turns > 0)) && shape == Border_shape::FIXED &&
@@ -783,8 +800,6 @@ public:
 
   Error_code trace()
   {
-    using CGAL::parameters::choose_parameter;
-    using CGAL::parameters::get_parameter;
     const double t_tracing = timer.time();
     Error_code ec = OK;
     if(!(remaining() > 0)) return ERROR_BUDGET_EXHAUSTED;
@@ -802,7 +817,7 @@ public:
       // the guided ones run only when it added at most 4 times the mesh's vertices, each stopped after a
       // quarter of its time (at least 1 s). A budget given by the caller bounds every tracing.
       const std::size_t unset = std::size_t(-1);
-      const std::size_t user_max = choose_parameter(get_parameter(np, internal_np::maximum_steiner_vertices), unset);
+      const std::size_t user_max = max_steiner_vertices;
       const std::size_t ne = static_cast<std::size_t>(num_edges(work));
       // the default budgets of each tracing: internal/constrained/tracer_budgets.h
       const std::size_t first_max = user_max != unset ? user_max : internal::first_tracing_budget.of(static_cast<std::size_t>(num_vertices(work)));
@@ -1405,7 +1420,7 @@ public:
     if(mirrored) stats.report.clockwise = !stats.report.clockwise;
     // the patch of every face of the refined tm: the faces of tm are the faces of the copy (same
     // connectivity after the replay), each found from one of its halfedges (same orientation)
-    internal::write_face_patch_map(tm, work, copy_to_mesh, fpatch, CGAL::parameters::get_parameter(np, internal_np::face_patch_map));
+    internal::write_face_patch_map(tm, work, copy_to_mesh, fpatch, put_patch);
     if(steiner_out)
     {
       steiner_out->clear();
@@ -1429,6 +1444,13 @@ public:
     return OK;
   }
 };
+
+template <class ConcurrencyTag, class TriangleMesh, class VertexUVMap, class NamedParameters>
+using Constrained_embedder_for =
+  Constrained_embedder<ConcurrencyTag, TriangleMesh, VertexUVMap,
+                       typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::type,
+                       typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::geom_traits_t, NamedParameters,
+                                                                          typename Uv_map_types<VertexUVMap>::Traits>::type>;
 
 } // namespace internal
 } // namespace Progressive_embedding

@@ -577,6 +577,11 @@ bool asks_for_meshes(const NamedParameters& np, Tag tag)
 // The named parameters of cross_parameterization(), read once by it: the computation below is a template of the two
 // meshes only, so that calls with different parameter packs (and with different location maps) share one
 // instantiation of it; what it computes comes back in a Cross_output, written by the caller once all is certified.
+// the landmarks as (vertex of A, vertex of B) pairs
+template <class TriangleMeshA, class TriangleMeshB>
+using Landmark_pairs = std::vector<std::pair<typename boost::graph_traits<TriangleMeshA>::vertex_descriptor,
+                                             typename boost::graph_traits<TriangleMeshB>::vertex_descriptor> >;
+
 template <class TriangleMeshA, class TriangleMeshB>
 struct Cross_settings
 {
@@ -631,16 +636,14 @@ void read_cross_settings(const NamedParameters& np, Cross_settings<TriangleMeshA
 template <class ConcurrencyTag, class TriangleMeshA, class TriangleMeshB>
 Error_code cross_parameterization_closed(
   const TriangleMeshA& tm_a, const TriangleMeshB& tm_b,
-  const std::vector<std::pair<typename boost::graph_traits<TriangleMeshA>::vertex_descriptor,
-                              typename boost::graph_traits<TriangleMeshB>::vertex_descriptor> >& landmarks,
+  const Landmark_pairs<TriangleMeshA, TriangleMeshB>& landmarks,
   const Cross_settings<TriangleMeshA, TriangleMeshB>& settings, Cross_output<TriangleMeshA, TriangleMeshB>& output);
 
 // cross_parameterization() of two disks (or, both closed, through cross_parameterization_closed())
 template <class ConcurrencyTag, class TriangleMeshA, class TriangleMeshB>
 Error_code cross_parameterization_disks(
   const TriangleMeshA& tm_a, const TriangleMeshB& tm_b,
-  const std::vector<std::pair<typename boost::graph_traits<TriangleMeshA>::vertex_descriptor,
-                              typename boost::graph_traits<TriangleMeshB>::vertex_descriptor> >& landmarks,
+  const Landmark_pairs<TriangleMeshA, TriangleMeshB>& landmarks,
   const Cross_settings<TriangleMeshA, TriangleMeshB>& settings, Cross_output<TriangleMeshA, TriangleMeshB>& output)
 {
   typedef boost::graph_traits<TriangleMeshA>                         GTA;
@@ -1175,8 +1178,7 @@ Cross_location<TriangleMesh> location_on_closed_mesh(const TriangleMesh& tm, con
 template <class ConcurrencyTag, class TriangleMeshA, class TriangleMeshB>
 Error_code cross_parameterization_closed(
   const TriangleMeshA& tm_a, const TriangleMeshB& tm_b,
-  const std::vector<std::pair<typename boost::graph_traits<TriangleMeshA>::vertex_descriptor,
-                              typename boost::graph_traits<TriangleMeshB>::vertex_descriptor> >& landmarks,
+  const Landmark_pairs<TriangleMeshA, TriangleMeshB>& landmarks,
   const Cross_settings<TriangleMeshA, TriangleMeshB>& settings, Cross_output<TriangleMeshA, TriangleMeshB>& output)
 {
   typedef typename boost::graph_traits<TriangleMeshA>::vertex_descriptor vertex_a;
@@ -1620,8 +1622,7 @@ Error_code cross_parameterization(const TriangleMeshA& tm_a, const TriangleMeshB
   timer.start();
   internal::Cross_settings<TriangleMeshA, TriangleMeshB> settings;
   internal::read_cross_settings(np, settings);
-  std::vector<std::pair<typename boost::graph_traits<TriangleMeshA>::vertex_descriptor,
-                        typename boost::graph_traits<TriangleMeshB>::vertex_descriptor> > pairs;
+  internal::Landmark_pairs<TriangleMeshA, TriangleMeshB> pairs;
   for(const auto& l : landmarks) pairs.emplace_back(l.first, l.second);
   internal::Cross_output<TriangleMeshA, TriangleMeshB> output;
   const Error_code ec = internal::cross_parameterization_disks<ConcurrencyTag>(tm_a, tm_b, pairs, settings, output);

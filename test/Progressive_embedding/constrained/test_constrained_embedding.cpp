@@ -743,7 +743,10 @@ PE_TEST_GROUP(constrained_embedding_phases)
   for(auto v : vertices(m2)) if(CGAL::is_border(v, m2)) { bad.emplace_back(v, Point_2(0.5, 0.5)); break; }
   PE::Constrained_embedding_statistics st2;
   const auto np2 = PE::parameters::statistics(&st2);
-  PE::internal::Constrained_embedder_for<CGAL::Sequential_tag, Surface_mesh, decltype(uv2), decltype(np2)> e2(m2, uv2, np2);
+  typedef PE::internal::Constrained_embedder_for<CGAL::Sequential_tag, Surface_mesh, decltype(uv2), decltype(np2)> Embedder2;
+  // another pack of named parameters, the same pipeline: compiled once per mesh type, not once per pack
+  static_assert(std::is_same<Embedder, Embedder2>::value, "one Constrained_embedder for both packs");
+  Embedder2 e2(m2, uv2, np2);
   CHECK(e2.run(bad) == PE::ERROR_CONSTRAINT_ON_BORDER && st2.failed_constraint == 0 && st2.paths == 0, "stopped in validate");
   return EXIT_SUCCESS;
 }

@@ -37,7 +37,8 @@ struct Optimization_statistics
   bool time_budget_reached = false;
   /// area-weighted mean symmetric Dirichlet energy of the input, as `check_embedding()` reports it (`mean_energy_3d`)
   double energy_before = 0;
-  /// the same for the output (with a free border both are measured against the 3D triangles scaled to the current border area)
+  /// the same for the output (with a free border both are measured against the 3D triangles scaled to the current border
+  /// area, and the optimization minimizes that measure: it does not rise beyond rounding)
   double energy_after = 0;
   /// the energy of the current map while the optimization runs: updated after each iteration, before the `callback`
   /// is called (the optimizer's own measure, the same area-weighted mean in double)

@@ -288,6 +288,7 @@ public:
     for(std::size_t it = 0; it < s_.max_iterations; ++it)
     {
       if(timer.time() > s_.time_budget) { stats.time_budget_reached = true; break; }
+      if(scale_free_) { match_reference_area(); E = objective(X_, Y_); } // the same energy, up to rounding
       const double E0 = E;
       // A global step, then a sweep of per-vertex steps if the global step was held back by the
       // first face to degenerate (far from smooth: tiny faces), where each vertex fixes its own
@@ -378,20 +379,90 @@ public:
   }
 
   // ---- named steps -------------------------------------------------------------------------
-  // Area-weighted mean energy; +inf if a face is not positively oriented (in double).
+  // Area-weighted mean energy; +inf if a face is not positively oriented (in double). With a free border, the
+  // energy of the map scaled uniformly to the references' area (scale_free_).
   double energy(const std::vector<double>& x, const std::vector<double>& y) const
   {
     double e = 0;
     Isotropic_terms it;
     if(s_.face_metric) s_.face_metric(x, y, metric_);
+    double k = 1;
+    if(scale_free_)
+    {
+      const double area = uv_area(x, y);
+      if(!(area > 0)) return std::numeric_limits<double>::infinity();
+      k = std::sqrt(reference_area_ / area);
+    }
     for(std::size_t f = 0; f < nf_; ++f)
     {
       double s1, s2;
       if(!singular_values(f, x, y, s1, s2)) return std::numeric_limits<double>::infinity();
-      if(!isotropic_terms(s_.energy, s1, s2, it)) return std::numeric_limits<double>::infinity();
+      if(!isotropic_terms(s_.energy, k * s1, k * s2, it)) return std::numeric_limits<double>::infinity();
       e += frames_[f].weight * it.psi;
     }
     return e / total_weight_;
+  }
+
+  // The area of the map (the sum of its faces' signed areas, in the counterclockwise frame, in double)
+  double uv_area(const std::vector<double>& x, const std::vector<double>& y) const
+  {
+    double a = 0;
+    for(const auto& t : disk_.faces)
+      a += (x[t[1]] - x[t[0]]) * (y[t[2]] - y[t[0]]) - (x[t[2]] - x[t[0]]) * (y[t[1]] - y[t[0]]);
+    return 0.5 * a;
+  }
+
+  // A free border lets the map grow or shrink, and the energy against fixed references prefers a scale of its
+  // own (for the symmetric Dirichlet energy, the one that balances the map's stretched and shrunk faces),
+  // while check_embedding() measures the map scaled to the references' area. The optimizer minimizes the
+  // latter: the energy of the map scaled by k = sqrt(reference_area_ / uv_area), which no uniform scaling
+  // changes. Each iteration first scales the references to the map's current area (k = 1 there), so that
+  // the per-face derivatives are those at the current scale, and the gradient gains the term of k
+  // (add_scale_term()); the line search compares the scaled energies, so every accepted step lowers the
+  // energy reported.
+  void match_reference_area()
+  {
+    if(!scale_free_) return;
+    const double area = uv_area(X_, Y_);
+    if(!(area > 0) || !std::isfinite(area) || area == reference_area_) return;
+    const double c = area / reference_area_, inv = 1 / std::sqrt(c); // c on areas, 1 / sqrt(c) on the Jacobians
+    if(!(c > 0) || !std::isfinite(c) || !std::isfinite(inv)) return;
+    for(Face_frame& fr : frames_)
+    {
+      for(double& g : fr.G) g *= inv;
+      for(double& d : fr.ref.dot) d *= c;
+      fr.ref.area2 *= c * c;
+    }
+    reference_area_ = area;
+  }
+
+  // At k = 1: the derivative of the energy in k is D = sum over faces of weight * (s1 dpsi/ds1 + s2 dpsi/ds2),
+  // and k = sqrt(reference_area_ / uv_area) varies by -k / (2 uv_area) times the derivative of the area, which
+  // only the border vertices change (an interior vertex's faces keep their total area).
+  bool add_scale_term(Eigen::VectorXd& grad) const
+  {
+    double D = 0;
+    Isotropic_terms it;
+    for(std::size_t f = 0; f < nf_; ++f)
+    {
+      double s1, s2;
+      if(!singular_values(f, X_, Y_, s1, s2) || !isotropic_terms(s_.energy, s1, s2, it)) return false;
+      D += frames_[f].weight * (s1 * it.d1 + s2 * it.d2);
+    }
+    const double area = uv_area(X_, Y_);
+    if(!(area > 0)) return false;
+    const double c = -D / (2 * area);
+    for(const auto& t : disk_.faces)
+      for(int a = 0; a < 3; ++a)
+      {
+        const long v = var_[t[a]];
+        if(v < 0) continue;
+        const std::size_t b = t[(a + 1) % 3], d = t[(a + 2) % 3];
+        // the derivative of the face's area in the position of corner a
+        grad(2 * v) += c * 0.5 * (Y_[b] - Y_[d]);
+        grad(2 * v + 1) += c * 0.5 * (X_[d] - X_[b]);
+      }
+    return std::isfinite(D) && grad.allFinite();
   }
 
   // The minimized energy: energy() plus, with a free disk border, the border barrier (same scale)
@@ -491,15 +562,33 @@ public:
     std::size_t moved = 0;
     if(s_.free_border && !border_free_.empty())
     {
+      // each border vertex lowers the energy of its star at the current scale; the scale follows the area they
+      // change, so the energy of the whole map decides too
       const std::vector<Point_2> saved(P_);
+      const double before = scale_free_ ? objective(X_, Y_) : 0.;
       std::size_t m = 0;
       for(std::size_t i : border_free_) if(move_vertex(i)) ++m;
-      if(m > 0 && (!border_simple(P_) || (holes_ && !(loops_disjoint(P_) && holes_oriented(P_))))) { P_ = saved; refresh_doubles(); m = 0; }
+      if(m > 0 && (!border_simple(P_) || (holes_ && !(loops_disjoint(P_) && holes_oriented(P_)))
+                   || (scale_free_ && !(objective(X_, Y_) < before)))) { P_ = saved; refresh_doubles(); m = 0; }
+      if(m > 0) match_reference_area(); // the interior steps below keep the area: their scale is this one
       moved += m;
     }
     // hole vertices one at a time, each checked against every loop edge (sequential: the check
     // reads the other loops)
-    for(std::size_t i : hole_free_) if(move_vertex(i)) ++moved;
+    if(!hole_free_.empty())
+    {
+      // with a free border, the hole vertices change the area too: checked and rescaled as the border's
+      const std::vector<Point_2> saved(scale_free_ ? P_ : std::vector<Point_2>());
+      const double before = scale_free_ ? objective(X_, Y_) : 0.;
+      std::size_t m = 0;
+      for(std::size_t i : hole_free_) if(move_vertex(i)) ++m;
+      if(scale_free_ && m > 0)
+      {
+        if(objective(X_, Y_) < before) match_reference_area();
+        else { P_ = saved; refresh_doubles(); m = 0; }
+      }
+      moved += m;
+    }
 #ifdef CGAL_LINKED_WITH_TBB
     if(std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value && std::is_floating_point<FT>::value)
     {
@@ -668,6 +757,8 @@ private:
       frames_[f] = face_frame(refs[f]);
       total_weight_ += frames_[f].weight;
     }
+    scale_free_ = s_.free_border;
+    reference_area_ = total_weight_; // the weights are the references' areas
     return OK;
   }
 
@@ -854,6 +945,7 @@ private:
         }
       }
     }
+    if(scale_free_ && !add_scale_term(grad)) return false;
     if(barrier_ && !add_barrier_derivatives(grad)) return false;
     if(holding_) hold_rows(grad);
     return grad.allFinite();
@@ -1303,6 +1395,8 @@ private:
   std::vector<Face_frame> frames_;
   mutable std::vector<Eigen::Matrix2d> metric_;       // the face metric at the positions last evaluated
   double total_weight_ = 1;
+  bool scale_free_ = false;     // a free border: the energy of the map scaled to the references' area (match_reference_area())
+  double reference_area_ = 1;   // the total area of the references (frames_) as last scaled
   std::vector<std::vector<Face_corner> > star_;
   std::vector<std::vector<std::size_t> > colours_;
   std::vector<std::array<int, 9> > face_slots_; // per face: where its 3x3 vertex blocks start in H_'s storage

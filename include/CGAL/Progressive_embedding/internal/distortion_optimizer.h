@@ -560,6 +560,9 @@ public:
   std::size_t vertex_sweep()
   {
     std::size_t moved = 0;
+    // the stars' energies below are at the references' scale: that of the current area (a global step may have
+    // changed it)
+    match_reference_area();
     if(s_.free_border && !border_free_.empty())
     {
       // each border vertex lowers the energy of its star at the current scale; the scale follows the area they

@@ -38,7 +38,8 @@ struct Optimization_statistics
   /// area-weighted mean symmetric Dirichlet energy of the input, as `check_embedding()` reports it (`mean_energy_3d`)
   double energy_before = 0;
   /// the same for the output (with a free border both are measured against the 3D triangles scaled to the current border
-  /// area, and the optimization minimizes that measure: it does not rise beyond rounding)
+  /// area; the symmetric Dirichlet optimization then minimizes that measure, so it does not rise beyond rounding unless
+  /// the border barrier acted, see `optimize_distortion()`)
   double energy_after = 0;
   /// the energy of the current map while the optimization runs: updated after each iteration, before the `callback`
   /// is called (the optimizer's own measure, the same area-weighted mean in double)

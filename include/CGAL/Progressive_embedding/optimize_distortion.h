@@ -32,7 +32,13 @@ namespace Progressive_embedding {
 /// every accepted step is certified (all faces positively oriented under the exact predicate and, with a
 /// free border, the border polygon simple, also exactly; together they make the map injective). The minimized
 /// energy is the sum over faces of the 3D area times the symmetric Dirichlet (or ARAP) energy against the 3D
-/// triangle, the 3D mesh scaled so that its total area equals the area enclosed by the uv border.
+/// triangle, the 3D mesh scaled so that its total area equals the area enclosed by the uv border. Where that area
+/// can change (a free border, or free hole loops), the symmetric Dirichlet energy is that of the map scaled
+/// uniformly to the 3D area at every step, the measure `check_embedding()` reports: each iteration rescales the
+/// 3D triangles to the map's current area and adds the derivative of that scale to the gradient (an energy against
+/// triangles of a fixed area prefers a scale of its own, and the reported energy could rise). Without the barrier
+/// term below, `Optimization_statistics::energy_after` is then below `energy_before` whenever a step was taken, up
+/// to rounding. ARAP, which measures the scale too, keeps the 3D triangles at the input's area.
 ///
 /// An iteration is a projected Newton step: per-face Hessians projected to positive semi-definite matrices with
 /// the closed-form eigensystem of isotropic energies, one sparse solve (a sparse LDLT whose symbolic factorization
@@ -41,7 +47,8 @@ namespace Progressive_embedding {
 /// step gains little, or at the first iteration of a map whose faces are far from their 3D shape (e.g. the
 /// \f$10^{-20}\f$-area faces that a repaired Tutte map keeps), a sweep of per-vertex Newton steps follows: each vertex
 /// moves within its own star, so a single tiny face does not hold back the whole map. With a free border, the
-/// border vertices of a sweep move first and are put back together unless the border stays simple.
+/// border vertices of a sweep move first and are put back together unless the border stays simple and the energy
+/// of the whole map falls.
 ///
 /// <b>Free border.</b> Where the border closes on itself (e.g. the two sides of a cut at a cone whose angle exceeds
 /// \f$2\pi\f$), a yes-or-no test of simplicity would let each step bring the two sides closer until the line search
@@ -51,8 +58,10 @@ namespace Progressive_embedding {
 /// one border vertex away from the edge only when the angle between them is reflex); its gradient and the
 /// diagonal blocks of its Gauss-Newton Hessian enter the Newton step and the per-vertex steps, and every step is also
 /// bounded by the first time a border vertex would reach a border edge. The line search thus sees the border
-/// closing before the exact test refuses it; the exact tests and the certificate are unchanged. The reported
-/// energies (`Optimization_statistics`) are the certificate's, without the barrier.
+/// closing before the exact test refuses it; the exact tests and the certificate are unchanged. The reaches follow
+/// the 3D triangles when they are rescaled to the map's area, the weights do not. The reported energies
+/// (`Optimization_statistics`) are the certificate's, without the barrier: where the barrier acts, the minimized
+/// sum may trade some of the reported energy for distance between the border's parts.
 ///
 /// <b>Multiply connected maps.</b> The mesh may also be a connected genus-0 mesh with several border cycles, mapped
 /// validly in the sense of `check_embedding()` with `multiply_connected(true)` (e.g. by the hole-filling embedding):
@@ -122,7 +131,8 @@ namespace Progressive_embedding {
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{free_border}
 ///     \cgalParamDescription{let the border vertices move (the border stays a simple polygon, decided exactly; a barrier
-///                           term of the energy keeps the border's parts apart where it closes on itself, see above)}
+///                           term of the energy keeps the border's parts apart where it closes on itself; the symmetric
+///                           Dirichlet energy is measured at the 3D area, as the certificate does; see above)}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd

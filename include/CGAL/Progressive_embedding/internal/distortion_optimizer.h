@@ -115,7 +115,7 @@ struct Face_frame
 {
   std::array<double, 6> G;           // gradient operator: J(r, c) = sum_a G[2a + c] * uv_r(a)
   Reference_triangle<double> ref;    // corner dot products and squared area (per-vertex steps)
-  double weight = 0;                 // scaled 3D area
+  double weight = 0;                 // scaled 3D area (the weight of the face's energy)
 };
 
 inline Face_frame face_frame(const Reference_triangle<double>& ref)
@@ -379,8 +379,8 @@ public:
   }
 
   // ---- named steps -------------------------------------------------------------------------
-  // Area-weighted mean energy; +inf if a face is not positively oriented (in double). With a free border, the
-  // energy of the map scaled uniformly to the references' area (scale_free_).
+  // Area-weighted mean energy; +inf if a face is not positively oriented (in double). With a free border or free
+  // hole loops, the energy of the map scaled uniformly to the references' area (scale_free_).
   double energy(const std::vector<double>& x, const std::vector<double>& y) const
   {
     double e = 0;
@@ -412,10 +412,10 @@ public:
     return 0.5 * a;
   }
 
-  // A free border lets the map grow or shrink, and the energy against fixed references prefers a scale of its
-  // own (for the symmetric Dirichlet energy, the one that balances the map's stretched and shrunk faces),
-  // while check_embedding() measures the map scaled to the references' area. The optimizer minimizes the
-  // latter: the energy of the map scaled by k = sqrt(reference_area_ / uv_area), which no uniform scaling
+  // A free border (or free hole loops) lets the map's area change, and the energy against fixed references
+  // prefers a scale of its own (for the symmetric Dirichlet energy, the one that balances the map's stretched
+  // and shrunk faces), while check_embedding() measures the map scaled to the references' area. The optimizer
+  // minimizes the latter: the energy of the map scaled by k = sqrt(reference_area_ / uv_area), which no uniform scaling
   // changes. Each iteration first scales the references to the map's current area (k = 1 there), so that
   // the per-face derivatives are those at the current scale, and the gradient gains the term of k
   // (add_scale_term()); the line search compares the scaled energies, so every accepted step lowers the
@@ -425,8 +425,8 @@ public:
     if(!scale_free_) return;
     const double area = uv_area(X_, Y_);
     if(!(area > 0) || !std::isfinite(area) || area == reference_area_) return;
-    const double c = area / reference_area_, inv = 1 / std::sqrt(c); // c on areas, 1 / sqrt(c) on the Jacobians
-    if(!(c > 0) || !std::isfinite(c) || !std::isfinite(inv)) return;
+    const double c = area / reference_area_, r = std::sqrt(c), inv = 1 / r; // c on areas, r on lengths
+    if(!(c > 0) || !std::isfinite(c * c) || !(c * c > 0) || !std::isfinite(inv)) return;
     for(Face_frame& fr : frames_)
     {
       for(double& g : fr.G) g *= inv;
@@ -434,11 +434,15 @@ public:
       fr.ref.area2 *= c * c;
     }
     reference_area_ = area;
+    reach_scale_ *= r;
+    max_reach_ *= r;
   }
 
   // At k = 1: the derivative of the energy in k is D = sum over faces of weight * (s1 dpsi/ds1 + s2 dpsi/ds2),
   // and k = sqrt(reference_area_ / uv_area) varies by -k / (2 uv_area) times the derivative of the area, which
-  // only the border vertices change (an interior vertex's faces keep their total area).
+  // only the vertices of the loops change (an interior vertex's faces keep their total area). The Hessian stays
+  // that of the energy at the fixed scale, positive definite: the steps still descend, and the line search
+  // decides.
   bool add_scale_term(Eigen::VectorXd& grad) const
   {
     double D = 0;
@@ -760,8 +764,10 @@ private:
       frames_[f] = face_frame(refs[f]);
       total_weight_ += frames_[f].weight;
     }
-    scale_free_ = s_.free_border;
-    reference_area_ = total_weight_; // the weights are the references' areas
+    // the symmetric Dirichlet energy (the certificate's) with a moving border or moving hole loops: both change the
+    // map's area. ARAP measures the scale too: its references keep the input's area.
+    scale_free_ = (s_.free_border || !hole_free_.empty()) && s_.energy == Distortion_energy::SYMMETRIC_DIRICHLET;
+    reference_area_ = border_area; // that of the faces with a 3D area (the others have stand-ins, see scale_references())
     return OK;
   }
 
@@ -1122,7 +1128,9 @@ private:
   // Free border of a disk: for a border vertex v and a border edge e not incident to v, the reach
   // h = barrier_reach * min(reference length of e, reference lengths of v's two border edges) and
   // the weight k = (reference length of e)^2, so that a pair at a tenth of its reach weighs about as
-  // much as one face of the border. The lengths are those of the scaled 3D triangles: fixed.
+  // much as one face of the border. The lengths are those of the scaled 3D triangles; the reaches follow
+  // the references when they take the map's area (reach_scale_, match_reference_area()), the weights, like
+  // the faces', do not: a uniform scaling of the map then changes neither the energy nor the barrier.
   void build_border_barrier()
   {
     barrier_ = s_.free_border && !holes_ && !immersion_ && disk_.border.size() >= 4;
@@ -1167,7 +1175,7 @@ private:
 
   double barrier_reach(std::size_t k, std::size_t e) const
   {
-    return barrier_reach_ * (std::min)(edge_length_[e], vertex_length_[k]);
+    return barrier_reach_ * reach_scale_ * (std::min)(edge_length_[e], vertex_length_[k]);
   }
 
   // f(k, e) for the pairs whose vertex lies within max_reach_ of the edge's x-range: the others
@@ -1398,7 +1406,7 @@ private:
   std::vector<Face_frame> frames_;
   mutable std::vector<Eigen::Matrix2d> metric_;       // the face metric at the positions last evaluated
   double total_weight_ = 1;
-  bool scale_free_ = false;     // a free border: the energy of the map scaled to the references' area (match_reference_area())
+  bool scale_free_ = false;     // the energy of the map scaled to the references' area (match_reference_area())
   double reference_area_ = 1;   // the total area of the references (frames_) as last scaled
   std::vector<std::vector<Face_corner> > star_;
   std::vector<std::vector<std::size_t> > colours_;
@@ -1424,11 +1432,12 @@ private:
   bool barrier_ = false;   // the border barrier is on (free border of a disk)
   double barrier_reach_ = 0.5;           // reach of a pair, relative to the shortest reference edge length
   std::vector<std::array<double, 3> > points_3_; // the 3D points, normalized (build_frames())
-  double reference_scale_ = 1;           // the scale of the reference triangles (on lengths)
+  double reference_scale_ = 1;           // the scale of the reference triangles (on lengths) when they were built
   std::vector<long> border_pos_;         // per vertex: its position on the border, -1 inside
   std::vector<double> edge_length_;      // per border edge (from border position k to k + 1): its reference length
   std::vector<double> vertex_length_;    // per border vertex: the shorter reference length of its two border edges
-  double max_reach_ = 0;                 // the largest reach of a pair
+  double max_reach_ = 0;                 // the largest reach of a pair (reach_scale_ included)
+  double reach_scale_ = 1;               // the references' lengths against those the barrier was built with
   std::vector<std::array<std::size_t, 4> > block_slots_; // per free vertex: its 2x2 block of H_
   Block_cg<ConcurrencyTag> cg_;
   bool cg_ready_ = false;

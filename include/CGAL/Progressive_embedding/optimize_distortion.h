@@ -32,13 +32,14 @@ namespace Progressive_embedding {
 /// every accepted step is certified (all faces positively oriented under the exact predicate and, with a
 /// free border, the border polygon simple, also exactly; together they make the map injective). The minimized
 /// energy is the sum over faces of the 3D area times the symmetric Dirichlet (or ARAP) energy against the 3D
-/// triangle, the 3D mesh scaled so that its total area equals the area enclosed by the uv border. Where that area
-/// can change (a free border, or free hole loops), the symmetric Dirichlet energy is that of the map scaled
-/// uniformly to the 3D area at every step, the measure `check_embedding()` reports: each iteration rescales the
+/// triangle, the 3D mesh scaled so that its total area equals the area enclosed by the uv border. With a free
+/// border, which changes that area, the symmetric Dirichlet energy is that of the map scaled uniformly to the 3D
+/// area at every step, the measure `check_embedding()` reports: each iteration rescales the
 /// 3D triangles to the map's current area and adds the derivative of that scale to the gradient (an energy against
 /// triangles of a fixed area prefers a scale of its own, and the reported energy could rise). Without the barrier
 /// term below, `Optimization_statistics::energy_after` is then below `energy_before` whenever a step was taken, up
-/// to rounding. ARAP, which measures the scale too, keeps the 3D triangles at the input's area.
+/// to rounding. ARAP, which measures the scale too, keeps the 3D triangles at the input's area, and so do free hole
+/// loops inside a fixed border (they change the area a little; the reported energy may then rise slightly).
 ///
 /// An iteration is a projected Newton step: per-face Hessians projected to positive semi-definite matrices with
 /// the closed-form eigensystem of isotropic energies, one sparse solve (a sparse LDLT whose symbolic factorization

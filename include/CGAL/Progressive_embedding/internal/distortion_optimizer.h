@@ -379,8 +379,8 @@ public:
   }
 
   // ---- named steps -------------------------------------------------------------------------
-  // Area-weighted mean energy; +inf if a face is not positively oriented (in double). With a free border or free
-  // hole loops, the energy of the map scaled uniformly to the references' area (scale_free_).
+  // Area-weighted mean energy; +inf if a face is not positively oriented (in double). With a free border, the
+  // energy of the map scaled uniformly to the references' area (scale_free_).
   double energy(const std::vector<double>& x, const std::vector<double>& y) const
   {
     double e = 0;
@@ -412,7 +412,7 @@ public:
     return 0.5 * a;
   }
 
-  // A free border (or free hole loops) lets the map's area change, and the energy against fixed references
+  // A free border lets the map's area change, and the energy against fixed references
   // prefers a scale of its own (for the symmetric Dirichlet energy, the one that balances the map's stretched
   // and shrunk faces), while check_embedding() measures the map scaled to the references' area. The optimizer
   // minimizes the latter: the energy of the map scaled by k = sqrt(reference_area_ / uv_area), which no uniform scaling
@@ -764,9 +764,11 @@ private:
       frames_[f] = face_frame(refs[f]);
       total_weight_ += frames_[f].weight;
     }
-    // the symmetric Dirichlet energy (the certificate's) with a moving border or moving hole loops: both change the
-    // map's area. ARAP measures the scale too: its references keep the input's area.
-    scale_free_ = (s_.free_border || !hole_free_.empty()) && s_.energy == Distortion_energy::SYMMETRIC_DIRICHLET;
+    // the symmetric Dirichlet energy (the certificate's) with a moving border, which changes the map's area. ARAP
+    // measures the scale too: its references keep the input's area. Free hole loops inside a fixed border change
+    // the area too, but little, and there the Hessian without the scale's terms left the constrained maps with
+    // holes unconverged after 1000 iterations: their references keep the input's area as well.
+    scale_free_ = s_.free_border && s_.energy == Distortion_energy::SYMMETRIC_DIRICHLET;
     reference_area_ = border_area; // that of the faces with a 3D area (the others have stand-ins, see scale_references())
     return OK;
   }

@@ -407,9 +407,8 @@ public:
   double uv_area(const std::vector<double>& x, const std::vector<double>& y) const
   {
     double a = 0;
-    for(const auto& t : disk_.faces)
-      a += (x[t[1]] - x[t[0]]) * (y[t[2]] - y[t[0]]) - (x[t[2]] - x[t[0]]) * (y[t[1]] - y[t[0]]);
-    return 0.5 * a;
+    for(const auto& t : disk_.faces) a += signed_area(x[t[0]], y[t[0]], x[t[1]], y[t[1]], x[t[2]], y[t[2]]);
+    return a;
   }
 
   // A free border lets the map's area change, and the energy against fixed references

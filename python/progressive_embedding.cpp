@@ -245,6 +245,12 @@ struct Work
       if(CGAL::Euler::add_face(t, mesh) == Mesh::null_face())
         throw Pe_failure(PE::ERROR_NON_MANIFOLD, face_name(fname, j, a, b, c) + " cannot be added: non-manifold or inconsistently oriented");
     }
+    // a vertex in no face: the mesh is no disk (nor closed surface), and said so here rather than through a less
+    // telling code from the algorithm
+    for(std::size_t i = 0; i < in.n; ++i)
+      if(mesh.is_isolated(vd[i]))
+        throw Pe_failure(PE::ERROR_NOT_A_DISK, "vertex " + std::to_string(i) + " is in no face of " + fname +
+                                               " (every vertex must be on a face)");
     uv = mesh.add_property_map<vertex_descriptor, Point_2>("v:uv", Point_2(0, 0)).first;
   }
 
@@ -762,22 +768,24 @@ py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::objec
     }
     if(ec != PE::OK)
     {
-      // name what the statistics point at: a landmark (its row), the border pair, or a mesh
+      // name what the statistics point at: a landmark (its row), the border pair, or a mesh; the words of the fault
+      // are those of `pe cross`
       const std::string mesh = st.failed_mesh == 0 ? "A" : "B";
       std::string context = "cross_parameterization";
       if(st.failed_landmark < k)
         context = landmark_name(st.failed_landmark, pairs) + ": the vertex " +
-                  std::to_string(pairs[2 * st.failed_landmark + (st.failed_mesh == 0 ? 0 : 1)]) + " of " + mesh +
-                  (ec == PE::ERROR_CONSTRAINT_ON_BORDER ? " is on the border, its partner is not"
-                   : ec == PE::ERROR_DUPLICATE_CONSTRAINT ? " is used by an earlier landmark"
-                   : ec == PE::ERROR_WRONG_PARAMETER && st.failed_mesh == 1 ? " is out of the order of the other border landmarks"
-                   : "");
+                  std::to_string(pairs[2 * st.failed_landmark + (st.failed_mesh == 0 ? 0 : 1)]) + " of " + mesh + " " +
+                  PE::internal::cross_landmark_fault(ec, st.failed_mesh, st.closed, has_pair);
       else if(ec == PE::ERROR_WRONG_PARAMETER && has_pair && st.failed_mesh >= 0 &&
               !CGAL::is_border(st.failed_mesh == 0 ? vp.first : vp.second, st.failed_mesh == 0 ? wa.mesh : wb.mesh))
         context = "border_vertex_pair: the vertex " + std::to_string(pair[st.failed_mesh]) + " of " + mesh +
                   " is not on its border";
       else if(st.failed_mesh >= 0)
+      {
         context += st.failed_mesh == 0 ? ", mesh A (V_a, F_a)" : ", mesh B (V_b, F_b)";
+        const std::string why = PE::internal::cross_mesh_fault(ec, st.border_landmarks);
+        if(why != PE::get_error_message(ec)) context += ": " + why;
+      }
       else if(st.closed && ec == PE::ERROR_WRONG_PARAMETER)
         context += ": closed meshes need at least two landmarks (the cut runs through them in their order), and "
                    "border_vertex_pair does not apply to them (no border)";

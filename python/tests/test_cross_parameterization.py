@@ -230,6 +230,11 @@ def test_errors():
     assert 'mesh A' in raises('ERROR_NOT_A_DISK', TETRAHEDRON_V, TETRAHEDRON_F, V, F)
     assert 'mesh B' in raises('ERROR_NOT_A_DISK', V, F, TETRAHEDRON_V, TETRAHEDRON_F)
     raises('ERROR_BORDER_TOO_SHORT', V[:3], [[0, 1, 2]], V, F)  # a triangle: 3 border vertices for 4 corners
+    # border landmarks that leave A's arc from 1 to 2 without a vertex for B's corner 5: said as in `pe cross`
+    assert 'the border landmarks leave too few border vertices' in raises('ERROR_BORDER_TOO_SHORT', V, F, V, F,
+                                                                          [[1, 1], [2, 17]])
+    # a vertex in no face (a row of V that F does not use)
+    assert 'vertex 36 is in no face of F_a' in raises('ERROR_NOT_A_DISK', np.r_[V, [[9.0, 9.0, 9.0]]], F, V, F)
     assert 'F_b[50]' in raises('ERROR_NON_MANIFOLD', V, F, V, np.r_[F, [[3, 3, 4]]])
     V_nan = V.copy()
     V_nan[3, 1] = np.nan
@@ -275,7 +280,8 @@ def test_closed_surfaces():
     assert np.abs(images(faces, barycentric, V, F) - V).max() < 1e-2 * np.ptp(V, axis=0).max()
     # one landmark is not a chain; a chain of one edge opens nothing
     raises('ERROR_WRONG_PARAMETER', V, F, V, F, [[0, 0]])
-    raises('ERROR_NOT_A_DISK', V, F, V, F, [[F[0][0], F[0][0]], [F[0][1], F[0][1]]])
+    joined = raises('ERROR_NOT_A_DISK', V, F, V, F, [[F[0][0], F[0][0]], [F[0][1], F[0][1]]])
+    assert 'landmarks[1]' in joined and 'joined to the previous landmark by an edge' in joined
     # the compatible meshes: the cut disks' overlay joined along the cut, two closed meshes of one connectivity
     same, _, info = pe.cross_parameterization(V, F, V, F, landmarks, compatible=True)
     assert np.array_equal(same, faces) and info['valid_compatible'] and info['cut_vertices_welded'] > 0

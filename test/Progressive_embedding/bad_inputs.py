@@ -157,6 +157,13 @@ def inputs():
         "cfix_outside.txt": "7 1.5 0.5\n",
         "cfix_on_domain_border.txt": "7 1 0.5\n",
         "cfix_fan.txt": "4 0.1 0.05\n",
+        # landmark files for cross (the fan's inner vertex; the tetrahedron's vertices, all joined by edges; border
+        # landmarks on grid6.obj that leave A's arc from 1 to 2 without a vertex for B's corner 5)
+        "fan.off": off(FAN_V, FAN_F),
+        "lm_fan.txt": "4 4\n",
+        "lm_one.txt": "0 0\n",
+        "lm_edge.txt": "0 0\n1 1\n",
+        "lm_border_short.txt": "1 1\n2 17\n",
         "cfix_tet.txt": "0 0.1 0.1\n",
         "closed_uv.obj": obj(TET_V, TET_F, [(0, 0), (1, 0), (0, 1), (1, 1)]),
     }
@@ -297,7 +304,9 @@ CASES = [
      r"constrain needs a border: an input OBJ with texture coordinates \(vt\), or --border"),
     ("constrain", "no_uv_border_fixed", ["constrain", "{t}/unreferenced.off", "{t}/o.obj", "--fix", "{t}/cfix_fan.txt", "--border", "fixed"], 2,
      r"--border fixed needs an input OBJ with texture coordinates"),
-    ("constrain", "no_uv_circle", ["constrain", "{t}/unreferenced.off", "{t}/o.obj", "--fix", "{t}/cfix_fan.txt", "--border", "circle", "--json"], 0,
+    ("constrain", "fix_unreferenced", ["constrain", "{t}/unreferenced.off", "{t}/o.obj", "--fix", "{t}/cfix_fan.txt", "--border",
+                                       "circle"], 3, r"1 vertex of the file is in no face: the vertex indices of --fix.*ERROR_NOT_A_DISK"),
+    ("constrain", "no_uv_circle", ["constrain", "{t}/fan.off", "{t}/o.obj", "--fix", "{t}/cfix_fan.txt", "--border", "circle", "--json"], 0,
      r'"constrained": 1.*"constraints_exact": true.*"valid": true'),
     ("constrain", "closed", ["constrain", "{t}/closed.off", "{t}/o.obj", "--fix", "{t}/cfix_tet.txt", "--border", "circle"], 3,
      r"not a topological disk: 1 component, 0 border cycles, Euler characteristic 2.*ERROR_NOT_A_DISK"),
@@ -345,6 +354,22 @@ CASES = [
     ("arguments", "grid_overflow", ["generate", "grid", "99999999999999999999", "{t}/o.obj"], 2, r"N: .*out of range"),
     ("arguments", "time_limit_ok", ["embed", "{t}/unreferenced.off", "{t}/o.obj", "--time-limit", "60", "--json"], 0, r'"valid": true'),
     # outputs: exit 4 naming the file, and no partial file
+    # cross: the faults of the landmarks and meshes said with the landmark's line, exit 3; every output or none
+    ("cross", "ok", ["cross", "{t}/fan.off", "{t}/fan.off", "{t}/lm_fan.txt", "{t}/cx.txt", "--json"], 0,
+     r'"landmarks_exact": true.*"written": true'),
+    ("cross", "unreferenced", ["cross", "{t}/unreferenced.off", "{t}/fan.off", "{t}/lm_fan.txt", "{t}/cx_unreferenced.txt"], 3,
+     r"unreferenced.off.*1 vertex of the file is in no face: the vertex indices of LANDMARKS and the lines of OUT.txt.*ERROR_NOT_A_DISK"),
+    ("cross", "closed_one_landmark", ["cross", "{t}/closed.off", "{t}/closed.off", "{t}/lm_one.txt", "{t}/cx_one.txt", "--json"], 3,
+     r'"message": "[^"]*closed meshes need at least two landmarks.*"exit_status": 3.*\(ERROR_WRONG_PARAMETER\)'),
+    ("cross", "closed_edge", ["cross", "{t}/closed.off", "{t}/closed.off", "{t}/lm_edge.txt", "{t}/cx_edge.txt"], 3,
+     r"line 2: landmark 1 1: the vertex of A is joined to the previous landmark by an edge: a cut along one edge opens "
+     r"nothing.*ERROR_NOT_A_DISK"),
+    ("cross", "border_too_short", ["cross", "{t}/grid6.obj", "{t}/grid6.obj", "{t}/lm_border_short.txt", "{t}/cx_short.txt"], 3,
+     r"A: the border landmarks leave too few border vertices.*ERROR_BORDER_TOO_SHORT"),
+    ("cross", "svg_dev_full", ["cross", "{t}/fan.off", "{t}/fan.off", "{t}/lm_fan.txt", "{t}/cx_full.txt", "--compatible",
+                               "{t}/cx_a.obj", "{t}/cx_b.obj", "--svg", "/dev/full"], 4, r"cannot write '/dev/full'.*ERROR_CANNOT_WRITE_FILE"),
+    ("cross", "same_output", ["cross", "{t}/fan.off", "{t}/fan.off", "{t}/lm_fan.txt", "{t}/cx_same.txt", "--svg", "{t}/cx_same.txt"], 2,
+     r"the output and --svg name the same file"),
     ("outputs", "dev_full", ["tutte", "{t}/unreferenced.off", "/dev/full"], 4, r"cannot write '/dev/full'.*ERROR_CANNOT_WRITE_FILE"),
     ("outputs", "missing_folder", ["tutte", "{t}/unreferenced.off", "{t}/no_such_folder/o.obj"], 4,
      r"no_such_folder/o.obj.*does not exist.*ERROR_CANNOT_WRITE_FILE"),
@@ -357,7 +382,10 @@ CASES = [
 ]
 
 # the cases whose output must not exist afterwards (no partial file), and the size limits
-NO_FILE_AFTER = {"file_size_limit": "{t}/big.obj", "missing_folder": "{t}/no_such_folder/o.obj"}
+NO_FILE_AFTER = {"file_size_limit": ["{t}/big.obj"], "missing_folder": ["{t}/no_such_folder/o.obj"],
+                 "unreferenced": ["{t}/cx_unreferenced.txt"], "closed_one_landmark": ["{t}/cx_one.txt"],
+                 "closed_edge": ["{t}/cx_edge.txt"], "border_too_short": ["{t}/cx_short.txt"],
+                 "svg_dev_full": ["{t}/cx_full.txt", "{t}/cx_a.obj", "{t}/cx_b.obj"], "same_output": ["{t}/cx_same.txt"]}
 FILE_SIZE_LIMIT = {"file_size_limit": 4096}
 
 def limits(file_size=None):
@@ -385,8 +413,8 @@ def run_case(pe, folder, case):
         problems.append("expected exit status %d, got %s" % (expect, how))
     if not re.search(regex, out.replace("\n", " ")):
         problems.append("output does not match %r" % regex)
-    if name in NO_FILE_AFTER and os.path.exists(NO_FILE_AFTER[name].replace("{t}", folder)):
-        problems.append("a partial output file was left")
+    if any(os.path.exists(f.replace("{t}", folder)) for f in NO_FILE_AFTER.get(name, [])):
+        problems.append("an output file was left")
     if "std::bad_cast" in out or "-nan" in out:
         problems.append("the output shows std::bad_cast or -nan")
     if problems:

@@ -10,7 +10,6 @@
 
 #include <CGAL/Progressive_embedding/cross_parameterization.h>
 #include <CGAL/Progressive_embedding/IO/SVG.h>
-#include <CGAL/Progressive_embedding/IO/internal/atomic_output.h>
 #include <CGAL/IO/OBJ.h>
 
 #include <algorithm>
@@ -91,10 +90,10 @@ PE::Error_code cross_panel(Mesh& plane, const PE::Embedding_report& report, cons
 }
 
 // The picture of --svg: A's planar map on the left, B's on the right (both on the unit square), each drawn by
-// write_SVG() with its certificate, the landmarks marked in both.
-int write_cross_picture(Run& run, const std::string& filename, Mesh& plane_a, Mesh& plane_b,
-                        const PE::Cross_parameterization_statistics& st, const std::vector<Landmark>& landmarks,
-                        const std::string& name_a, const std::string& name_b)
+// write_SVG() with its certificate, the landmarks marked in both; `document` receives the SVG text.
+int cross_picture(Run& run, const std::string& filename, Mesh& plane_a, Mesh& plane_b,
+                  const PE::Cross_parameterization_statistics& st, const std::vector<Landmark>& landmarks,
+                  const std::string& name_a, const std::string& name_b, std::string& document)
 {
   std::vector<vertex_descriptor> marked_a, marked_b;
   for(const Landmark& l : landmarks) { marked_a.push_back(l.first); marked_b.push_back(l.second); }
@@ -106,14 +105,9 @@ int write_cross_picture(Run& run, const std::string& filename, Mesh& plane_a, Me
   panels[0].insert(4, " id=\"pe-cross-a\" x=\"0\" y=\"0\"");
   panels[1].insert(4, " id=\"pe-cross-b\" x=\"" + PE::IO::format_number(w[0], 10) + "\" y=\"0\"");
   const std::string width = PE::IO::format_number(w[0] + w[1], 10), height = PE::IO::format_number((std::max)(h[0], h[1]), 10);
-  ec = PE::IO::internal::write_file_atomically(filename, [&](std::ostream& os) {
-    os << "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n"
-       << "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << width << "\" height=\"" << height
-       << "\" viewBox=\"0 0 " << width << ' ' << height << "\">\n"
-       << panels[0] << panels[1] << "</svg>\n";
-    return os ? PE::OK : PE::ERROR_CANNOT_WRITE_FILE;
-  });
-  if(ec != PE::OK) return run.fail(ec, "cannot write '" + filename + "'");
+  document = "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n"
+             "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + width + "\" height=\"" + height +
+             "\" viewBox=\"0 0 " + width + ' ' + height + "\">\n" + panels[0] + panels[1] + "</svg>\n";
   return EXIT_VALID;
 }
 
@@ -129,6 +123,11 @@ int cmd_cross(const Arguments& a)
   if(status != EXIT_VALID) return status;
   status = read_input(run, a.positional[1], in_b, Uv_mode::IGNORED, Shape::DISK_OR_SPHERE, "B");
   if(status != EXIT_VALID) return status;
+  for(const Input* in : { &in_a, &in_b })
+  {
+    status = require_file_vertex_order(run, *in, "the vertex indices of LANDMARKS and the lines of OUT.txt");
+    if(status != EXIT_VALID) return status;
+  }
   std::vector<Landmark> landmarks;
   std::vector<std::size_t> lines;
   status = read_landmarks(run, a.positional[2], in_a.mesh, in_b.mesh, landmarks, lines);
@@ -169,28 +168,28 @@ int cmd_cross(const Arguments& a)
   {
     std::string detail;
     // a landmark named by the function is a fault of the landmark file (exit 3), whatever the error code
-    // (border landmarks out of order come as ERROR_WRONG_PARAMETER, like a misuse of the function)
+    // (border landmarks out of order come as ERROR_WRONG_PARAMETER, like a misuse of the function); so are too few
+    // landmarks for two closed meshes
     const bool landmark_fault = st.failed_landmark < landmarks.size();
+    const bool too_few = st.closed && st.failed_mesh < 0 && ec == PE::ERROR_WRONG_PARAMETER;
     if(landmark_fault)
     {
       const Landmark& l = landmarks[st.failed_landmark];
       detail = "'" + a.positional[2] + "' line " + std::to_string(lines[st.failed_landmark]) + ": landmark " +
                std::to_string(std::size_t(l.first)) + " " + std::to_string(std::size_t(l.second)) + ": " +
-               (st.failed_mesh == 0 ? "the vertex of A " : "the vertex of B ");
-      detail += ec == PE::ERROR_CONSTRAINT_ON_BORDER ? "is on the border, its partner is not (a border landmark needs both on their border)"
-              : ec == PE::ERROR_DUPLICATE_CONSTRAINT ? "is used by an earlier landmark"
-              : ec == PE::ERROR_WRONG_PARAMETER && st.failed_mesh == 1 ? "is out of the order of the other border landmarks along B's border"
-              : PE::get_error_message(ec);
+               (st.failed_mesh == 0 ? "the vertex of A " : "the vertex of B ") +
+               PE::internal::cross_landmark_fault(ec, st.failed_mesh, st.closed, false);
       run.result.add("failed_landmark_line", lines[st.failed_landmark]);
     }
     else if(st.failed_mesh >= 0)
       detail = std::string(st.failed_mesh == 0 ? "A" : "B") + ": " +
-               (ec == PE::ERROR_NOT_A_DISK ? std::string("closed, and the other mesh is not (two disks or two closed genus-0 meshes)")
-                                           : std::string(PE::get_error_message(ec)));
-    else if(st.closed && ec == PE::ERROR_WRONG_PARAMETER)
-      detail = "closed meshes need at least two landmarks (the cut runs through them in file order)";
+               (ec == PE::ERROR_NOT_A_DISK && !st.closed
+                  ? std::string("closed, and the other mesh is not (two disks or two closed genus-0 meshes)")
+                  : PE::internal::cross_mesh_fault(ec, st.border_landmarks));
+    else if(too_few)
+      detail = "'" + a.positional[2] + "': closed meshes need at least two landmarks (the cut runs through them in file order)";
     return run.fail(ec, "cross-parameterization of '" + in_a.filename + "' and '" + in_b.filename + "' failed", detail,
-                    landmark_fault ? EXIT_INPUT : -1);
+                    landmark_fault || too_few ? EXIT_INPUT : -1);
   }
   run.result.add("valid_a", st.report_a.is_valid());
   run.result.add("valid_b", st.report_b.is_valid());
@@ -214,9 +213,11 @@ int cmd_cross(const Arguments& a)
   run.result.add("vertices_added_b", st.vertices_added_b);
   run.result.add("seconds_location", st.seconds_location);
 
-  // B's faces in file order (the reader adds them in order, no face removed), the coordinates in the
-  // order the face lists its vertices in B's file (vertices_around_face starts at target(halfedge(f)))
-  const PE::Error_code wec = PE::IO::internal::write_file_atomically(a.positional[3], [&](std::ostream& os) {
+  // the outputs all or none (write_files_together()): B's faces in file order (the reader adds them in order, no
+  // face removed), the coordinates in the order the face lists its vertices in B's file (vertices_around_face
+  // starts at target(halfedge(f)))
+  std::vector<Output_file> outputs;
+  outputs.push_back({ a.positional[3], [&](std::ostream& os) {
     os << std::setprecision(17);
     for(vertex_descriptor v : in_a.mesh.vertices())
     {
@@ -225,8 +226,29 @@ int cmd_cross(const Arguments& a)
       os << std::size_t(l.first) << ' ' << l.second[1] << ' ' << l.second[2] << ' ' << l.second[0] << '\n';
     }
     return os ? PE::OK : PE::ERROR_CANNOT_WRITE_FILE;
-  });
-  if(wec != PE::OK) return run.fail(wec, "cannot write '" + a.positional[3] + "'");
+  } });
+  const std::string files[2] = { compatible ? a.get("--compatible") : std::string(),
+                                 compatible ? a.second_values.at("--compatible") : std::string() };
+  const Mesh* meshes[2] = { &compatible_a, &compatible_b };
+  if(compatible)
+    for(int k = 0; k < 2; ++k)
+      outputs.push_back({ files[k], [&, k](std::ostream& os) {
+        return CGAL::IO::write_OBJ(os, *meshes[k], CGAL::parameters::stream_precision(17)) && os ? PE::OK
+                                                                                                 : PE::ERROR_CANNOT_WRITE_FILE;
+      } });
+  std::string picture_text;
+  if(picture)
+  {
+    const int ps = cross_picture(run, a.get("--svg"), plane_a, plane_b, st, landmarks, in_a.filename, in_b.filename,
+                                 picture_text);
+    if(ps != EXIT_VALID) return ps;
+    outputs.push_back({ a.get("--svg"), [&](std::ostream& os) {
+      os << picture_text;
+      return os ? PE::OK : PE::ERROR_CANNOT_WRITE_FILE;
+    } });
+  }
+  const int ws = write_files_together(run, outputs);
+  if(ws != EXIT_VALID) return ws;
   if(compatible)
   {
     run.result.add("valid_compatible", st.report_compatible.is_valid());
@@ -236,25 +258,10 @@ int cmd_cross(const Arguments& a)
     run.result.add("compatible_faces", st.compatible_faces);
     if(st.closed) run.result.add("cut_vertices_welded", st.cut_vertices_welded);
     run.result.add("seconds_compatible", st.seconds_compatible);
-    const std::string files[2] = { a.get("--compatible"), a.second_values.at("--compatible") };
-    const Mesh* meshes[2] = { &compatible_a, &compatible_b };
-    for(int k = 0; k < 2; ++k)
-    {
-      const PE::Error_code cec = PE::IO::internal::write_file_atomically(files[k], [&](std::ostream& os) {
-        return CGAL::IO::write_OBJ(os, *meshes[k], CGAL::parameters::stream_precision(17)) && os ? PE::OK
-                                                                                                 : PE::ERROR_CANNOT_WRITE_FILE;
-      });
-      if(cec != PE::OK) return run.fail(cec, "cannot write '" + files[k] + "'");
-    }
     run.result.add("compatible_a", files[0]);
     run.result.add("compatible_b", files[1]);
   }
-  if(picture)
-  {
-    const int ps = write_cross_picture(run, a.get("--svg"), plane_a, plane_b, st, landmarks, in_a.filename, in_b.filename);
-    if(ps != EXIT_VALID) return ps;
-    run.result.add("svg", a.get("--svg"));
-  }
+  if(picture) run.result.add("svg", a.get("--svg"));
   run.result.add("written", true);
   run.result.add("valid", true);
   run.result.add("status", "OK");

@@ -10,6 +10,7 @@
 #include <CGAL/Progressive_embedding/IO/OBJ_with_uv.h>
 #include <CGAL/Progressive_embedding/IO/SVG.h>
 #include <CGAL/Progressive_embedding/IO/read_polygon_mesh.h>
+#include <CGAL/Progressive_embedding/IO/internal/atomic_output.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
@@ -188,7 +189,8 @@ Topology_counts topology(const Mesh& m)
 
 std::string plural(std::size_t n, const char* what)
 {
-  return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+  const std::string w(what);
+  return std::to_string(n) + " " + (n == 1 ? w : w == "vertex" ? std::string("vertices") : w + "s");
 }
 
 // the faults of a mesh that no command accepts; EXIT_VALID if none
@@ -236,6 +238,11 @@ int check_mesh(Run& run, const std::string& what, const Mesh& m, Shape shape)
   if(shape == Shape::DISK && !disk)
     return run.fail(PE::ERROR_NOT_A_DISK, what, "not a topological disk: " + found.str() +
                     " (a disk has 1 component, 1 border cycle, Euler characteristic 1)");
+  // a closed connected surface of another genus: the code the function gives it (ERROR_NOT_GENUS_ZERO)
+  if(shape == Shape::DISK_OR_SPHERE && !disk && t.components == 1 && t.border_cycles == 0 && !t.isolated_vertices &&
+     t.euler % 2 == 0 && t.euler < 2)
+    return run.fail(PE::ERROR_NOT_GENUS_ZERO, what, "a closed mesh of genus " + std::to_string((2 - t.euler) / 2) + ": " +
+                    found.str() + " (a closed mesh is used only if its genus is 0, Euler characteristic 2; or a disk)");
   if(shape == Shape::DISK_OR_SPHERE && !disk && !sphere)
     return run.fail(PE::ERROR_NOT_A_DISK, what, "neither a topological disk nor a closed genus-0 mesh: " + found.str() +
                     " (a disk has 1 component, 1 border cycle, Euler characteristic 1; a sphere no border, 2)");
@@ -280,6 +287,7 @@ int read_input(Run& run, const std::string& filename, Input& in, Uv_mode mode, S
     in.uv = in.mesh.add_property_map<vertex_descriptor, Point_2>("v:pe_uv", Point_2(0, 0)).first;
     const PE::IO::Read_result r = PE::IO::read_OBJ_with_uv(filename, in.mesh, in.uv, &in.vt_to_v, &in.positions);
     if(!r) return fail(r.status, r.line, r.message.empty() ? PE::get_error_message(r.status) : r.message);
+    in.dropped_vertices = r.number_of_unreferenced_vertices;
     in.has_uv = true;
     drop_trivial_seam_map(in);
     return check_mesh(run, what, in.mesh, shape);
@@ -291,6 +299,7 @@ int read_input(Run& run, const std::string& filename, Input& in, Uv_mode mode, S
   // bounded memory, line numbers, the same error codes as the OBJ reader with uv
   const PE::IO::Read_result r = PE::IO::read_polygon_mesh(filename, in.mesh);
   if(!r) return fail(r.status, r.line, r.message.empty() ? PE::get_error_message(r.status) : r.message);
+  in.dropped_vertices = r.number_of_unreferenced_vertices;
   in.uv = in.mesh.add_property_map<vertex_descriptor, Point_2>("v:pe_uv", Point_2(0, 0)).first;
   return check_mesh(run, what, in.mesh, shape);
 }
@@ -324,8 +333,79 @@ int for_each_data_line(Run& run, const std::string& filename, const std::string&
   }
 }
 
+int require_file_vertex_order(Run& run, const Input& in, const std::string& indices)
+{
+  if(in.dropped_vertices == 0) return EXIT_VALID;
+  return run.fail(PE::ERROR_NOT_A_DISK, "cannot use '" + in.filename + "'",
+                  plural(in.dropped_vertices, "vertex") + " of the file " + (in.dropped_vertices == 1 ? "is" : "are") +
+                  " in no face: " + indices + " count the file's vertices, which the mesh read (without them) no longer "
+                  "has in that order; remove the vertices that no face uses");
+}
+
+int write_files_together(Run& run, const std::vector<Output_file>& files)
+{
+  namespace AO = PE::IO::internal;
+  // (temporary, target) of the files written so far
+  std::vector<std::pair<std::string, std::string> > pending;
+  auto abandon = [&](const std::string& name, PE::Error_code ec = PE::ERROR_CANNOT_WRITE_FILE) {
+    for(const auto& p : pending) std::remove(p.first.c_str());
+    return run.fail(ec, "cannot write '" + name + "'");
+  };
+  // (libstdc++'s filebuf may throw std::bad_cast from close() after a failed write: every exception is a failure)
+  auto write_to = [](const std::string& path, const Output_file& f) {
+    try
+    {
+      std::ofstream out(path, std::ios::binary | std::ios::trunc);
+      if(!out) return PE::ERROR_CANNOT_WRITE_FILE;
+      PE::Error_code ec = f.write(out);
+      out.flush();
+      if(ec == PE::OK && !out) ec = PE::ERROR_CANNOT_WRITE_FILE;
+      out.close(); // close() writes what is still buffered: checked too
+      if(ec == PE::OK && out.fail()) ec = PE::ERROR_CANNOT_WRITE_FILE;
+      return ec;
+    }
+    catch(...) { return PE::ERROR_CANNOT_WRITE_FILE; }
+  };
+  // devices first: they are written in place, so that a failing one comes before any other file is touched
+  for(int pass = 0; pass < 2; ++pass)
+    for(const Output_file& f : files)
+    {
+      const std::string target = AO::atomic_output_resolve_links(f.name);
+      struct stat st;
+      const bool exists = ::stat(target.c_str(), &st) == 0;
+      if(exists && S_ISDIR(st.st_mode)) return abandon(f.name);
+      const bool device = exists && !S_ISREG(st.st_mode);
+      if(device != (pass == 0)) continue;
+      if(device)
+      {
+        const PE::Error_code ec = write_to(target, f);
+        if(ec != PE::OK) return abandon(f.name, ec);
+        continue;
+      }
+      const mode_t mode = exists ? (st.st_mode & 07777) : 0666;
+      const std::string temporary = AO::atomic_output_create_temporary(target, mode);
+      if(temporary.empty()) return abandon(f.name);
+      pending.emplace_back(temporary, target);
+      if(exists) (void)::chmod(temporary.c_str(), mode); // open() applied the umask; keep the old file's mode
+      const PE::Error_code ec = write_to(temporary, f);
+      if(ec != PE::OK) return abandon(f.name, ec);
+    }
+  for(std::size_t k = 0; k < pending.size(); ++k)
+    if(std::rename(pending[k].first.c_str(), pending[k].second.c_str()) != 0)
+    {
+      // rare (the folder changed under us): the files renamed so far stay, the others are not written
+      pending.erase(pending.begin(), pending.begin() + std::ptrdiff_t(k));
+      return abandon(pending.front().second);
+    }
+  return EXIT_VALID;
+}
+
 int read_constraints(Run& run, const std::string& filename, Input& in, std::vector<vertex_descriptor>& fixed)
 {
+  {
+    const int status = require_file_vertex_order(run, in, "the vertex indices of --fix");
+    if(status != EXIT_VALID) return status;
+  }
   const std::string what = "cannot use --fix '" + filename + "'";
   const std::size_t n = in.mesh.number_of_vertices();
   return for_each_data_line(run, filename, what, 4, [&](std::size_t lineno, const std::vector<std::string>& tokens) -> int
@@ -386,7 +466,10 @@ int read_polygon(Run& run, const std::string& filename, std::vector<Point_2>& po
   });
 }
 
-int write_picture(Run& run, const Input& in, const std::string& svg, const Picture& picture)
+namespace {
+
+// draws the picture of the map to `out` (the package's SVG writer)
+PE::Error_code draw_picture(std::ostream& out, const Input& in, const Picture& picture)
 {
   PE::IO::SVG_options options;
   options.title = picture.title;
@@ -394,29 +477,34 @@ int write_picture(Run& run, const Input& in, const std::string& svg, const Pictu
   // the distortion colors need 3D triangles of non-zero area: without them, plain faces
   options.color_by_distortion = picture.color_by_distortion && picture.has_3d_energy;
   // with the caller's certificate the writer only draws; without it, it certifies first
-  PE::Error_code ec;
   if(picture.report)
-    ec = picture.has_patches
-      ? PE::IO::write_SVG(svg, in.mesh, in.uv, *picture.report, options,
+    return picture.has_patches
+      ? PE::IO::write_SVG(out, in.mesh, in.uv, *picture.report, options,
           PE::parameters::face_patch_map(picture.patches, PE::parameters::constrained_vertices(picture.constrained)))
-      : PE::IO::write_SVG(svg, in.mesh, in.uv, *picture.report, options);
-  else
-    ec = picture.has_patches
-      ? PE::IO::write_SVG(svg, in.mesh, in.uv, options,
-          PE::parameters::face_patch_map(picture.patches, PE::parameters::constrained_vertices(picture.constrained)))
-      : PE::IO::write_SVG(svg, in.mesh, in.uv, options);
-  if(ec != PE::OK) return run.fail(ec, "cannot write '" + svg + "'");
-  return EXIT_VALID;
+      : PE::IO::write_SVG(out, in.mesh, in.uv, *picture.report, options);
+  return picture.has_patches
+    ? PE::IO::write_SVG(out, in.mesh, in.uv, options,
+        PE::parameters::face_patch_map(picture.patches, PE::parameters::constrained_vertices(picture.constrained)))
+    : PE::IO::write_SVG(out, in.mesh, in.uv, options);
+}
+
+} // namespace
+
+int write_picture(Run& run, const Input& in, const std::string& svg, const Picture& picture)
+{
+  return write_files_together(run, { { svg, [&](std::ostream& os) { return draw_picture(os, in, picture); } } });
 }
 
 int write_outputs(Run& run, const Input& in, const std::string& obj, const std::string& svg, const Picture& picture)
 {
-  const PE::Error_code ec = in.has_uv && !in.vt_to_v.empty()
-                              ? PE::IO::write_OBJ_with_uv(obj, in.mesh, in.uv, &in.vt_to_v, &in.positions)
-                              : PE::IO::write_OBJ_with_uv(obj, in.mesh, in.uv);
-  if(ec != PE::OK) return run.fail(ec, "cannot write '" + obj + "'");
-  if(!svg.empty()) return write_picture(run, in, svg, picture);
-  return EXIT_VALID;
+  // the map and its picture all or none
+  std::vector<Output_file> files;
+  files.push_back({ obj, [&](std::ostream& os) {
+    return in.has_uv && !in.vt_to_v.empty() ? PE::IO::write_OBJ_with_uv(os, in.mesh, in.uv, &in.vt_to_v, &in.positions)
+                                            : PE::IO::write_OBJ_with_uv(os, in.mesh, in.uv);
+  } });
+  if(!svg.empty()) files.push_back({ svg, [&](std::ostream& os) { return draw_picture(os, in, picture); } });
+  return write_files_together(run, files);
 }
 
 } // namespace pe_tool

@@ -22,6 +22,7 @@
 #include <cstring>
 #include <string>
 
+#include <sys/stat.h>
 #include <unistd.h> // isatty, execv
 
 namespace pe_tool {
@@ -438,6 +439,29 @@ std::string parse_arguments(int argc, char** argv, const Command_spec& c, Argume
   if(a.has("--optimize") && a.has("--no-optimize")) return "options --optimize and --no-optimize exclude each other";
   if(a.positional.size() < c.min_positional || a.positional.size() > c.max_positional)
     return std::string(c.name) + " takes " + c.arguments + " (" + std::to_string(a.positional.size()) + " arguments given)";
+  // two outputs of one run naming one file: the later would silently replace the earlier
+  std::vector<std::pair<std::string, std::string> > outputs; // (what, file)
+  if(c.output >= 0 && std::size_t(c.output) < a.positional.size())
+    outputs.emplace_back("the output", a.positional[std::size_t(c.output)]);
+  for(const auto& kv : a.options)
+  {
+    const Option_spec* o = find_option(kv.first);
+    if(o->kind == Kind::OUTPUT_FILE || o->kind == Kind::OUTPUT_FILE_PAIR) outputs.emplace_back(kv.first, kv.second);
+    if(o->kind == Kind::OUTPUT_FILE_PAIR) outputs.emplace_back(kv.first, a.second_values.at(kv.first));
+  }
+  for(std::size_t i = 0; i < outputs.size(); ++i)
+    for(std::size_t j = i + 1; j < outputs.size(); ++j)
+    {
+      // (a device such as /dev/null may take several outputs)
+      struct stat si, sj;
+      const bool ei = ::stat(outputs[i].second.c_str(), &si) == 0, ej = ::stat(outputs[j].second.c_str(), &sj) == 0;
+      if(ei && !S_ISREG(si.st_mode)) continue;
+      const bool same = outputs[i].second == outputs[j].second || (ei && ej && si.st_dev == sj.st_dev && si.st_ino == sj.st_ino);
+      if(same)
+        return (outputs[i].first == outputs[j].first ? "the two files of " + outputs[i].first
+                                                     : outputs[i].first + " and " + outputs[j].first) +
+               " name the same file '" + outputs[j].second + "'";
+    }
   return std::string();
 }
 

@@ -16,6 +16,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <cstring>
+#include <functional>
+#include <ostream>
 #include <CGAL/Surface_mesh.h>
 
 namespace CGAL {
@@ -46,6 +48,7 @@ struct Input
   bool has_uv = false;                  // read from `vt` entries
   std::vector<std::size_t> vt_to_v;     // with has_uv: to write the seams back; empty for a file without seams
   std::vector<Point_3> positions;       // the `v` lines, with vt_to_v
+  std::size_t dropped_vertices = 0;     // vertices (or `vt` entries) of the file in no face, left out of `mesh`
 };
 
 enum class Uv_mode { REQUIRED, OPTIONAL, IGNORED };
@@ -57,8 +60,27 @@ enum class Shape { DISK, CLOSED_SPHERE, DISK_OR_SPHERE };
 int read_input(Run& run, const std::string& filename, Input& in, Uv_mode mode, Shape shape = Shape::DISK,
                const std::string& role = std::string());
 
-// Reads `vertex_index u v` lines (--fix) into `in.uv` and `fixed`; same return as read_input().
+// Refuses (exit 3) an input whose file had vertices in no face, which the reader leaves out: `indices` (the
+// vertex indices of some file, said as a plural subject) count the file's vertices, which the mesh no longer
+// has in that order. Same return as read_input().
+int require_file_vertex_order(Run& run, const Input& in, const std::string& indices);
+
+// Reads `vertex_index u v` lines (--fix) into `in.uv` and `fixed` (refusing an input with vertices in no face,
+// see require_file_vertex_order()); same return as read_input().
 int read_constraints(Run& run, const std::string& filename, Input& in, std::vector<vertex_descriptor>& fixed);
+
+// One output file of write_files_together(): its name, and what writes its content.
+struct Output_file
+{
+  std::string name;
+  std::function<PE::Error_code(std::ostream&)> write;
+};
+
+// Writes several output files all or none: each content goes first to a temporary file beside its target (a
+// device such as /dev/null or /dev/full is written in place, first), and the temporaries replace their targets
+// only once all of them are written; on a failure every temporary is removed, the targets are left as they were,
+// and the failure is reported through `run` naming the file (exit 4). EXIT_VALID otherwise.
+int write_files_together(Run& run, const std::vector<Output_file>& files);
 
 // Reads a polygon given as `x y` lines (blank lines and `#` comments skipped) into `points`; same
 // return as read_input().

@@ -36,6 +36,7 @@
 #include <CGAL/Progressive_embedding/internal/cross/composed_distortion.h>
 #include <CGAL/Progressive_embedding/internal/cross/cut_border.h>
 #include <CGAL/Progressive_embedding/internal/cross/cut_closed.h>
+#include <CGAL/Progressive_embedding/internal/cross/failure_reason.h>
 #include <CGAL/Progressive_embedding/internal/cross/locate_in_map.h>
 #include <CGAL/Progressive_embedding/internal/cross/overlay_maps.h>
 #include <CGAL/Progressive_embedding/internal/cross/weld_cut_overlay.h>
@@ -153,7 +154,10 @@ struct Cross_parameterization_statistics
 {
   /// on an error about one landmark (`ERROR_WRONG_PARAMETER`: a vertex not of its mesh, or a border landmark out of
   /// the order of the others along B's border; `ERROR_CONSTRAINT_ON_BORDER`; `ERROR_DUPLICATE_CONSTRAINT`: a vertex of
-  /// A or of B used twice, the later one): its position in the `landmarks` range; `std::size_t(-1)` otherwise
+  /// A or of B used twice, the later one, or a border landmark that gives a vertex of `border_vertex_pair` another
+  /// partner; for closed meshes `ERROR_PATH_TRACING_FAILED`: the landmark the chain of cuts cannot reach from the one
+  /// before, and `ERROR_NOT_A_DISK`: the second of two landmarks joined by an edge): its position in the `landmarks`
+  /// range; `std::size_t(-1)` otherwise
   std::size_t failed_landmark = std::size_t(-1);
   /// the mesh an error is about: 0 for A, 1 for B, -1 for none (a mesh that is not a disk or has fewer than four
   /// border vertices, a landmark vertex, a border vertex of `border_vertex_pair`, a map that failed)
@@ -742,11 +746,17 @@ Error_code cross_parameterization_disks(
     start_b = border_pos_b[ib->second];
     // the pair is matched like a border landmark; a vertex of it in another landmark must have the same partner
     bool listed = false;
-    for(const auto& bp : border_pairs)
+    for(std::size_t k = 0; k < border_pairs.size(); ++k)
     {
+      const auto& bp = border_pairs[k];
       if(bp.first == ia->second && bp.second == ib->second) listed = true;
-      else if(bp.first == ia->second) { stats.failed_mesh = 0; return finish(ERROR_DUPLICATE_CONSTRAINT); }
-      else if(bp.second == ib->second) { stats.failed_mesh = 1; return finish(ERROR_DUPLICATE_CONSTRAINT); }
+      else if(bp.first == ia->second || bp.second == ib->second)
+      {
+        // the landmark that gives one of the pair's vertices another partner
+        stats.failed_landmark = border_pair_input[k];
+        stats.failed_mesh = bp.first == ia->second ? 0 : 1;
+        return finish(ERROR_DUPLICATE_CONSTRAINT);
+      }
     }
     if(!listed && !border_pairs.empty())
     {
@@ -1599,7 +1609,7 @@ Error_code cross_parameterization_closed(
 ///         `Cross_parameterization_statistics::failed_mesh` says which), `ERROR_NON_FINITE_COORDINATES` (a NaN or
 ///         infinite 3D point; `failed_mesh` says which mesh), for closed meshes `ERROR_NOT_GENUS_ZERO`
 ///         and `ERROR_PATH_TRACING_FAILED` (the chain of landmarks cannot go on without crossing itself; with
-///         `failed_landmark`),
+///         `failed_landmark`), `ERROR_WRONG_PARAMETER` for two closed meshes with fewer than two landmarks,
 ///         `ERROR_BORDER_TOO_SHORT` (fewer than four border vertices; `failed_mesh` says which mesh), `ERROR_WRONG_PARAMETER` (a landmark vertex
 ///         not of its mesh, a `border_vertex_pair` vertex not on its border, border landmarks not in the same order
 ///         along both borders), `ERROR_CONSTRAINT_ON_BORDER` (a landmark with one vertex on its border and the other
@@ -1610,7 +1620,8 @@ Error_code cross_parameterization_closed(
 ///         errors of `parameterize_certified()` on B and of `constrained_embedding()` on A, or
 ///         `ERROR_INVALID_EMBEDDING` when a certificate fails (of either map, of the location, or with `compatible_meshes` of
 ///         the triangulated overlay, for closed meshes also of the overlay joined along the cut), for closed meshes
-///         `ERROR_NOT_A_DISK` when the cut is a single edge (two landmarks joined by an edge: the cut opens nothing) and
+///         `ERROR_NOT_A_DISK` when the cut is a single edge (two landmarks joined by an edge: the cut opens nothing;
+///         with `failed_landmark`, the second landmark) and
 ///         `ERROR_DEGENERATE_BORDER` when two points of an arc of the cut cannot be kept apart in double.
 template <typename ConcurrencyTag = CGAL::Sequential_tag, class TriangleMeshA, class TriangleMeshB,
           class LandmarkRange, class LocationMap, class NamedParameters = CGAL::parameters::Default_named_parameters>

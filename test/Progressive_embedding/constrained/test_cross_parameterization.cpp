@@ -788,6 +788,14 @@ int closed_surfaces(const std::string& data_dir)
     ec = PE::cross_parameterization(a, b, std::vector<std::pair<vd, vd> >(1, landmarks[0]), boost::make_assoc_property_map(none),
                                     PE::parameters::statistics(&st));
     CHECK(ec == PE::ERROR_WRONG_PARAMETER && none.empty(), "one landmark refused: " << PE::get_error_name(ec));
+    // two landmarks joined by an edge of A: a cut along one edge opens nothing; the second landmark is named
+    {
+      const vd v0 = landmarks[0].first, v1 = source(halfedge(v0, a), a);
+      const std::vector<std::pair<vd, vd> > joined{ { v0, landmarks[0].second }, { v1, landmarks[1].second } };
+      ec = PE::cross_parameterization(a, b, joined, boost::make_assoc_property_map(none), PE::parameters::statistics(&st));
+      CHECK(ec == PE::ERROR_NOT_A_DISK && st.failed_landmark == 1 && st.failed_mesh == 0 && none.empty(),
+            "two landmarks joined by an edge refused: " << PE::get_error_name(ec) << ", landmark " << st.failed_landmark);
+    }
     // B read again with a NaN point: its landmarks are its vertices at the same positions in the file
     Mesh nan_b;
     CHECK(CGAL::IO::read_polygon_mesh(file, nan_b), "read " << file);
@@ -801,7 +809,8 @@ int closed_surfaces(const std::string& data_dir)
     CHECK(ec == PE::ERROR_NON_FINITE_COORDINATES && st.failed_mesh == 1 && none.empty(), "a NaN point refused: " << PE::get_error_name(ec));
   }
   std::cout << "closed surfaces refused: genus 3 (ERROR_NOT_GENUS_ZERO), closed against a disk (ERROR_NOT_A_DISK), "
-            << "one landmark (ERROR_WRONG_PARAMETER), a NaN point in B (ERROR_NON_FINITE_COORDINATES)" << std::endl;
+            << "one landmark (ERROR_WRONG_PARAMETER), two landmarks joined by an edge (ERROR_NOT_A_DISK, the second named), "
+            << "a NaN point in B (ERROR_NON_FINITE_COORDINATES)" << std::endl;
   return EXIT_SUCCESS;
 }
 
@@ -855,6 +864,17 @@ int errors(const std::string& data_dir)
   RUN(run(a, b, { { ia[0], ib[0] }, { ia[1], ib[0] } }, PE::ERROR_DUPLICATE_CONSTRAINT, 1, 1, "vertex of B twice"));
   RUN(run(a, b, { { ia[0], ib[0] }, { ba[0], ib[1] } }, PE::ERROR_CONSTRAINT_ON_BORDER, 1, 0, "landmark on A's border"));
   RUN(run(a, b, { { ia[0], ib[0] }, { ia[1], bb[0] } }, PE::ERROR_CONSTRAINT_ON_BORDER, 1, 1, "landmark on B's border"));
+  {
+    // a border landmark that gives a vertex of border_vertex_pair another partner: that landmark is named
+    PE::Cross_parameterization_statistics st;
+    const std::vector<std::pair<vd, vd> > l{ { ia[0], ib[0] }, { ba[0], bb[0] } };
+    const PE::Error_code ec = PE::cross_parameterization(a, b, l, boost::make_assoc_property_map(loc),
+      PE::parameters::border_vertex_pair(std::make_pair(ba[0], bb[1]), PE::parameters::statistics(&st)));
+    CHECK(ec == PE::ERROR_DUPLICATE_CONSTRAINT && st.failed_landmark == 1 && st.failed_mesh == 0 && loc.empty(),
+          "a border landmark against border_vertex_pair: " << PE::get_error_name(ec) << ", landmark " << st.failed_landmark);
+    std::cout << "  " << mesh_name<Mesh>() << ", a border landmark against border_vertex_pair: " << PE::get_error_name(ec)
+              << ", landmark " << st.failed_landmark << std::endl;
+  }
   {
     // a single triangle: three border vertices for the square's four corners, on A or on B
     Mesh tri;

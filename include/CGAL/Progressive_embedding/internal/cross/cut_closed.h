@@ -62,9 +62,11 @@ bool is_closed_mesh(const TriangleMesh& tm)
 }
 
 // `chain`: mesh vertices (distinct). On success `cut` is a disk (for a connected genus-0 mesh). Returns
-// ERROR_NON_TRIANGULAR_MESH, ERROR_NOT_GENUS_ZERO (not connected, or Euler characteristic not 2), or
+// ERROR_NON_TRIANGULAR_MESH, ERROR_NOT_GENUS_ZERO (not connected, or Euler characteristic not 2),
 // ERROR_PATH_TRACING_FAILED with `failed` the chain position whose path from the previous one was not
-// found (the earlier paths and the other landmarks closed every way).
+// found (the earlier paths and the other landmarks closed every way), or ERROR_NOT_A_DISK with `failed` 1 when
+// the whole cut is one edge (two landmarks joined by an edge: only the inner vertices of a cut are doubled, so
+// such a cut opens nothing and the surface would stay closed).
 template <class TriangleMesh, class VPM>
 Error_code cut_along_chain(const TriangleMesh& tm, VPM vpm,
                            const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& chain,
@@ -134,6 +136,7 @@ Error_code cut_along_chain(const TriangleMesh& tm, VPM vpm,
     for(std::size_t j = to; j != from; j = parent[j]) piece.push_back(j);
     for(auto it = piece.rbegin(); it != piece.rend(); ++it) { path.push_back(*it); blocked[*it] = 1; }
   }
+  if(path.size() < 3) { failed = 1; return ERROR_NOT_A_DISK; }
   cut.path_edges = path.size() - 1;
   // every vertex inside the chain doubled: the faces counterclockwise from the next chain vertex to the
   // previous one take the copy

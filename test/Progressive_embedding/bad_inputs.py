@@ -370,6 +370,8 @@ CASES = [
                                "{t}/cx_a.obj", "{t}/cx_b.obj", "--svg", "/dev/full"], 4, r"cannot write '/dev/full'.*ERROR_CANNOT_WRITE_FILE"),
     ("cross", "same_output", ["cross", "{t}/fan.off", "{t}/fan.off", "{t}/lm_fan.txt", "{t}/cx_same.txt", "--svg", "{t}/cx_same.txt"], 2,
      r"the output and --svg name the same file"),
+    ("cross", "same_output_spelled", ["cross", "{t}/fan.off", "{t}/fan.off", "{t}/lm_fan.txt", "{t}/cx_same2.txt", "--svg",
+                                      "{t}/./cx_same2.txt"], 2, r"the output and --svg name the same file"),
     ("outputs", "dev_full", ["tutte", "{t}/unreferenced.off", "/dev/full"], 4, r"cannot write '/dev/full'.*ERROR_CANNOT_WRITE_FILE"),
     ("outputs", "missing_folder", ["tutte", "{t}/unreferenced.off", "{t}/no_such_folder/o.obj"], 4,
      r"no_such_folder/o.obj.*does not exist.*ERROR_CANNOT_WRITE_FILE"),
@@ -385,7 +387,8 @@ CASES = [
 NO_FILE_AFTER = {"file_size_limit": ["{t}/big.obj"], "missing_folder": ["{t}/no_such_folder/o.obj"],
                  "unreferenced": ["{t}/cx_unreferenced.txt"], "closed_one_landmark": ["{t}/cx_one.txt"],
                  "closed_edge": ["{t}/cx_edge.txt"], "border_too_short": ["{t}/cx_short.txt"],
-                 "svg_dev_full": ["{t}/cx_full.txt", "{t}/cx_a.obj", "{t}/cx_b.obj"], "same_output": ["{t}/cx_same.txt"]}
+                 "svg_dev_full": ["{t}/cx_full.txt", "{t}/cx_a.obj", "{t}/cx_b.obj"], "same_output": ["{t}/cx_same.txt"],
+                 "same_output_spelled": ["{t}/cx_same2.txt"]}
 FILE_SIZE_LIMIT = {"file_size_limit": 4096}
 
 def limits(file_size=None):

@@ -123,11 +123,9 @@ int cmd_cross(const Arguments& a)
   if(status != EXIT_VALID) return status;
   status = read_input(run, a.positional[1], in_b, Uv_mode::IGNORED, Shape::DISK_OR_SPHERE, "B");
   if(status != EXIT_VALID) return status;
-  for(const Input* in : { &in_a, &in_b })
-  {
-    status = require_file_vertex_order(run, *in, "the vertex indices of LANDMARKS and the lines of OUT.txt");
-    if(status != EXIT_VALID) return status;
-  }
+  status = require_file_vertex_order(run, in_a, "the vertex indices of LANDMARKS and the lines of OUT.txt");
+  if(status == EXIT_VALID) status = require_file_vertex_order(run, in_b, "the vertex indices of LANDMARKS");
+  if(status != EXIT_VALID) return status;
   std::vector<Landmark> landmarks;
   std::vector<std::size_t> lines;
   status = read_landmarks(run, a.positional[2], in_a.mesh, in_b.mesh, landmarks, lines);

@@ -336,10 +336,14 @@ int for_each_data_line(Run& run, const std::string& filename, const std::string&
 int require_file_vertex_order(Run& run, const Input& in, const std::string& indices)
 {
   if(in.dropped_vertices == 0) return EXIT_VALID;
+  // with texture coordinates the mesh's vertices are the file's `vt` entries
+  const std::string what = in.has_uv ? "texture coordinate (vt)" : "vertex";
+  const std::string count = std::to_string(in.dropped_vertices) + " " +
+                            (in.dropped_vertices == 1 ? what : in.has_uv ? std::string("texture coordinates (vt)") : std::string("vertices"));
   return run.fail(PE::ERROR_NOT_A_DISK, "cannot use '" + in.filename + "'",
-                  plural(in.dropped_vertices, "vertex") + " of the file " + (in.dropped_vertices == 1 ? "is" : "are") +
-                  " in no face: " + indices + " count the file's vertices, which the mesh read (without them) no longer "
-                  "has in that order; remove the vertices that no face uses");
+                  count + " of the file " + (in.dropped_vertices == 1 ? "is" : "are") + " in no face: " + indices +
+                  " count the file's " + (in.has_uv ? "vt entries" : "vertices") + ", which the mesh read (without the "
+                  "unused ones) no longer has in that order; remove what no face uses");
 }
 
 int write_files_together(Run& run, const std::vector<Output_file>& files)
@@ -347,57 +351,66 @@ int write_files_together(Run& run, const std::vector<Output_file>& files)
   namespace AO = PE::IO::internal;
   // (temporary, target) of the files written so far
   std::vector<std::pair<std::string, std::string> > pending;
-  auto abandon = [&](const std::string& name, PE::Error_code ec = PE::ERROR_CANNOT_WRITE_FILE) {
-    for(const auto& p : pending) std::remove(p.first.c_str());
-    return run.fail(ec, "cannot write '" + name + "'");
-  };
-  // (libstdc++'s filebuf may throw std::bad_cast from close() after a failed write: every exception is a failure)
-  auto write_to = [](const std::string& path, const Output_file& f) {
-    try
-    {
-      std::ofstream out(path, std::ios::binary | std::ios::trunc);
-      if(!out) return PE::ERROR_CANNOT_WRITE_FILE;
-      PE::Error_code ec = f.write(out);
-      out.flush();
-      if(ec == PE::OK && !out) ec = PE::ERROR_CANNOT_WRITE_FILE;
-      out.close(); // close() writes what is still buffered: checked too
-      if(ec == PE::OK && out.fail()) ec = PE::ERROR_CANNOT_WRITE_FILE;
-      return ec;
-    }
-    catch(...) { return PE::ERROR_CANNOT_WRITE_FILE; }
-  };
-  // devices first: they are written in place, so that a failing one comes before any other file is touched
-  for(int pass = 0; pass < 2; ++pass)
-    for(const Output_file& f : files)
-    {
-      const std::string target = AO::atomic_output_resolve_links(f.name);
-      struct stat st;
-      const bool exists = ::stat(target.c_str(), &st) == 0;
-      if(exists && S_ISDIR(st.st_mode)) return abandon(f.name);
-      const bool device = exists && !S_ISREG(st.st_mode);
-      if(device != (pass == 0)) continue;
-      if(device)
+  try
+  {
+    auto abandon = [&](const std::string& name, PE::Error_code ec = PE::ERROR_CANNOT_WRITE_FILE) {
+      for(const auto& p : pending) std::remove(p.first.c_str());
+      return run.fail(ec, "cannot write '" + name + "'");
+    };
+    // (libstdc++'s filebuf may throw std::bad_cast from close() after a failed write: every exception is a failure)
+    auto write_to = [](const std::string& path, const Output_file& f) {
+      try
       {
-        const PE::Error_code ec = write_to(target, f);
-        if(ec != PE::OK) return abandon(f.name, ec);
-        continue;
+        std::ofstream out(path, std::ios::binary | std::ios::trunc);
+        if(!out) return PE::ERROR_CANNOT_WRITE_FILE;
+        PE::Error_code ec = f.write(out);
+        out.flush();
+        if(ec == PE::OK && !out) ec = PE::ERROR_CANNOT_WRITE_FILE;
+        out.close(); // close() writes what is still buffered: checked too
+        if(ec == PE::OK && out.fail()) ec = PE::ERROR_CANNOT_WRITE_FILE;
+        return ec;
       }
-      const mode_t mode = exists ? (st.st_mode & 07777) : 0666;
-      const std::string temporary = AO::atomic_output_create_temporary(target, mode);
-      if(temporary.empty()) return abandon(f.name);
-      pending.emplace_back(temporary, target);
-      if(exists) (void)::chmod(temporary.c_str(), mode); // open() applied the umask; keep the old file's mode
-      const PE::Error_code ec = write_to(temporary, f);
-      if(ec != PE::OK) return abandon(f.name, ec);
-    }
-  for(std::size_t k = 0; k < pending.size(); ++k)
-    if(std::rename(pending[k].first.c_str(), pending[k].second.c_str()) != 0)
-    {
-      // rare (the folder changed under us): the files renamed so far stay, the others are not written
-      pending.erase(pending.begin(), pending.begin() + std::ptrdiff_t(k));
-      return abandon(pending.front().second);
-    }
-  return EXIT_VALID;
+      catch(...) { return PE::ERROR_CANNOT_WRITE_FILE; }
+    };
+    // devices first: they are written in place, so that a failing one comes before any other file is touched
+    for(int pass = 0; pass < 2; ++pass)
+      for(const Output_file& f : files)
+      {
+        const std::string target = AO::atomic_output_resolve_links(f.name);
+        struct stat st;
+        const bool exists = ::stat(target.c_str(), &st) == 0;
+        if(exists && S_ISDIR(st.st_mode)) return abandon(f.name);
+        const bool device = exists && !S_ISREG(st.st_mode);
+        if(device != (pass == 0)) continue;
+        if(device)
+        {
+          const PE::Error_code ec = write_to(target, f);
+          if(ec != PE::OK) return abandon(f.name, ec);
+          continue;
+        }
+        const mode_t mode = exists ? (st.st_mode & 07777) : 0666;
+        const std::string temporary = AO::atomic_output_create_temporary(target, mode);
+        if(temporary.empty()) return abandon(f.name);
+        pending.emplace_back(temporary, target);
+        if(exists) (void)::chmod(temporary.c_str(), mode); // open() applied the umask; keep the old file's mode
+        const PE::Error_code ec = write_to(temporary, f);
+        if(ec != PE::OK) return abandon(f.name, ec);
+      }
+    for(std::size_t k = 0; k < pending.size(); ++k)
+      if(std::rename(pending[k].first.c_str(), pending[k].second.c_str()) != 0)
+      {
+        // rare (the folder changed under us): the files renamed so far stay, the others are not written
+        pending.erase(pending.begin(), pending.begin() + std::ptrdiff_t(k));
+        return abandon(pending.front().second);
+      }
+    return EXIT_VALID;
+  }
+  catch(...)
+  {
+    // (std::random_device, std::bad_alloc...): no temporary left behind
+    for(const auto& p : pending) std::remove(p.first.c_str());
+    return run.fail(PE::ERROR_CANNOT_WRITE_FILE, "cannot write the output files");
+  }
 }
 
 int read_constraints(Run& run, const std::string& filename, Input& in, std::vector<vertex_descriptor>& fixed)

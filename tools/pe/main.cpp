@@ -439,7 +439,17 @@ std::string parse_arguments(int argc, char** argv, const Command_spec& c, Argume
   if(a.has("--optimize") && a.has("--no-optimize")) return "options --optimize and --no-optimize exclude each other";
   if(a.positional.size() < c.min_positional || a.positional.size() > c.max_positional)
     return std::string(c.name) + " takes " + c.arguments + " (" + std::to_string(a.positional.size()) + " arguments given)";
-  // two outputs of one run naming one file: the later would silently replace the earlier
+  // two outputs of one run naming one file: the later would silently replace the earlier. A name is compared
+  // through its folder's real path, so that 'x.txt' and './x.txt' are one file even before it exists.
+  auto canonical = [](const std::string& path) {
+    const std::size_t slash = path.find_last_of('/');
+    const std::string folder = slash == std::string::npos ? std::string(".") : (slash == 0 ? std::string("/") : path.substr(0, slash));
+    char* real = ::realpath(folder.c_str(), nullptr);
+    if(real == nullptr) return path;
+    const std::string r = std::string(real) + "/" + (slash == std::string::npos ? path : path.substr(slash + 1));
+    std::free(real);
+    return r;
+  };
   std::vector<std::pair<std::string, std::string> > outputs; // (what, file)
   if(c.output >= 0 && std::size_t(c.output) < a.positional.size())
     outputs.emplace_back("the output", a.positional[std::size_t(c.output)]);
@@ -456,7 +466,8 @@ std::string parse_arguments(int argc, char** argv, const Command_spec& c, Argume
       struct stat si, sj;
       const bool ei = ::stat(outputs[i].second.c_str(), &si) == 0, ej = ::stat(outputs[j].second.c_str(), &sj) == 0;
       if(ei && !S_ISREG(si.st_mode)) continue;
-      const bool same = outputs[i].second == outputs[j].second || (ei && ej && si.st_dev == sj.st_dev && si.st_ino == sj.st_ino);
+      const bool same = outputs[i].second == outputs[j].second || canonical(outputs[i].second) == canonical(outputs[j].second) ||
+                        (ei && ej && si.st_dev == sj.st_dev && si.st_ino == sj.st_ino);
       if(same)
         return (outputs[i].first == outputs[j].first ? "the two files of " + outputs[i].first
                                                      : outputs[i].first + " and " + outputs[j].first) +

@@ -76,10 +76,12 @@ struct Output_file
   std::function<PE::Error_code(std::ostream&)> write;
 };
 
-// Writes several output files all or none: each content goes first to a temporary file beside its target (a
-// device such as /dev/null or /dev/full is written in place, first), and the temporaries replace their targets
-// only once all of them are written; on a failure every temporary is removed, the targets are left as they were,
-// and the failure is reported through `run` naming the file (exit 4). EXIT_VALID otherwise.
+// Writes several output files all or none: each content goes first to a temporary file beside its target, and
+// the temporaries replace their targets only once all of them are written; on a failure every temporary is
+// removed, the targets are left as they were, and the failure is reported through `run` naming the file (exit 4).
+// EXIT_VALID otherwise. Two exceptions: a device such as /dev/null or /dev/tty is written in place, before the
+// files (so a failing device comes first, but what went to it stays), and a rename that fails (the folder changed
+// during the run) leaves the targets renamed before it replaced.
 int write_files_together(Run& run, const std::vector<Output_file>& files);
 
 // Reads a polygon given as `x y` lines (blank lines and `#` comments skipped) into `points`; same

@@ -384,7 +384,8 @@ int write_files_together(Run& run, const std::vector<Output_file>& files)
         if(device != (pass == 0)) continue;
         if(device)
         {
-          const PE::Error_code ec = write_to(target, f);
+          // the library's writer writes a device in place, with the same checks
+          const PE::Error_code ec = AO::write_file_atomically(target, f.write);
           if(ec != PE::OK) return abandon(f.name, ec);
           continue;
         }

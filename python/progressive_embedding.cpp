@@ -783,8 +783,9 @@ py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::objec
       else if(st.failed_mesh >= 0)
       {
         context += st.failed_mesh == 0 ? ", mesh A (V_a, F_a)" : ", mesh B (V_b, F_b)";
-        const std::string why = PE::internal::cross_mesh_fault(ec, st.border_landmarks);
-        if(why != PE::get_error_message(ec)) context += ": " + why;
+        const std::string why = PE::internal::cross_mesh_fault(ec, st.border_landmarks,
+                                  !st.closed && CGAL::is_closed(st.failed_mesh == 0 ? wa.mesh : wb.mesh));
+        if(!why.empty()) context += ": " + why;
       }
       else if(st.closed && ec == PE::ERROR_WRONG_PARAMETER)
         context += ": closed meshes need at least two landmarks (the cut runs through them in their order), and "

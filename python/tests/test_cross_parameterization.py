@@ -227,8 +227,8 @@ def test_errors():
     assert 'the vertex 14 of B is not on its border' in raises('ERROR_WRONG_PARAMETER', V, F, V, F, border_vertex_pair=(0, 14))
     assert '99 is not a vertex of B' in raises('ERROR_WRONG_PARAMETER', V, F, V, F, border_vertex_pair=(0, 99))
     # not disks
-    assert 'mesh A' in raises('ERROR_NOT_A_DISK', TETRAHEDRON_V, TETRAHEDRON_F, V, F)
-    assert 'mesh B' in raises('ERROR_NOT_A_DISK', V, F, TETRAHEDRON_V, TETRAHEDRON_F)
+    assert 'mesh A (V_a, F_a): closed, and the other mesh is not' in raises('ERROR_NOT_A_DISK', TETRAHEDRON_V, TETRAHEDRON_F, V, F)
+    assert 'mesh B (V_b, F_b): closed, and the other mesh is not' in raises('ERROR_NOT_A_DISK', V, F, TETRAHEDRON_V, TETRAHEDRON_F)
     raises('ERROR_BORDER_TOO_SHORT', V[:3], [[0, 1, 2]], V, F)  # a triangle: 3 border vertices for 4 corners
     # border landmarks that leave A's arc from 1 to 2 without a vertex for B's corner 5: said as in `pe cross`
     assert 'the border landmarks leave too few border vertices' in raises('ERROR_BORDER_TOO_SHORT', V, F, V, F,

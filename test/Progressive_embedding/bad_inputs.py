@@ -372,6 +372,11 @@ CASES = [
      r"the output and --svg name the same file"),
     ("cross", "same_output_spelled", ["cross", "{t}/fan.off", "{t}/fan.off", "{t}/lm_fan.txt", "{t}/cx_same2.txt", "--svg",
                                       "{t}/./cx_same2.txt"], 2, r"the output and --svg name the same file"),
+    # the standard output as an output (a pipe here): the map alone there, the note and the JSON on stderr; a vertex in
+    # no face is left out with a note and counted
+    ("outputs", "stdout", ["tutte", "{t}/unreferenced.off", "/dev/stdout", "--json"], 0,
+     r'^# OBJ with texture coordinates.*1 vertex of the file is in no face, left out of the mesh and of the outputs.*'
+     r'"unused_vertices": 1.*"written": true'),
     ("outputs", "dev_full", ["tutte", "{t}/unreferenced.off", "/dev/full"], 4, r"cannot write '/dev/full'.*ERROR_CANNOT_WRITE_FILE"),
     ("outputs", "missing_folder", ["tutte", "{t}/unreferenced.off", "{t}/no_such_folder/o.obj"], 4,
      r"no_such_folder/o.obj.*does not exist.*ERROR_CANNOT_WRITE_FILE"),
@@ -390,6 +395,8 @@ NO_FILE_AFTER = {"file_size_limit": ["{t}/big.obj"], "missing_folder": ["{t}/no_
                  "svg_dev_full": ["{t}/cx_full.txt", "{t}/cx_a.obj", "{t}/cx_b.obj"], "same_output": ["{t}/cx_same.txt"],
                  "same_output_spelled": ["{t}/cx_same2.txt"]}
 FILE_SIZE_LIMIT = {"file_size_limit": 4096}
+# what the standard output alone must match (the cases' regex sees it followed by the standard error)
+STDOUT_ALONE = {"stdout": r"^# OBJ with texture coordinates(?![\s\S]*(pe: |\{))[\s\S]*\Z"}
 
 def limits(file_size=None):
     def apply():
@@ -416,6 +423,8 @@ def run_case(pe, folder, case):
         problems.append("expected exit status %d, got %s" % (expect, how))
     if not re.search(regex, out.replace("\n", " ")):
         problems.append("output does not match %r" % regex)
+    if name in STDOUT_ALONE and not re.search(STDOUT_ALONE[name], p.stdout.decode(errors="replace")):
+        problems.append("the standard output does not match %r" % STDOUT_ALONE[name])
     if any(os.path.exists(f.replace("{t}", folder)) for f in NO_FILE_AFTER.get(name, [])):
         problems.append("an output file was left")
     if "std::bad_cast" in out or "-nan" in out:

@@ -44,6 +44,7 @@
 #include <string>
 #include <vector>
 
+#include <fcntl.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -736,7 +737,7 @@ int test_read_polygon_mesh_errors()
       PE::ERROR_NON_MANIFOLD, 10, "non-manifold edge" },
     { "two fans at a vertex", "bowtie.ply", "ply\nformat ascii 1.0\nelement vertex 5\nproperty double x\nproperty double y\n"
       "property double z\nelement face 2\nproperty list uchar uint vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n-1 0 0\n0 -1 0\n"
-      "3 0 1 2\n3 0 3 4\n", PE::ERROR_NON_MANIFOLD, 10, "non-manifold vertex 1" },
+      "3 0 1 2\n3 0 3 4\n", PE::ERROR_NON_MANIFOLD, 10, "non-manifold vertex (vertex 1 of the file, counting from 1)" },
     { "Moebius strip (cannot be oriented)", "moebius.obj",
       "v 1 0 0\nv 0.3 0.95 0.2\nv -0.8 0.6 -0.2\nv -0.8 -0.6 0.2\nv 0.3 -0.95 -0.2\n"
       "f 1 2 3\nf 2 3 4\nf 3 4 5\nf 4 5 1\nf 5 1 2\n", PE::ERROR_NON_MANIFOLD, 7, "cannot be fixed" },
@@ -1275,7 +1276,78 @@ int test_atomic_writes()
   uvm[*vertices(m).begin()] = Point_2(std::numeric_limits<double>::quiet_NaN(), 0);
   CHECK(PE::IO::write_OBJ_with_uv(dir.file("nan.obj"), m, uvm) == PE::ERROR_NON_FINITE_COORDINATES && !exists(dir.file("nan.obj")), "nan");
   CHECK(listing(dir).size() == 4, "temporary left after a data error");
-  std::cout << "writers: no partial file (/dev/full, file size limit, folder), devices written in place: OK" << std::endl;
+
+  // names of this process's descriptors (/proc/self/fd/N, /dev/fd/N, as /dev/stdout is), written through the
+  // descriptor: a pipe (its link's target "pipe:[N]" is no path); a file that a shell opened with `>` (the content
+  // where the descriptor stands, what is written to it afterwards after it) or `>>`, never replaced
+  namespace AO = PE::IO::internal;
+  auto text = [](const std::string& t) { return [t](std::ostream& os) { os << t; return PE::OK; }; };
+  int fds[2];
+  CHECK(::pipe(fds) == 0, "pipe");
+  const std::string pipe_link = "/proc/self/fd/" + std::to_string(fds[1]);
+  const bool proc = exists(pipe_link);
+  if(proc)
+  {
+    CHECK(AO::write_file_atomically(pipe_link, text("through a pipe\n")) == PE::OK, "a pipe through a descriptor link");
+    ::close(fds[1]);
+    char buffer[64] = { 0 };
+    const ssize_t n = ::read(fds[0], buffer, sizeof buffer - 1);
+    CHECK(n == 15 && std::string(buffer) == "through a pipe\n", "pipe content: " << n);
+    for(const int flags : { O_WRONLY | O_TRUNC, O_WRONLY | O_APPEND })
+    {
+      const std::string log = dir.file("log.txt");
+      write_bytes(log, "old\n");
+      struct stat before, after;
+      CHECK(::stat(log.c_str(), &before) == 0, "stat");
+      const int fd = ::open(log.c_str(), flags);
+      CHECK(fd >= 0, "open");
+      CHECK(::write(fd, "first\n", 6) == 6, "write");
+      // through /dev/fd/N, then through a link of the user's to /proc/self/fd/N
+      const PE::Error_code e1 = AO::write_file_atomically("/dev/fd/" + std::to_string(fd), text("second\n"));
+      const std::string link = dir.file("fd_link");
+      CHECK(::symlink(("/proc/self/fd/" + std::to_string(fd)).c_str(), link.c_str()) == 0, "symlink");
+      const PE::Error_code e2 = AO::write_file_atomically(link, text("third\n"));
+      CHECK(::write(fd, "fourth\n", 7) == 7, "write");
+      ::close(fd);
+      ::unlink(link.c_str());
+      const std::string expected = std::string(flags & O_APPEND ? "old\n" : "") + "first\nsecond\nthird\nfourth\n";
+      CHECK(e1 == PE::OK && e2 == PE::OK && read_bytes(log) == expected, "a file through its descriptor: " << read_bytes(log));
+      CHECK(::stat(log.c_str(), &after) == 0 && after.st_ino == before.st_ino, "a file through its descriptor replaced");
+      ::unlink(log.c_str());
+    }
+  }
+  else
+    ::close(fds[1]);
+  ::close(fds[0]);
+
+  // several files all or none: a failing device, a failing writer: no file written, the failing one's index
+  const std::string fa = dir.file("a.txt"), fb = dir.file("b.txt"), fc = dir.file("c.txt");
+  const std::size_t before_together = listing(dir).size();
+  std::vector<AO::Atomic_output_file> files = { { fa, text("a") }, { fb, text("b") }, { fc, text("c") } };
+  // names are checked before anything is written: a descriptor that is not open, a folder
+  files[2].name = "/dev/fd/" + std::to_string(fds[0]); // closed above
+  AO::Atomic_output_result checked = AO::write_files_atomically(files);
+  CHECK(checked.code == PE::ERROR_CANNOT_WRITE_FILE && checked.failed == 2 && listing(dir).size() == before_together, "a closed descriptor");
+  files[2].name = dir.file("folder.obj");
+  checked = AO::write_files_atomically(files);
+  CHECK(checked.code == PE::ERROR_CANNOT_WRITE_FILE && checked.failed == 2 && listing(dir).size() == before_together, "a folder");
+  files[2].name = fc;
+  if(is_char_device("/dev/full"))
+  {
+    files[1].name = "/dev/full";
+    const AO::Atomic_output_result r = AO::write_files_atomically(files);
+    CHECK(r.code == PE::ERROR_CANNOT_WRITE_FILE && r.failed == 1 && !exists(fa) && !exists(fc), "together, /dev/full");
+  }
+  files[1] = { fb, [](std::ostream& os) { os << "partial"; return PE::ERROR_NON_FINITE_COORDINATES; } };
+  const AO::Atomic_output_result data = AO::write_files_atomically(files);
+  CHECK(data.code == PE::ERROR_NON_FINITE_COORDINATES && data.failed == 1, "together, a data error: " << PE::get_error_name(data.code));
+  CHECK(listing(dir).size() == before_together, "together: a file or a temporary left after a failure");
+  files[1] = { "/dev/null", text("b") };
+  const AO::Atomic_output_result ok = AO::write_files_atomically(files);
+  CHECK(ok.code == PE::OK && read_bytes(fa) == "a" && read_bytes(fc) == "c" && listing(dir).size() == before_together + 2,
+        "together, written");
+  std::cout << "writers: no partial file (/dev/full, file size limit, folder), devices written in place, descriptors"
+            << (proc ? "" : " (no /proc: not checked)") << ", several files all or none: OK" << std::endl;
   return EXIT_SUCCESS;
 }
 

@@ -166,9 +166,12 @@ struct Run
   Result result;
   std::ostringstream summary;
   Timer timer;
+  bool summary_to_stderr = false; // an output goes to the standard output: the summary must not mix with it
+  std::vector<std::string> notes;  // printed to stderr by finish() as `pe: note: ...` unless the input was refused
 
   explicit Run(const Arguments& a) : args(a) { result.add("command", a.command); }
-  // prints the summary line (or the JSON object) to stdout; returns `code`
+  // prints the notes (unless `code` says the input or the arguments were refused), then the summary line (or the JSON
+  // object) to stdout (stderr with `summary_to_stderr`); returns `code`
   int finish(int code);
   // The one failure report: prints `pe: <what>: <message> (<ERROR_NAME>)` to stderr, marks the
   // result as neither valid nor written, ends the summary with `<ERROR_NAME>, nothing written`
@@ -187,6 +190,9 @@ std::string seconds_string(double s);
 // an existing directory), or with `directory`, that it is an existing directory. `role` names
 // the option. Returns EXIT_VALID or reports the failure through `run` (output error).
 int check_output_path(Run& run, const std::string& path, const std::string& role = std::string(), bool directory = false);
+
+// whether `path` names the file, device or pipe that is this process's standard output (e.g. /dev/stdout)
+bool is_standard_output(const std::string& path);
 
 // why `path` cannot be read as an input file (missing, not a regular file, unreadable); empty if it can
 std::string input_file_problem(const std::string& path);

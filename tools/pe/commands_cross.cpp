@@ -8,6 +8,8 @@
 #include "cli.h"
 #include "pe.h"
 
+#include <CGAL/boost/graph/helpers.h>
+
 #include <CGAL/Progressive_embedding/cross_parameterization.h>
 #include <CGAL/Progressive_embedding/IO/SVG.h>
 #include <CGAL/IO/OBJ.h>
@@ -180,10 +182,11 @@ int cmd_cross(const Arguments& a)
       run.result.add("failed_landmark_line", lines[st.failed_landmark]);
     }
     else if(st.failed_mesh >= 0)
-      detail = std::string(st.failed_mesh == 0 ? "A" : "B") + ": " +
-               (ec == PE::ERROR_NOT_A_DISK && !st.closed
-                  ? std::string("closed, and the other mesh is not (two disks or two closed genus-0 meshes)")
-                  : PE::internal::cross_mesh_fault(ec, st.border_landmarks));
+    {
+      const std::string why = PE::internal::cross_mesh_fault(ec, st.border_landmarks,
+                                !st.closed && CGAL::is_closed(st.failed_mesh == 0 ? in_a.mesh : in_b.mesh));
+      detail = std::string(st.failed_mesh == 0 ? "A" : "B") + ": " + (why.empty() ? std::string(PE::get_error_message(ec)) : why);
+    }
     else if(too_few)
       detail = "'" + a.positional[2] + "': closed meshes need at least two landmarks (the cut runs through them in file order)";
     return run.fail(ec, "cross-parameterization of '" + in_a.filename + "' and '" + in_b.filename + "' failed", detail,

@@ -22,6 +22,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <iostream>
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -31,6 +32,18 @@ namespace pe_tool {
 std::size_t count_faces(const Mesh& m)
 {
   return static_cast<std::size_t>(std::distance(faces(m).begin(), faces(m).end()));
+}
+
+bool is_standard_output(const std::string& path)
+{
+  // a character device (a terminal, /dev/null) takes both without harm: only a pipe, socket or file would mix them
+  struct stat out;
+  if(::fstat(STDOUT_FILENO, &out) != 0 || S_ISCHR(out.st_mode)) return false;
+  int descriptor = -1;
+  PE::IO::internal::atomic_output_resolve_links(path, &descriptor);
+  if(descriptor == STDOUT_FILENO) return true;
+  struct stat st;
+  return descriptor < 0 && ::stat(path.c_str(), &st) == 0 && st.st_dev == out.st_dev && st.st_ino == out.st_ino;
 }
 
 std::string input_file_problem(const std::string& path)
@@ -269,6 +282,24 @@ void drop_trivial_seam_map(Input& in)
   std::vector<Point_3>().swap(in.positions);
 }
 
+// "3 vertices of the file are in no face" (with texture coordinates the mesh's vertices are the file's `vt` entries)
+std::string unused_vertices_phrase(const Input& in)
+{
+  const std::size_t n = in.dropped_vertices;
+  const std::string what = in.has_uv ? (n == 1 ? "texture coordinate (vt)" : "texture coordinates (vt)") : (n == 1 ? "vertex" : "vertices");
+  return std::to_string(n) + " " + what + " of the file " + (n == 1 ? "is" : "are") + " in no face";
+}
+
+// JSON `unused_vertices` (the main input), and a note when the reader left vertices out: the outputs have the mesh's
+// vertices only (the commands whose inputs refer to vertex indices refuse such a file: require_file_vertex_order();
+// the note is then not printed, see Run::notes)
+void report_unused_vertices(Run& run, const Input& in, const std::string& role)
+{
+  if(role.empty()) run.result.add("unused_vertices", in.dropped_vertices);
+  if(in.dropped_vertices > 0)
+    run.notes.push_back("'" + in.filename + "': " + unused_vertices_phrase(in) + ", left out of the mesh and of the outputs");
+}
+
 } // namespace
 
 int read_input(Run& run, const std::string& filename, Input& in, Uv_mode mode, Shape shape, const std::string& role)
@@ -289,6 +320,7 @@ int read_input(Run& run, const std::string& filename, Input& in, Uv_mode mode, S
     if(!r) return fail(r.status, r.line, r.message.empty() ? PE::get_error_message(r.status) : r.message);
     in.dropped_vertices = r.number_of_unreferenced_vertices;
     in.has_uv = true;
+    report_unused_vertices(run, in, role);
     drop_trivial_seam_map(in);
     return check_mesh(run, what, in.mesh, shape);
   }
@@ -300,6 +332,7 @@ int read_input(Run& run, const std::string& filename, Input& in, Uv_mode mode, S
   const PE::IO::Read_result r = PE::IO::read_polygon_mesh(filename, in.mesh);
   if(!r) return fail(r.status, r.line, r.message.empty() ? PE::get_error_message(r.status) : r.message);
   in.dropped_vertices = r.number_of_unreferenced_vertices;
+  report_unused_vertices(run, in, role);
   in.uv = in.mesh.add_property_map<vertex_descriptor, Point_2>("v:pe_uv", Point_2(0, 0)).first;
   return check_mesh(run, what, in.mesh, shape);
 }
@@ -336,82 +369,21 @@ int for_each_data_line(Run& run, const std::string& filename, const std::string&
 int require_file_vertex_order(Run& run, const Input& in, const std::string& indices)
 {
   if(in.dropped_vertices == 0) return EXIT_VALID;
-  // with texture coordinates the mesh's vertices are the file's `vt` entries
-  const std::string what = in.has_uv ? "texture coordinate (vt)" : "vertex";
-  const std::string count = std::to_string(in.dropped_vertices) + " " +
-                            (in.dropped_vertices == 1 ? what : in.has_uv ? std::string("texture coordinates (vt)") : std::string("vertices"));
   return run.fail(PE::ERROR_NOT_A_DISK, "cannot use '" + in.filename + "'",
-                  count + " of the file " + (in.dropped_vertices == 1 ? "is" : "are") + " in no face: " + indices +
-                  " count the file's " + (in.has_uv ? "vt entries" : "vertices") + ", which the mesh read (without the "
-                  "unused ones) no longer has in that order; remove what no face uses");
+                  unused_vertices_phrase(in) + ": " + indices + " count the file's " + (in.has_uv ? "vt entries" : "vertices") +
+                  ", which the mesh read (without the unused ones) no longer has in that order; remove what no face uses");
 }
 
 int write_files_together(Run& run, const std::vector<Output_file>& files)
 {
-  namespace AO = PE::IO::internal;
-  // (temporary, target) of the files written so far
-  std::vector<std::pair<std::string, std::string> > pending;
-  try
-  {
-    auto abandon = [&](const std::string& name, PE::Error_code ec = PE::ERROR_CANNOT_WRITE_FILE) {
-      for(const auto& p : pending) std::remove(p.first.c_str());
-      return run.fail(ec, "cannot write '" + name + "'");
-    };
-    // (libstdc++'s filebuf may throw std::bad_cast from close() after a failed write: every exception is a failure)
-    auto write_to = [](const std::string& path, const Output_file& f) {
-      try
-      {
-        std::ofstream out(path, std::ios::binary | std::ios::trunc);
-        if(!out) return PE::ERROR_CANNOT_WRITE_FILE;
-        PE::Error_code ec = f.write(out);
-        out.flush();
-        if(ec == PE::OK && !out) ec = PE::ERROR_CANNOT_WRITE_FILE;
-        out.close(); // close() writes what is still buffered: checked too
-        if(ec == PE::OK && out.fail()) ec = PE::ERROR_CANNOT_WRITE_FILE;
-        return ec;
-      }
-      catch(...) { return PE::ERROR_CANNOT_WRITE_FILE; }
-    };
-    // devices first: they are written in place, so that a failing one comes before any other file is touched
-    for(int pass = 0; pass < 2; ++pass)
-      for(const Output_file& f : files)
-      {
-        const std::string target = AO::atomic_output_resolve_links(f.name);
-        struct stat st;
-        const bool exists = ::stat(target.c_str(), &st) == 0;
-        if(exists && S_ISDIR(st.st_mode)) return abandon(f.name);
-        const bool device = exists && !S_ISREG(st.st_mode);
-        if(device != (pass == 0)) continue;
-        if(device)
-        {
-          // the library's writer writes a device in place, with the same checks
-          const PE::Error_code ec = AO::write_file_atomically(target, f.write);
-          if(ec != PE::OK) return abandon(f.name, ec);
-          continue;
-        }
-        const mode_t mode = exists ? (st.st_mode & 07777) : 0666;
-        const std::string temporary = AO::atomic_output_create_temporary(target, mode);
-        if(temporary.empty()) return abandon(f.name);
-        pending.emplace_back(temporary, target);
-        if(exists) (void)::chmod(temporary.c_str(), mode); // open() applied the umask; keep the old file's mode
-        const PE::Error_code ec = write_to(temporary, f);
-        if(ec != PE::OK) return abandon(f.name, ec);
-      }
-    for(std::size_t k = 0; k < pending.size(); ++k)
-      if(std::rename(pending[k].first.c_str(), pending[k].second.c_str()) != 0)
-      {
-        // rare (the folder changed under us): the files renamed so far stay, the others are not written
-        pending.erase(pending.begin(), pending.begin() + std::ptrdiff_t(k));
-        return abandon(pending.front().second);
-      }
-    return EXIT_VALID;
-  }
-  catch(...)
-  {
-    // (std::random_device, std::bad_alloc...): no temporary left behind
-    for(const auto& p : pending) std::remove(p.first.c_str());
-    return run.fail(PE::ERROR_CANNOT_WRITE_FILE, "cannot write the output files");
-  }
+  // a summary on the standard output would mix with an output written there (also when a later file fails): it goes
+  // to the standard error
+  for(const Output_file& f : files)
+    if(is_standard_output(f.name)) run.summary_to_stderr = true;
+  const PE::IO::internal::Atomic_output_result r = PE::IO::internal::write_files_atomically(files);
+  if(r.code != PE::OK)
+    return run.fail(r.code, "cannot write '" + (r.failed < files.size() ? files[r.failed].name : std::string()) + "'");
+  return EXIT_VALID;
 }
 
 int read_constraints(Run& run, const std::string& filename, Input& in, std::vector<vertex_descriptor>& fixed)

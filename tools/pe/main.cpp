@@ -91,7 +91,7 @@ const double max_unsigned = double(std::numeric_limits<unsigned>::max());
 static_assert(default_constrain_optimize_seconds == 5. && default_optimize_seconds == 60.,
               "--optimize-time's help gives the defaults");
 const Option_spec option_table[] = {
-  { "--json", Kind::FLAG, "", "print one JSON object instead of the summary line" },
+  { "--json", Kind::FLAG, "", "print one JSON object instead of the summary line (both on the standard error when an output is /dev/stdout)" },
   { "--border", Kind::CHOICE, "fixed|circle|square|triangle",
     "border of the Tutte map (default: fixed for an OBJ with vt, circle otherwise)" },
   { "--weights", Kind::CHOICE, "uniform|mean-value", "Tutte (uniform) or Floater (mean-value) weights" },
@@ -610,8 +610,11 @@ int Run::finish(int code)
   for(const auto& f : result.fields) has_seconds = has_seconds || f.first == "seconds";
   if(!has_seconds) result.add("seconds", timer.seconds());
   result.add("exit_status", static_cast<std::size_t>(code));
-  if(args.json) std::cout << result.json() << std::endl;
-  else std::cout << summary.str() << std::endl;
+  if(code != EXIT_INPUT && code != EXIT_USAGE)
+    for(const std::string& note : notes) std::cerr << "pe: note: " << note << std::endl;
+  std::ostream& out = summary_to_stderr ? std::cerr : std::cout;
+  if(args.json) out << result.json() << std::endl;
+  else out << summary.str() << std::endl;
   return code;
 }
 

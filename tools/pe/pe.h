@@ -12,6 +12,7 @@
 
 #include <CGAL/Progressive_embedding/parameters.h>
 #include <CGAL/Progressive_embedding/check_embedding.h>
+#include <CGAL/Progressive_embedding/IO/internal/atomic_output.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -70,18 +71,16 @@ int require_file_vertex_order(Run& run, const Input& in, const std::string& indi
 int read_constraints(Run& run, const std::string& filename, Input& in, std::vector<vertex_descriptor>& fixed);
 
 // One output file of write_files_together(): its name, and what writes its content.
-struct Output_file
-{
-  std::string name;
-  std::function<PE::Error_code(std::ostream&)> write;
-};
+typedef CGAL::Progressive_embedding::IO::internal::Atomic_output_file Output_file;
 
-// Writes several output files all or none: each content goes first to a temporary file beside its target, and
-// the temporaries replace their targets only once all of them are written; on a failure every temporary is
-// removed, the targets are left as they were, and the failure is reported through `run` naming the file (exit 4).
-// EXIT_VALID otherwise. Two exceptions: a device such as /dev/null or /dev/tty is written in place, before the
-// files (so a failing device comes first, but what went to it stays), and a rename that fails (the folder changed
-// during the run) leaves the targets renamed before it replaced.
+// Writes several output files all or none (the library's write_files_atomically()): each content goes first to a
+// temporary file beside its target, and the temporaries replace their targets only once all of them are written; on
+// a failure every temporary is removed, the targets are left as they were, and the failure is reported through `run`
+// naming the file (exit 4). EXIT_VALID otherwise. Two exceptions: a device such as /dev/null or /dev/tty, and a name
+// such as /dev/stdout that reaches a file another program opened (a shell's redirection), are written in place,
+// before the files (so a failing one comes first, but what went to it stays); a rename that fails (the folder changed
+// during the run) leaves the targets renamed before it replaced. An output on the standard output sends the summary
+// line (or the JSON) to the standard error.
 int write_files_together(Run& run, const std::vector<Output_file>& files);
 
 // Reads a polygon given as `x y` lines (blank lines and `#` comments skipped) into `points`; same

@@ -907,8 +907,10 @@ write_OBJ_with_uv(std::ostream& out, const TriangleMesh& tm, VertexUVMap uvm,
 /// the content is written to a temporary file in the same folder, which replaces `filename` only
 /// once it is completely written and closed (a symbolic link is kept and its target replaced);
 /// on failure the temporary file is removed and an existing `filename` is left untouched.
-/// Anything else (a device such as `/dev/null` or `/dev/stdout`, a pipe) is written directly.
-/// No exception escapes.
+/// A name of one of the process's file descriptors (`/dev/stdout`, `/dev/fd/N`, `/proc/self/fd/N`,
+/// or a link to one) is written through that descriptor, where it stands (a pipe, or a file a shell
+/// opened with `>` or `>>`); anything else that is not a regular file (a device such as `/dev/null`,
+/// a named pipe) is written directly. No exception escapes.
 ///
 /// \return as the stream overload; `ERROR_CANNOT_WRITE_FILE` if the file cannot be written (a folder,
 ///         no permission, no space left, a file size limit, ...)

@@ -830,7 +830,7 @@ inline bool pm_check_topology(Pm_soup& s, Read_result& r)
       { worst = sorted[i].second; other = sorted[i - 1].second; }
     if(worst != none)
       return pm_fail(r, ERROR_NON_MANIFOLD, s.face_line[worst], "duplicate face (the same vertices as face "
-                     + std::to_string(other + 1) + (s.face_line[other] ? ", line " + std::to_string(s.face_line[other]) : std::string())
+                     + std::to_string(other + 1) + " of the file, counting from 1" + (s.face_line[other] ? ", line " + std::to_string(s.face_line[other]) : std::string())
                      + ")");
   }
   // edges: at most two faces, used in opposite directions
@@ -889,8 +889,8 @@ inline bool pm_check_topology(Pm_soup& s, Read_result& r)
       if(start[v] == start[v + 1]) continue;
       around.assign(incident.begin() + std::ptrdiff_t(start[v]), incident.begin() + std::ptrdiff_t(start[v + 1]));
       if(!pm_vertex_is_manifold(v, around, s.faces, link, parent))
-        return pm_fail(r, ERROR_NON_MANIFOLD, s.point_line[v], "non-manifold vertex " + std::to_string(v + 1)
-                       + ": two or more fans of faces meet there");
+        return pm_fail(r, ERROR_NON_MANIFOLD, s.point_line[v], "non-manifold vertex (vertex " + std::to_string(v + 1)
+                       + " of the file, counting from 1): two or more fans of faces meet there");
     }
   }
   return true;

@@ -49,15 +49,19 @@ inline std::string cross_landmark_fault(Error_code ec, int failed_mesh, bool clo
   return std::string("is where it failed: ") + get_error_message(ec);
 }
 
-// What is wrong with the mesh `failed_mesh` when no landmark is named: the error's own message, or for
-// `ERROR_BORDER_TOO_SHORT` with border landmarks, what the landmarks have to do with it.
-inline std::string cross_mesh_fault(Error_code ec, std::size_t border_landmarks)
+// What is wrong with the mesh `failed_mesh` when no landmark is named, beyond the error's own message: for
+// `ERROR_NOT_A_DISK` when that mesh is closed and the other is not (`closed_against_disk`), and for
+// `ERROR_BORDER_TOO_SHORT` with border landmarks, what the landmarks have to do with it; an empty string when the
+// error's own message (get_error_message()) says it all.
+inline std::string cross_mesh_fault(Error_code ec, std::size_t border_landmarks, bool closed_against_disk)
 {
+  if(ec == ERROR_NOT_A_DISK && closed_against_disk)
+    return "closed, and the other mesh is not (two disks or two closed genus-0 meshes)";
   if(ec == ERROR_BORDER_TOO_SHORT && border_landmarks > 0)
     return "the border landmarks leave too few border vertices: a border has fewer than four, or between two "
            "consecutive border landmarks A's border has no vertex of its own where B's border holds a corner of the "
            "square (move the border landmarks apart, or give fewer)";
-  return get_error_message(ec);
+  return std::string();
 }
 
 } // namespace internal

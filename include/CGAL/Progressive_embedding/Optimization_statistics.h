@@ -42,7 +42,9 @@ struct Optimization_statistics
   /// the border barrier acted, see `optimize_distortion()`)
   double energy_after = 0;
   /// the energy of the current map while the optimization runs: updated after each iteration, before the `callback`
-  /// is called (the optimizer's own measure, the same area-weighted mean in double)
+  /// is called (the optimizer's own measure in double of the energy it minimizes, area-weighted over the faces with a
+  /// 3D area: for the symmetric Dirichlet energy the mean that `energy_after` gives at the end; with a free border,
+  /// plus the border barrier's term while parts of the border are near each other)
   double energy_current = 0;
   /// seconds
   double seconds = 0;

@@ -281,7 +281,7 @@ public:
     CGAL::Real_timer timer;
     timer.start();
     double E = objective(X_, Y_);
-    stats.energy_current = E;
+    stats.energy_current = reported_energy(E);
     if(s_.verbose) std::cerr << "[optimize] energy " << E << ", " << nfree_ << " free vertices\n";
     Error_code result = ERROR_BUDGET_EXHAUSTED;
     std::size_t quiet = 0; // consecutive iterations below the tolerance
@@ -319,7 +319,7 @@ public:
       }
       if(s_.verbose) std::cerr << "[optimize] iteration " << stats.iterations << ": energy " << E
                                << (global_ok ? "" : " (sweep only)") << "\n";
-      stats.energy_current = E;
+      stats.energy_current = reported_energy(E);
       if(s_.callback && !s_.callback(double(stats.iterations) / double(s_.max_iterations))) break;
       // converged: two consecutive iterations lower the energy by less than the tolerance
       // (a tolerance of 0 never converges: a step that gains nothing, or loses a rounding error, still
@@ -380,8 +380,10 @@ public:
 
   // ---- named steps -------------------------------------------------------------------------
   // Area-weighted mean energy; +inf if a face is not positively oriented (in double). With a free border, the
-  // energy of the map scaled uniformly to the references' area (scale_free_).
-  double energy(const std::vector<double>& x, const std::vector<double>& y) const
+  // energy of the map scaled uniformly to the references' area (scale_free_). `certificate_faces`: the mean over the
+  // faces that have a 3D area only, as check_embedding() measures it (the others' stand-in references shape them
+  // but are no part of the surface's distortion).
+  double energy(const std::vector<double>& x, const std::vector<double>& y, bool certificate_faces = false) const
   {
     double e = 0;
     Isotropic_terms it;
@@ -398,9 +400,18 @@ public:
       double s1, s2;
       if(!singular_values(f, x, y, s1, s2)) return std::numeric_limits<double>::infinity();
       if(!isotropic_terms(s_.energy, k * s1, k * s2, it)) return std::numeric_limits<double>::infinity();
-      e += frames_[f].weight * it.psi;
+      if(!(certificate_faces && stand_in_[f])) e += frames_[f].weight * it.psi;
     }
-    return e / total_weight_;
+    return e / (certificate_faces ? certificate_weight_ : total_weight_);
+  }
+
+  // `energy_current`: the objective `E` at the current positions, or with faces of no 3D area the same measure
+  // over the others, as the certificate's mean (one more pass, only then)
+  double reported_energy(double E) const
+  {
+    if(!has_stand_ins_ || !std::isfinite(E)) return E;
+    const double barrier = barrier_ ? barrier_energy(X_, Y_) / total_weight_ : 0.; // as objective() has it
+    return energy(X_, Y_, true) + barrier;
   }
 
   // The area of the map (the sum of its faces' signed areas, in the counterclockwise frame, in double)
@@ -752,16 +763,21 @@ private:
       const auto& t = disk_.faces[f];
       refs[f] = reference_3d({{ points_3_[t[0]], points_3_[t[1]], points_3_[t[2]] }});
     }
+    stand_in_.assign(nf_, 0);
+    for(std::size_t f = 0; f < nf_; ++f) stand_in_[f] = !(refs[f].area2 > 0); // given a stand-in below
+    has_stand_ins_ = std::find(stand_in_.begin(), stand_in_.end(), char(1)) != stand_in_.end();
     double k2 = 0;
     const Error_code ec = scale_references(refs, border_area, k2);
     if(ec != OK) return ec;
     reference_scale_ = std::sqrt(k2);
     frames_.resize(nf_);
     total_weight_ = 0;
+    certificate_weight_ = 0;
     for(std::size_t f = 0; f < nf_; ++f)
     {
       frames_[f] = face_frame(refs[f]);
       total_weight_ += frames_[f].weight;
+      if(!stand_in_[f]) certificate_weight_ += frames_[f].weight;
     }
     // the symmetric Dirichlet energy (the certificate's) with a moving border, which changes the map's area. ARAP
     // measures the scale too: its references keep the input's area. Free hole loops inside a fixed border change
@@ -1407,6 +1423,9 @@ private:
   std::vector<Face_frame> frames_;
   mutable std::vector<Eigen::Matrix2d> metric_;       // the face metric at the positions last evaluated
   double total_weight_ = 1;
+  double certificate_weight_ = 1;   // the weights of the faces with a 3D area (see energy())
+  std::vector<char> stand_in_;      // per face: its reference is a stand-in (no 3D area)
+  bool has_stand_ins_ = false;
   bool scale_free_ = false;     // the energy of the map scaled to the references' area (match_reference_area())
   double reference_area_ = 1;   // the total area of the references (frames_) as last scaled
   std::vector<std::vector<Face_corner> > star_;

@@ -20,7 +20,8 @@ namespace internal {
 
 // What is wrong with the landmark that `failed_landmark` names, its vertex on the mesh `failed_mesh` (0: A, 1: B):
 // the words that follow "the vertex of A" (or "of B"). `closed`: the two meshes are closed (cut along the chain
-// of landmarks); `border_vertex_pair`: the caller gave one.
+// of landmarks); `border_vertex_pair`: the caller gave one. The callers check first that every index is a vertex of
+// its mesh, so `ERROR_WRONG_PARAMETER` on B can only be the order of the border landmarks.
 inline std::string cross_landmark_fault(Error_code ec, int failed_mesh, bool closed, bool border_vertex_pair)
 {
   switch(ec)

@@ -1331,6 +1331,13 @@ int test_atomic_writes()
   files[2].name = dir.file("folder.obj");
   checked = AO::write_files_atomically(files);
   CHECK(checked.code == PE::ERROR_CANNOT_WRITE_FILE && checked.failed == 2 && listing(dir).size() == before_together, "a folder");
+  const int read_only = ::open(obj.c_str(), O_RDONLY); // a descriptor open for reading only
+  CHECK(read_only >= 0, "open");
+  files[2].name = "/dev/fd/" + std::to_string(read_only);
+  checked = AO::write_files_atomically(files);
+  ::close(read_only);
+  CHECK(checked.code == PE::ERROR_CANNOT_WRITE_FILE && checked.failed == 2 && listing(dir).size() == before_together,
+        "a descriptor open for reading only");
   files[2].name = fc;
   if(is_char_device("/dev/full"))
   {

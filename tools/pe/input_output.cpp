@@ -39,11 +39,12 @@ bool is_standard_output(const std::string& path)
   // a character device (a terminal, /dev/null) takes both without harm: only a pipe, socket or file would mix them
   struct stat out;
   if(::fstat(STDOUT_FILENO, &out) != 0 || S_ISCHR(out.st_mode)) return false;
+  // a descriptor name (/dev/stderr with 2>&1, /dev/fd/3 with 3>&1) is compared through the descriptor itself
   int descriptor = -1;
   PE::IO::internal::atomic_output_resolve_links(path, &descriptor);
-  if(descriptor == STDOUT_FILENO) return true;
   struct stat st;
-  return descriptor < 0 && ::stat(path.c_str(), &st) == 0 && st.st_dev == out.st_dev && st.st_ino == out.st_ino;
+  const int status = descriptor >= 0 ? ::fstat(descriptor, &st) : ::stat(path.c_str(), &st);
+  return status == 0 && st.st_dev == out.st_dev && st.st_ino == out.st_ino;
 }
 
 std::string input_file_problem(const std::string& path)

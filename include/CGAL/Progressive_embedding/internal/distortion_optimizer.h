@@ -406,10 +406,12 @@ public:
   }
 
   // `energy_current`: the objective `E` at the current positions, or with faces of no 3D area the same measure
-  // over the others, as the certificate's mean (one more pass, only then)
+  // over the others, as the certificate's mean (one more pass, only then). Not with a face metric: its hook keeps
+  // state (where each face's walk in the other map starts), which a pass outside the optimization would change; the
+  // composed distortion is no certificate's measure anyway.
   double reported_energy(double E) const
   {
-    if(!has_stand_ins_ || !std::isfinite(E)) return E;
+    if(!has_stand_ins_ || s_.face_metric || !std::isfinite(E)) return E;
     const double barrier = barrier_ ? barrier_energy(X_, Y_) / total_weight_ : 0.; // as objective() has it
     return energy(X_, Y_, true) + barrier;
   }

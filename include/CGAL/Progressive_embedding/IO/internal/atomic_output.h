@@ -90,11 +90,12 @@ inline std::string atomic_output_resolve_links(std::string path, int* descriptor
 }
 
 // An output stream buffer on a file descriptor (its own duplicate, closed with it): what is written
-// goes where the descriptor stands and moves it on, as a write() to the original would.
+// goes where the descriptor stands and moves it on, as a write() to the original would. After a
+// failed write nothing more is written (no byte twice).
 class Atomic_output_descriptor_buffer : public std::streambuf
 {
 public:
-  explicit Atomic_output_descriptor_buffer(int fd) : fd_(fd) { setp(buffer_, buffer_ + sizeof buffer_); }
+  explicit Atomic_output_descriptor_buffer(int fd) : fd_(fd), buffer_(std::size_t(1) << 16) { reset(); }
   ~Atomic_output_descriptor_buffer() { if(fd_ >= 0) ::close(fd_); }
   Atomic_output_descriptor_buffer(const Atomic_output_descriptor_buffer&) = delete;
   Atomic_output_descriptor_buffer& operator=(const Atomic_output_descriptor_buffer&) = delete;
@@ -117,20 +118,22 @@ protected:
   int sync() override
   {
     const char* p = pbase();
-    while(p < pptr())
+    while(!failed_ && p < pptr())
     {
       const ssize_t n = ::write(fd_, p, std::size_t(pptr() - p));
       if(n < 0 && errno == EINTR) continue;
-      if(n <= 0) return -1;
-      p += n;
+      if(n <= 0) failed_ = true;
+      else p += n;
     }
-    setp(buffer_, buffer_ + sizeof buffer_);
-    return 0;
+    reset(); // written, or dropped after a failure
+    return failed_ ? -1 : 0;
   }
 
 private:
+  void reset() { setp(buffer_.data(), buffer_.data() + buffer_.size()); }
   int fd_;
-  char buffer_[1 << 16];
+  std::vector<char> buffer_; // on the heap: 64 KiB is too much for the stacks of some threads
+  bool failed_ = false;
 };
 
 // Creates a new, empty file next to `target` (same folder, hence same file system for rename).
@@ -229,7 +232,8 @@ inline Atomic_output_result write_files_atomically(const std::vector<Atomic_outp
       if(plan.exists && S_ISDIR(st.st_mode)) return abandon(ERROR_CANNOT_WRITE_FILE, current);
       if(plan.descriptor >= 0)
       {
-        if(::fcntl(plan.descriptor, F_GETFD) < 0) return abandon(ERROR_CANNOT_WRITE_FILE, current); // not open
+        const int flags = ::fcntl(plan.descriptor, F_GETFL);
+        if(flags < 0 || (flags & O_ACCMODE) == O_RDONLY) return abandon(ERROR_CANNOT_WRITE_FILE, current); // not open for writing
         plan.way = Way::DESCRIPTOR;
       }
       else if(plan.exists && !S_ISREG(st.st_mode)) plan.way = Way::IN_PLACE;

@@ -9,6 +9,8 @@
 
 #include "cli.h"
 
+#include <CGAL/Progressive_embedding/IO/internal/atomic_output.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
@@ -442,11 +444,10 @@ std::string parse_arguments(int argc, char** argv, const Command_spec& c, Argume
   // two outputs of one run naming one file: the later would silently replace the earlier. A name is compared
   // through its folder's real path, so that 'x.txt' and './x.txt' are one file even before it exists.
   auto canonical = [](const std::string& path) {
-    const std::size_t slash = path.find_last_of('/');
-    const std::string folder = slash == std::string::npos ? std::string(".") : (slash == 0 ? std::string("/") : path.substr(0, slash));
-    char* real = ::realpath(folder.c_str(), nullptr);
+    const std::string folder = PE::IO::internal::atomic_output_folder(path); // with its '/', or "" for a bare name
+    char* real = ::realpath(folder.empty() ? "." : folder.c_str(), nullptr);
     if(real == nullptr) return path;
-    const std::string r = std::string(real) + "/" + (slash == std::string::npos ? path : path.substr(slash + 1));
+    const std::string r = std::string(real) + "/" + path.substr(folder.size());
     std::free(real);
     return r;
   };

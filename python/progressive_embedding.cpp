@@ -124,9 +124,16 @@ std::vector<double> real_matrix(const py::handle& obj, const char* name, py::ssi
   return std::vector<double>(d.data(), d.data() + d.size());
 }
 
-// an integer array (any integer dtype) of the given dimension, as int64 (the range is the caller's)
+// an integer value read by integer_values() as written: a uint64 value beyond int64 became negative there
+std::string integer_text(long long v, bool from_unsigned)
+{
+  return from_unsigned ? std::to_string(static_cast<unsigned long long>(v)) : std::to_string(v);
+}
+
+// an integer array (any integer dtype) of the given dimension, as int64 (the range is the caller's);
+// `from_unsigned`, if given, says whether the dtype was unsigned (for integer_text())
 std::vector<long long> integer_values(const py::handle& obj, const char* name, int ndim, py::ssize_t cols,
-                                      std::size_t& rows)
+                                      std::size_t& rows, bool* from_unsigned = nullptr)
 {
   const py::array a = as_array(obj, name);
   const char kind = a.dtype().kind();
@@ -136,6 +143,7 @@ std::vector<long long> integer_values(const py::handle& obj, const char* name, i
     throw py::value_error(std::string(name) + (ndim == 2 ? " must have shape (m, " + std::to_string(cols) + ")"
                                                          : std::string(" must be one-dimensional")));
   // unsigned values beyond int64 become negative here, and are refused with the others
+  if(from_unsigned) *from_unsigned = (kind == 'u');
   const auto d = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(a);
   if(!d) throw py::value_error(std::string(name) + " cannot be converted to int64");
   rows = static_cast<std::size_t>(d.shape(0));
@@ -148,13 +156,14 @@ bool in_range(long long i, std::size_t bound) { return i >= 0 && static_cast<uns
 std::vector<std::size_t> index_array(const py::handle& obj, const char* name, int ndim, py::ssize_t cols,
                                      std::size_t bound, std::size_t& rows)
 {
-  const std::vector<long long> values = integer_values(obj, name, ndim, cols, rows);
+  bool from_unsigned = false;
+  const std::vector<long long> values = integer_values(obj, name, ndim, cols, rows, &from_unsigned);
   std::vector<std::size_t> out(values.size());
   for(std::size_t k = 0; k < out.size(); ++k)
   {
     const long long i = values[k];
     if(!in_range(i, bound))
-      throw py::value_error(std::string(name) + " holds the index " + std::to_string(i) + ", out of range for " +
+      throw py::value_error(std::string(name) + " holds the index " + integer_text(i, from_unsigned) + ", out of range for " +
                             std::to_string(bound) + " vertices");
     out[k] = static_cast<std::size_t>(i);
   }
@@ -662,10 +671,10 @@ void location_to_row(const Mesh& m, const Disk_input& in, const PE::Cross_locati
   face = static_cast<long long>(j);
 }
 
-std::string landmark_name(std::size_t k, const std::vector<long long>& pairs)
+std::string landmark_name(std::size_t k, const std::vector<long long>& pairs, bool from_unsigned)
 {
-  return "landmarks[" + std::to_string(k) + "] = (" + std::to_string(pairs[2 * k]) + ", " +
-         std::to_string(pairs[2 * k + 1]) + ")";
+  return "landmarks[" + std::to_string(k) + "] = (" + integer_text(pairs[2 * k], from_unsigned) + ", " +
+         integer_text(pairs[2 * k + 1], from_unsigned) + ")";
 }
 
 // a mesh that cross_parameterization() wrote (vertices in order, triangles) as arrays: points (n, dim), faces (f, 3)
@@ -692,17 +701,19 @@ py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::objec
   // landmarks: (k, 2) integers; None or empty (e.g. []): only the borders are matched
   std::vector<long long> pairs;
   std::size_t k = 0;
+  bool landmarks_unsigned = false;
   if(!landmarks.is_none())
   {
     const py::array l = as_array(landmarks, "landmarks");
     if(!(l.size() == 0 && (l.ndim() == 1 || (l.ndim() == 2 && l.shape(1) == 2))))
-      pairs = integer_values(l, "landmarks", 2, 2, k);
+      pairs = integer_values(l, "landmarks", 2, 2, k, &landmarks_unsigned);
   }
   // an index that is no vertex is the C++ function's ERROR_WRONG_PARAMETER (it cannot be a descriptor here)
   for(std::size_t r = 0; r < k; ++r)
     for(int c = 0; c < 2; ++c)
       if(!in_range(pairs[2 * r + c], c == 0 ? in_a.n : in_b.n))
-        throw Pe_failure(PE::ERROR_WRONG_PARAMETER, landmark_name(r, pairs) + ": " + std::to_string(pairs[2 * r + c]) +
+        throw Pe_failure(PE::ERROR_WRONG_PARAMETER, landmark_name(r, pairs, landmarks_unsigned) + ": " +
+                         integer_text(pairs[2 * r + c], landmarks_unsigned) +
                          " is not a vertex of " + (c == 0 ? "A (" + std::to_string(in_a.n) : "B (" + std::to_string(in_b.n)) +
                          " vertices)");
   const bool has_pair = !border_vertex_pair.is_none();
@@ -710,11 +721,12 @@ py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::objec
   if(has_pair)
   {
     std::size_t rows = 0;
-    pair = integer_values(border_vertex_pair, "border_vertex_pair", 1, 0, rows);
+    bool pair_unsigned = false;
+    pair = integer_values(border_vertex_pair, "border_vertex_pair", 1, 0, rows, &pair_unsigned);
     if(pair.size() != 2) throw py::value_error("border_vertex_pair must be a pair (border vertex of A, border vertex of B)");
     for(int c = 0; c < 2; ++c)
       if(!in_range(pair[c], c == 0 ? in_a.n : in_b.n))
-        throw Pe_failure(PE::ERROR_WRONG_PARAMETER, "border_vertex_pair: " + std::to_string(pair[c]) + " is not a vertex of " +
+        throw Pe_failure(PE::ERROR_WRONG_PARAMETER, "border_vertex_pair: " + integer_text(pair[c], pair_unsigned) + " is not a vertex of " +
                          (c == 0 ? "A (" + std::to_string(in_a.n) : "B (" + std::to_string(in_b.n)) + " vertices)");
   }
   double seconds = std::numeric_limits<double>::infinity();
@@ -773,7 +785,7 @@ py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::objec
       const std::string mesh = st.failed_mesh == 0 ? "A" : "B";
       std::string context = "cross_parameterization";
       if(st.failed_landmark < k)
-        context = landmark_name(st.failed_landmark, pairs) + ": the vertex " +
+        context = landmark_name(st.failed_landmark, pairs, landmarks_unsigned) + ": the vertex " +
                   std::to_string(pairs[2 * st.failed_landmark + (st.failed_mesh == 0 ? 0 : 1)]) + " of " + mesh + " " +
                   PE::internal::cross_landmark_fault(ec, st.failed_mesh, st.closed, has_pair);
       else if(ec == PE::ERROR_WRONG_PARAMETER && has_pair && st.failed_mesh >= 0 &&

@@ -16,11 +16,14 @@
 // same way.
 //
 //   cross_benchmark DATA_DIR OUT_PREFIX [--meshes a.off,b.off] [--counts 5,20,50] [--pairs A1:B1,A2:B2]
-//                   [--composed on|off|both] [--matched on|off|both]
+//                   [--composed on|off|both] [--matched on|off|both] [--parallel on|off|both]
 //
 // --composed: A's map optimized for the composed map's distortion (named parameter composed_distortion; on by
 // default) or not; `both` runs every case without it, then with it (side by side in the tables). --matched: B's map
 // made again with B's landmarks pinned, as A's is (named parameter matched_maps; on by default), or not; likewise.
+// --parallel: cross_parameterization<CGAL::Parallel_tag>() (B's matched map and A's map made at the same time) or
+// <CGAL::Sequential_tag>() (one after the other, as `pe cross` and the Python binding do; the default); the maps are
+// the same either way, only the seconds and the memory differ.
 //
 // With --pairs, A and B are two given files (e.g. two resolutions of one surface: the true image of a vertex of
 // A is then its own position, up to the distance between the two discretizations) instead of a mesh and its
@@ -74,7 +77,7 @@ struct Row
   std::size_t degenerate_images = 0;
   std::size_t unlocated = 0;        // naive: vertices of A outside every positively oriented face of B's map
   std::size_t bad_faces = 0;        // naive: flipped or degenerate faces of the two Tutte maps
-  bool composed = true, matched = true, matched_b = false;
+  bool composed = true, matched = true, matched_b = false, parallel = false;
   std::size_t added_b = 0;
   std::size_t count = 0, landmarks = 0, va = 0, vb = 0, added = 0, vc = 0;
   std::string status;
@@ -255,9 +258,10 @@ Row run_naive(const std::string& file_a, const std::string& file_b, const std::s
 }
 
 Row run(const std::string& file_a, const std::string& file_b, const std::string& name, std::size_t count, bool composed,
-        bool matched)
+        bool matched, bool parallel)
 {
   Row r;
+  r.parallel = parallel;
   r.mesh = name;
   r.count = count;
   r.composed = composed;
@@ -279,9 +283,10 @@ Row run(const std::string& file_a, const std::string& file_b, const std::string&
   PE::Cross_parameterization_statistics st;
   SM compatible_a, compatible_b;
   pe_bench::reset_peak_rss();
-  const PE::Error_code ec = PE::cross_parameterization(a, b, landmarks, loc,
-    PE::parameters::compatible_meshes(std::make_pair(&compatible_a, &compatible_b),
-      PE::parameters::composed_distortion(composed, PE::parameters::matched_maps(matched, PE::parameters::statistics(&st)))));
+  const auto np = PE::parameters::compatible_meshes(std::make_pair(&compatible_a, &compatible_b),
+      PE::parameters::composed_distortion(composed, PE::parameters::matched_maps(matched, PE::parameters::statistics(&st))));
+  const PE::Error_code ec = parallel ? PE::cross_parameterization<CGAL::Parallel_tag>(a, b, landmarks, loc, np)
+                                     : PE::cross_parameterization<CGAL::Sequential_tag>(a, b, landmarks, loc, np);
   r.peak_mb = pe_bench::peak_rss_mb();
   r.status = PE::get_error_name(ec);
   r.va = st.vertices_a;
@@ -315,14 +320,14 @@ int main(int argc, char** argv)
   if(argc < 3)
   {
     std::cerr << "usage: cross_benchmark DATA_DIR OUT_PREFIX [--meshes a.off,b.off] [--counts 5,20,50] [--pairs A:B,...]"
-                 " [--composed on|off|both] [--matched on|off|both]\n";
+                 " [--composed on|off|both] [--matched on|off|both] [--parallel on|off|both]\n";
     return 2;
   }
   const std::string dir = argv[1], out = argv[2];
   std::vector<std::string> meshes = { "mushroom.off", "lion-head.off" };
   std::vector<std::size_t> counts = { 5, 20, 50 };
   std::vector<std::pair<std::string, std::string> > pairs;
-  std::vector<bool> composed = { true }, matched = { true };
+  std::vector<bool> composed = { true }, matched = { true }, parallel = { false };
   for(int i = 3; i + 1 < argc; i += 2)
   {
     const std::string o = argv[i], v = argv[i + 1];
@@ -352,6 +357,13 @@ int main(int argc, char** argv)
       else if(v == "both") matched = { false, true };
       else { std::cerr << "--matched: expected on, off or both, got " << v << "\n"; return 2; }
     }
+    else if(o == "--parallel")
+    {
+      if(v == "on") parallel = { true };
+      else if(v == "off") parallel = { false };
+      else if(v == "both") parallel = { false, true };
+      else { std::cerr << "--parallel: expected on, off or both, got " << v << "\n"; return 2; }
+    }
     else { std::cerr << "unknown option " << o << "\n"; return 2; }
   }
   std::vector<std::array<std::string, 3> > jobs; // A file, B file (empty: A remeshed), name
@@ -368,11 +380,12 @@ int main(int argc, char** argv)
     for(std::size_t k : counts)
       for(bool mt : matched)
       for(bool c : composed)
+      for(bool par : parallel)
       {
         const std::string& m = job[2];
-        rows.push_back(run(job[0], job[1], m, k, c, mt));
+        rows.push_back(run(job[0], job[1], m, k, c, mt, par));
         const Row& r = rows.back();
-        std::cout << m << " K=" << k << (mt ? " matched" : "") << (c ? " composed" : "") << ": " << r.status << ", mean error " << r.mean_error
+        std::cout << m << " K=" << k << (mt ? " matched" : "") << (c ? " composed" : "") << (par ? " parallel" : " sequential") << ": " << r.status << ", mean error " << r.mean_error
                   << ", max " << r.max_error << ", added " << r.added << ", compatible " << r.vc
                   << " vertices (" << r.t_compatible << " s), distortion " << r.distortion << ", " << r.t_total << " s" << std::endl;
       }
@@ -382,7 +395,7 @@ int main(int argc, char** argv)
   csv << "mesh,method,landmarks_requested,landmarks,matched_maps,matched_b,vertices_added_b,composed_distortion,vertices_a,vertices_b,vertices_added_a,status,valid_a,valid_b,"
          "landmarks_exact,mean_error,max_error,mean_error_landmarks,mean_error_border,mean_error_inside,seconds_map_b,seconds_map_a,seconds_composed,seconds_location,"
          "compatible_vertices,compatible_certified,seconds_compatible,seconds_total,peak_rss_mb,"
-         "distortion,degenerate_images,unlocated,faces_flipped_or_degenerate\n";
+         "distortion,degenerate_images,unlocated,faces_flipped_or_degenerate,parallel\n";
   csv << std::setprecision(6);
   for(const Row& r : rows)
   {
@@ -398,7 +411,7 @@ int main(int argc, char** argv)
     csv << ','
         << r.t_b << ',' << r.t_a << ',' << r.t_composed << ',' << r.t_location << ',' << r.vc << ',' << r.valid_c << ','
         << r.t_compatible << ',' << r.t_total << ',' << r.peak_mb << ',' << r.distortion << ',' << r.degenerate_images << ','
-        << r.unlocated << ',' << r.bad_faces << '\n';
+        << r.unlocated << ',' << r.bad_faces << ',' << r.parallel << '\n';
   }
 
   char host[256] = {0};
@@ -436,20 +449,24 @@ int main(int argc, char** argv)
         "(`composed_distortion`, the default); its seconds (composed s) are part of A's map's. Matched: B's map made "
         "again by `constrained_embedding()` with B's landmarks pinned where its first map put them, as A's is "
         "(`matched_maps`, the default; with landmarks only; its seconds are part of B's map's); vertices added to "
-        "B: Steiner vertices left in B's copy (B's map is then on that refined copy). "
+        "B: Steiner vertices left in B's copy (B's map is then on that refined copy). Parallel: "
+        "`cross_parameterization<CGAL::Parallel_tag>()`, B's matched map and A's map made at the same time, or "
+        "`<CGAL::Sequential_tag>()`, one after the other (as `pe cross` and the Python binding do): the same maps, only "
+        "the seconds and the memory differ (with Parallel_tag, B's map s and A's map s overlap). "
         "The mean error is also given "
         "at A's landmark vertices (each lands on its partner, a vertex of the other discretization, so its error is "
         "about the distance between the two: the landmarks cannot bring the error below it), at A's other border "
         "vertices (placed by relative arc length, not by position) and at the other vertices.\n\n"
-     << "| mesh | method | K | matched | vertices added to B | composed | vertices A | vertices B | status | both maps certified | landmarks exact | vertices added to A "
+     << "| mesh | method | K | matched | vertices added to B | composed | parallel | vertices A | vertices B | status | both maps certified | landmarks exact | vertices added to A "
         "| mean error | max error | mean error at landmarks | mean error on the border | mean error inside | B's map s "
         "| A's map s | composed s | location s | compatible vertices | compatible certified "
         "| compatible s | total s | peak MB | distortion | naive: unlocated | naive: faces flipped or degenerate |\n"
-     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for(const Row& r : rows)
   {
     md << "| " << r.mesh << " | " << r.method << " | " << r.landmarks << " | " << (r.matched_b ? "yes" : r.matched && r.landmarks > 0 ? "failed" : "no")
-       << " | " << r.added_b << " | " << (r.composed ? "yes" : "no") << " | " << r.va << " | " << r.vb << " | " << r.status << " | "
+       << " | " << r.added_b << " | " << (r.composed ? "yes" : "no") << " | "
+       << (r.method != "cross" ? "-" : r.parallel ? "yes" : "no") << " | " << r.va << " | " << r.vb << " | " << r.status << " | "
        << (r.valid_a && r.valid_b ? "yes" : "no") << " | " << (r.exact ? "yes" : "no") << " | " << r.added << " | "
        << r.mean_error << " | " << r.max_error << " | ";
     if(r.error_landmarks < 0) md << "-";

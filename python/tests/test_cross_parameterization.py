@@ -268,6 +268,12 @@ def test_value_errors():
         pe.cross_parameterization(V, F.astype(np.float64), V, F)
     with pytest.raises(ValueError, match='F_b'):
         pe.cross_parameterization(V, F, V, np.r_[F, [[0, 1, 25]]])  # a face index out of range
+    # uint64 indices beyond int64 are named as they were given
+    huge = np.array([[2**64 - 1, 7]], dtype=np.uint64)
+    message = raises('ERROR_WRONG_PARAMETER', V, F, V, F, huge)
+    assert 'landmarks[0] = (18446744073709551615, 7): 18446744073709551615 is not a vertex of A' in message
+    message = raises('ERROR_WRONG_PARAMETER', V, F, V, F, border_vertex_pair=np.array([0, 2**64 - 2], dtype=np.uint64))
+    assert 'border_vertex_pair: 18446744073709551614 is not a vertex of B' in message
 
 
 def test_closed_surfaces():

@@ -170,6 +170,11 @@ def test_tutte_fixed_border_and_index_dtypes():
         assert np.array_equal(pe.tutte(V, F.astype(dtype)), UV)
     # Python lists are converted like np.asarray
     assert np.array_equal(pe.tutte(V.tolist(), F.tolist()), UV)
+    # a uint64 index beyond int64 is refused and named as it was given
+    huge = F.astype(np.uint64)
+    huge[3, 1] = np.uint64(2**64 - 1)
+    with pytest.raises(ValueError, match='holds the index 18446744073709551615, out of range'):
+        pe.tutte(V, huge)
     # a fixed border: the border rows of the array, bit-exactly; interior rows ignored
     border = UV.copy()
     interior = np.setdiff1d(np.arange(len(V)), border_vertices(F))

@@ -998,6 +998,43 @@ Read_result pm_read_buffer(const std::string& buf, const std::string& format, Po
   return r;
 }
 
+// The readers' common frame: `pm` must be empty; `read(r)` reads into it and fills `r`. An exception
+// (out of memory, or one of a library underneath) leaves `pm` empty and becomes a failure.
+template <class PolygonMesh, class Read>
+Read_result pm_read_guarded(PolygonMesh& pm, Read read)
+{
+  Read_result r;
+  try
+  {
+    if(vertices(pm).first != vertices(pm).second)
+    {
+      pm_fail(r, ERROR_WRONG_PARAMETER, 0, "the mesh must be empty");
+      return r;
+    }
+    r = read();
+    return r;
+  }
+  catch(const std::bad_alloc&)
+  {
+    try { CGAL::clear(pm); } catch(...) { }
+    r = Read_result();
+    pm_fail(r, ERROR_CANNOT_READ_FILE, 0, "out of memory");
+  }
+  catch(const std::exception& e)
+  {
+    try { CGAL::clear(pm); } catch(...) { }
+    r = Read_result();
+    pm_fail(r, ERROR_MALFORMED_FILE, 0, std::string("unexpected exception: ") + e.what());
+  }
+  catch(...)
+  {
+    try { CGAL::clear(pm); } catch(...) { }
+    r = Read_result();
+    pm_fail(r, ERROR_MALFORMED_FILE, 0, "unexpected exception");
+  }
+  return r;
+}
+
 } // namespace internal
 #endif // DOXYGEN_RUNNING
 
@@ -1010,14 +1047,8 @@ template <class PolygonMesh, class NamedParameters = CGAL::parameters::Default_n
 Read_result read_polygon_mesh(std::istream& in, const std::string& format, PolygonMesh& pm,
                               const NamedParameters& np = CGAL::parameters::default_values())
 {
-  Read_result r;
-  try
-  {
-    if(vertices(pm).first != vertices(pm).second)
-    {
-      internal::pm_fail(r, ERROR_WRONG_PARAMETER, 0, "the mesh must be empty");
-      return r;
-    }
+  return internal::pm_read_guarded(pm, [&]() {
+    Read_result r;
     std::string buf;
     if(!internal::pm_slurp(in, buf))
     {
@@ -1027,26 +1058,7 @@ Read_result read_polygon_mesh(std::istream& in, const std::string& format, Polyg
     std::string f = format;
     for(char& ch : f) if(ch >= 'A' && ch <= 'Z') ch = char(ch - 'A' + 'a');
     return internal::pm_read_buffer(buf, f, pm, np);
-  }
-  catch(const std::bad_alloc&)
-  {
-    try { CGAL::clear(pm); } catch(...) { }
-    r = Read_result();
-    internal::pm_fail(r, ERROR_CANNOT_READ_FILE, 0, "out of memory");
-  }
-  catch(const std::exception& e)
-  {
-    try { CGAL::clear(pm); } catch(...) { }
-    r = Read_result();
-    internal::pm_fail(r, ERROR_MALFORMED_FILE, 0, std::string("unexpected exception: ") + e.what());
-  }
-  catch(...)
-  {
-    try { CGAL::clear(pm); } catch(...) { }
-    r = Read_result();
-    internal::pm_fail(r, ERROR_MALFORMED_FILE, 0, "unexpected exception");
-  }
-  return r;
+  });
 }
 
 /// \ingroup PkgProgressiveEmbeddingIO
@@ -1119,14 +1131,8 @@ template <class PolygonMesh, class NamedParameters = CGAL::parameters::Default_n
 Read_result read_polygon_mesh(const std::string& filename, PolygonMesh& pm,
                               const NamedParameters& np = CGAL::parameters::default_values())
 {
-  Read_result r;
-  try
-  {
-    if(vertices(pm).first != vertices(pm).second)
-    {
-      internal::pm_fail(r, ERROR_WRONG_PARAMETER, 0, "the mesh must be empty");
-      return r;
-    }
+  return internal::pm_read_guarded(pm, [&]() {
+    Read_result r;
     std::string buf;
     const std::string why = internal::pm_read_file(filename, buf);
     if(!why.empty())
@@ -1141,26 +1147,7 @@ Read_result read_polygon_mesh(const std::string& filename, PolygonMesh& pm,
       return r;
     }
     return internal::pm_read_buffer(buf, ext, pm, np);
-  }
-  catch(const std::bad_alloc&)
-  {
-    try { CGAL::clear(pm); } catch(...) { }
-    r = Read_result();
-    internal::pm_fail(r, ERROR_CANNOT_READ_FILE, 0, "out of memory");
-  }
-  catch(const std::exception& e)
-  {
-    try { CGAL::clear(pm); } catch(...) { }
-    r = Read_result();
-    internal::pm_fail(r, ERROR_MALFORMED_FILE, 0, std::string("unexpected exception: ") + e.what());
-  }
-  catch(...)
-  {
-    try { CGAL::clear(pm); } catch(...) { }
-    r = Read_result();
-    internal::pm_fail(r, ERROR_MALFORMED_FILE, 0, "unexpected exception");
-  }
-  return r;
+  });
 }
 
 } // namespace IO

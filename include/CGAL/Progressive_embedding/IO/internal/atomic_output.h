@@ -160,9 +160,22 @@ inline std::string atomic_output_create_temporary(const std::string& target, mod
   return std::string();
 }
 
-// Writes `out` (opened on `name`) with `write`, flushed and closed: the writer's code if it is
-// not `OK`, ERROR_CANNOT_WRITE_FILE if the stream failed, OK otherwise. (libstdc++'s filebuf may
-// throw std::bad_cast from close() after a failed write: every exception is a failure.)
+// Writes the open stream `out` with `write`, flushes it and closes it with `close()` (true if what
+// was still buffered went out): the writer's code if it is not `OK`, ERROR_CANNOT_WRITE_FILE if the
+// stream or the close failed, OK otherwise. Exceptions go to the caller.
+template <class Writer, class Close>
+Error_code atomic_output_send(std::ostream& out, Writer& write, Close close)
+{
+  Error_code ec = write(out);
+  out.flush();
+  if(ec == OK && !out) ec = ERROR_CANNOT_WRITE_FILE;
+  if(!close() && ec == OK) ec = ERROR_CANNOT_WRITE_FILE;
+  return ec;
+}
+
+// Writes `out` (opened on `name`) with `write`, flushed and closed (atomic_output_send()).
+// (libstdc++'s filebuf may throw std::bad_cast from close() after a failed write: every exception
+// is a failure.)
 template <class Writer>
 Error_code atomic_output_write_stream(const std::string& name, std::ios::openmode mode, Writer& write)
 {
@@ -170,12 +183,8 @@ Error_code atomic_output_write_stream(const std::string& name, std::ios::openmod
   {
     std::ofstream out(name, std::ios::binary | mode);
     if(!out) return ERROR_CANNOT_WRITE_FILE;
-    Error_code ec = write(static_cast<std::ostream&>(out));
-    out.flush();
-    if(ec == OK && !out) ec = ERROR_CANNOT_WRITE_FILE;
-    out.close(); // close() writes what is still buffered: check it too
-    if(ec == OK && out.fail()) ec = ERROR_CANNOT_WRITE_FILE;
-    return ec;
+    // close() writes what is still buffered: checked too
+    return atomic_output_send(out, write, [&out]() { out.close(); return !out.fail(); });
   }
   catch(...) { return ERROR_CANNOT_WRITE_FILE; }
 }
@@ -256,10 +265,7 @@ inline Atomic_output_result write_files_atomically(const std::vector<Atomic_outp
             if(fd < 0) return abandon(ERROR_CANNOT_WRITE_FILE, current);
             Atomic_output_descriptor_buffer buffer(fd);
             std::ostream out(&buffer);
-            ec = write(out);
-            out.flush();
-            if(ec == OK && !out) ec = ERROR_CANNOT_WRITE_FILE;
-            if(!buffer.close() && ec == OK) ec = ERROR_CANNOT_WRITE_FILE;
+            ec = atomic_output_send(out, write, [&buffer]() { return buffer.close(); });
           }
           catch(...) { ec = ERROR_CANNOT_WRITE_FILE; }
           if(ec != OK) return abandon(ec, current);

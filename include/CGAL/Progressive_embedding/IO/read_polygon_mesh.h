@@ -998,7 +998,7 @@ Read_result pm_read_buffer(const std::string& buf, const std::string& format, Po
   return r;
 }
 
-// The readers' common frame: `pm` must be empty; `read(r)` reads into it and fills `r`. An exception
+// The readers' common frame: `pm` must be empty; `read()` reads into it and returns the result. An exception
 // (out of memory, or one of a library underneath) leaves `pm` empty and becomes a failure.
 template <class PolygonMesh, class Read>
 Read_result pm_read_guarded(PolygonMesh& pm, Read read)

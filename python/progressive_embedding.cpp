@@ -787,7 +787,7 @@ py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::objec
       if(st.failed_landmark < k)
         context = landmark_name(st.failed_landmark, pairs, landmarks_unsigned) + ": the vertex " +
                   std::to_string(pairs[2 * st.failed_landmark + (st.failed_mesh == 0 ? 0 : 1)]) + " of " + mesh + " " +
-                  PE::internal::cross_landmark_fault(ec, st.failed_mesh, st.closed, has_pair);
+                  PE::internal::cross_landmark_fault(ec, st.closed, has_pair);
       else if(ec == PE::ERROR_WRONG_PARAMETER && has_pair && st.failed_mesh >= 0 &&
               !CGAL::is_border(st.failed_mesh == 0 ? vp.first : vp.second, st.failed_mesh == 0 ? wa.mesh : wb.mesh))
         context = "border_vertex_pair: the vertex " + std::to_string(pair[st.failed_mesh]) + " of " + mesh +
@@ -1016,13 +1016,14 @@ PYBIND11_MODULE(progressive_embedding, m)
     "their partners' uv (constrained_embedding(), on a refined copy\n"
     "of A), then (composed=True) optimized for the distortion of the composed map A -> B (info 'composed_status',\n"
     "'composed_iterations', 'composed_energy', 'seconds_composed'); both maps are certified. landmarks: a (k, 2) integer array of (vertex of A, vertex of B) pairs,\n"
-    "interior vertices, each used once (None or empty: only the borders are matched). The borders are\n"
-    "matched by relative 3D arc length from border_vertex_pair = (border vertex of A, border vertex of B);\n"
-    "by default the first border vertex of A and the border vertex of B nearest to it in 3D (right for two\n"
-    "meshes in one frame). Returns, per vertex of A, the row of F_b holding its image (faces, int64, (n_a,))\n"
+    "each vertex used once, both interior or both on their borders (border landmarks fix the border\n"
+    "correspondence; None or empty: only the borders are matched). The borders are matched by relative 3D\n"
+    "arc length between the border landmarks, from border_vertex_pair = (border vertex of A, border vertex of B);\n"
+    "by default the first border landmark, or without one the first border vertex of A and the border vertex\n"
+    "of B nearest to it in 3D (right for two meshes in one frame). Returns, per vertex of A, the row of F_b holding its image (faces, int64, (n_a,))\n"
     "and its barycentric coordinates in the order of that row's columns (barycentric, (n_a, 3) float64,\n"
-    "computed exactly and rounded once: they sum to 1 up to one rounding; a landmark gets exactly 1 at its\n"
-    "partner). Two closed genus-0 meshes are first cut into disks along a chain through the landmarks (at\n"
+    "computed exactly and rounded once: they sum to 1 up to one rounding, or to a few when B's map is on a\n"
+    "refined copy, info 'vertices_added_b' > 0; a landmark gets exactly 1 at its partner). Two closed genus-0 meshes are first cut into disks along a chain through the landmarks (at\n"
     "least two, in their order; info 'closed', 'cut_edges_a', 'cut_edges_b', 'chords_split_b'; vertex and face counts are\n"
     "then those of the cut disks; border_vertex_pair does not apply to them (no border): ERROR_WRONG_PARAMETER;\n"
     "planar_maps gives the maps of the cut disks, the rows of V first, then the copies of the vertices inside\n"
@@ -1042,11 +1043,13 @@ PYBIND11_MODULE(progressive_embedding, m)
     "With planar_maps=True the two certified maps onto the unit square: 'planar_uv_a' ((n_a + vertices_added_a,\n"
     "2): the rows of V_a first, then the vertices added to A's copy) with its faces 'planar_F_a', and\n"
     "'planar_uv_b', 'planar_F_b' (B's map, on B or its refined copy: rows of V_b first); faces counterclockwise,\n"
-    "a landmark of A at exactly the uv of its partner. time_limit: seconds in all\n"
-    "(ERROR_BUDGET_EXHAUSTED past it); optimization_time_limit: seconds for the optimization of A's map.\n"
+    "a landmark of A at exactly the uv of its partner. time_limit: seconds in all (ERROR_BUDGET_EXHAUSTED\n"
+    "when a certified map of A or B cannot be made within it; an optimization cut short keeps its certified\n"
+    "map; the location and the compatible meshes run to their end, so the call may end after it);\n"
+    "optimization_time_limit: seconds for the optimization of A's map.\n"
     "Raises Error with ERROR_WRONG_PARAMETER for a landmark or border_vertex_pair index that is no vertex\n"
     "(as the C++ function, not ValueError) or a border_vertex_pair vertex off its border,\n"
-    "or border landmarks not in the same order along both borders, ERROR_CONSTRAINT_ON_BORDER for a landmark\n"
+    "ERROR_LANDMARK_ORDER for border landmarks not in the same order along both borders, ERROR_CONSTRAINT_ON_BORDER for a landmark\n"
     "with one vertex on its border and the other inside, ERROR_DUPLICATE_CONSTRAINT for a\n"
     "vertex used twice, ERROR_NOT_A_DISK, ERROR_BORDER_TOO_SHORT (fewer than 4 border vertices), ...; the\n"
     "message names the landmark (its row) or the mesh.");

@@ -207,8 +207,13 @@ def test_border_landmarks():
     assert info['landmarks'] == 6 and info['border_landmarks'] == 5
     assert_landmarks_exact(faces, barycentric, F, landmarks)
     assert np.abs(images(faces, barycentric, V, F) - V).max() <= 1e-9
-    # out of order along B's border: 5 and 35 swapped
-    assert 'landmarks[' in raises('ERROR_WRONG_PARAMETER', V, F, V, F, [[0, 0], [5, 35], [35, 5]])
+    # out of order along B's border: 5 and 35 swapped (no orientation-preserving bijection matches them)
+    message = raises('ERROR_LANDMARK_ORDER', V, F, V, F, [[0, 0], [5, 35], [35, 5]])
+    assert 'landmarks[' in message and 'is out of the order of the other border landmarks along B' in message
+    # the border vertex pair (matched first, like a border landmark) and two border landmarks in another cyclic
+    # order along B's border: the landmark out of order is named
+    message = raises('ERROR_LANDMARK_ORDER', V, F, V, F, [[5, 5], [35, 35]], border_vertex_pair=(30, 17))
+    assert 'landmarks[' in message and 'is out of the order of the other border landmarks along B' in message
 
 
 def test_errors():
@@ -231,7 +236,7 @@ def test_errors():
     assert 'mesh B (V_b, F_b): closed, and the other mesh is not' in raises('ERROR_NOT_A_DISK', V, F, TETRAHEDRON_V, TETRAHEDRON_F)
     raises('ERROR_BORDER_TOO_SHORT', V[:3], [[0, 1, 2]], V, F)  # a triangle: 3 border vertices for 4 corners
     # border landmarks that leave A's arc from 1 to 2 without a vertex for B's corner 5: said as in `pe cross`
-    assert 'the border landmarks leave too few border vertices' in raises('ERROR_BORDER_TOO_SHORT', V, F, V, F,
+    assert 'landmarks[1] = (2, 17): the vertex 2 of A leaves no border vertex of A' in raises('ERROR_BORDER_TOO_SHORT', V, F, V, F,
                                                                           [[1, 1], [2, 17]])
     # a vertex in no face (a row of V that F does not use)
     assert 'vertex 36 is in no face of F_a' in raises('ERROR_NOT_A_DISK', np.r_[V, [[9.0, 9.0, 9.0]]], F, V, F)
@@ -274,6 +279,29 @@ def test_value_errors():
     assert 'landmarks[0] = (18446744073709551615, 7): 18446744073709551615 is not a vertex of A' in message
     message = raises('ERROR_WRONG_PARAMETER', V, F, V, F, border_vertex_pair=np.array([0, 2**64 - 2], dtype=np.uint64))
     assert 'border_vertex_pair: 18446744073709551614 is not a vertex of B' in message
+
+
+def test_closed_surface_errors():
+    # the octahedron (poles 0 and 5, equator 1 2 3 4) against itself, every vertex a landmark
+    V = np.array([[0, 0, 1], [1, 0, 0], [0, 1, 0], [-1, 0, 0], [0, -1, 0], [0, 0, -1]], dtype=np.float64)
+    F = np.array([[0, 1, 2], [0, 2, 3], [0, 3, 4], [0, 4, 1], [5, 2, 1], [5, 3, 2], [5, 4, 3], [5, 1, 4]])
+    # the chain 1 2 3 4 5, then 0: every edge path from 5 to 0 goes through a landmark
+    message = raises('ERROR_PATH_TRACING_FAILED', V, F, V, F, [[1, 1], [2, 2], [3, 3], [4, 4], [5, 5], [0, 0]])
+    assert 'landmarks[5] = (0, 0): the vertex 0 of A cannot be reached from the previous landmark' in message
+    # the same landmarks in another order make a chain
+    landmarks = [[1, 1], [0, 0], [2, 2], [3, 3], [4, 4], [5, 5]]
+    faces, barycentric, info = pe.cross_parameterization(V, F, V, F, landmarks)
+    assert info['closed'] and info['landmarks_exact'] and info['valid_a'] and info['valid_b']
+    assert_landmarks_exact(faces, barycentric, F, landmarks)
+    # a vertex used twice, of A or of B: the later landmark named
+    assert 'landmarks[2] = (1, 3): the vertex 1 of A is used by an earlier landmark' in raises(
+        'ERROR_DUPLICATE_CONSTRAINT', V, F, V, F, [[1, 1], [5, 5], [1, 3]])
+    assert 'landmarks[2] = (3, 1): the vertex 1 of B is used by an earlier landmark' in raises(
+        'ERROR_DUPLICATE_CONSTRAINT', V, F, V, F, [[1, 1], [5, 5], [3, 1]])
+    # an empty mesh against a closed one is empty (not "a disk against a closed mesh")
+    empty_V, empty_F = V[:0], np.zeros((0, 3), dtype=np.int64)
+    assert 'mesh A (V_a, F_a)' in raises('ERROR_EMPTY_MESH', empty_V, empty_F, V, F)
+    assert 'mesh B (V_b, F_b)' in raises('ERROR_EMPTY_MESH', V, F, empty_V, empty_F)
 
 
 def test_closed_surfaces():

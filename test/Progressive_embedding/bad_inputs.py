@@ -83,6 +83,9 @@ NMV_V = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (-1, 0, 0), (0, -1, 0)]
 NMV_F = [(0, 1, 2), (0, 3, 4)]
 # the fan with one quad instead of two triangles
 QUAD_F = [(0, 1, 2, 3)]
+# the octahedron: the poles 0 and 5, the equator 1 2 3 4 (a closed genus-0 mesh where every vertex is a landmark)
+OCT_V = [(0, 0, 1), (1, 0, 0), (0, 1, 0), (-1, 0, 0), (0, -1, 0), (0, 0, -1)]
+OCT_F = [(0, 1, 2), (0, 2, 3), (0, 3, 4), (0, 4, 1), (5, 2, 1), (5, 3, 2), (5, 4, 3), (5, 1, 4)]
 
 def inputs():
     huge = 1e308
@@ -164,6 +167,10 @@ def inputs():
         "lm_one.txt": "0 0\n",
         "lm_edge.txt": "0 0\n1 1\n",
         "lm_border_short.txt": "1 1\n2 17\n",
+        # the octahedron's chain 1 2 3 4 5 then 0: every edge path from 5 to 0 goes through a landmark
+        "octahedron.off": off(OCT_V, OCT_F),
+        "lm_trap.txt": "1 1\n2 2\n3 3\n4 4\n5 5\n0 0\n",
+        "lm_closed_duplicate.txt": "1 1\n5 5\n3 1\n",
         "cfix_tet.txt": "0 0.1 0.1\n",
         "closed_uv.obj": obj(TET_V, TET_F, [(0, 0), (1, 0), (0, 1), (1, 1)]),
     }
@@ -365,7 +372,17 @@ CASES = [
      r"line 2: landmark 1 1: the vertex of A is joined to the previous landmark by an edge: a cut along one edge opens "
      r"nothing.*ERROR_NOT_A_DISK"),
     ("cross", "border_too_short", ["cross", "{t}/grid6.obj", "{t}/grid6.obj", "{t}/lm_border_short.txt", "{t}/cx_short.txt"], 3,
-     r"A: the border landmarks leave too few border vertices.*ERROR_BORDER_TOO_SHORT"),
+     r"line 2: landmark 2 17: the vertex of A leaves no border vertex of A between it and the border landmark before it.*ERROR_BORDER_TOO_SHORT"),
+    ("cross", "closed_unreachable", ["cross", "{t}/octahedron.off", "{t}/octahedron.off", "{t}/lm_trap.txt", "{t}/cx_trap.txt"], 3,
+     r"line 6: landmark 0 0: the vertex of A cannot be reached from the previous landmark.*another order may do.*"
+     r"ERROR_PATH_TRACING_FAILED"),
+    ("cross", "closed_duplicate", ["cross", "{t}/octahedron.off", "{t}/octahedron.off", "{t}/lm_closed_duplicate.txt",
+                                   "{t}/cx_cdup.txt"], 3,
+     r"line 3: landmark 3 1: the vertex of B is used by an earlier landmark.*ERROR_DUPLICATE_CONSTRAINT"),
+    ("cross", "quad", ["cross", "{t}/quad.off", "{t}/fan.off", "{t}/lm_fan.txt", "{t}/cx_quad.txt"], 3,
+     r"quad.off.*ERROR_NON_TRIANGULAR_MESH"),
+    ("cross", "empty", ["cross", "{t}/fan.off", "{t}/empty.off", "{t}/lm_fan.txt", "{t}/cx_empty.txt"], 3,
+     r"empty.off.*ERROR_EMPTY_MESH"),
     ("cross", "svg_dev_full", ["cross", "{t}/fan.off", "{t}/fan.off", "{t}/lm_fan.txt", "{t}/cx_full.txt", "--compatible",
                                "{t}/cx_a.obj", "{t}/cx_b.obj", "--svg", "/dev/full"], 4, r"cannot write '/dev/full'.*ERROR_CANNOT_WRITE_FILE"),
     ("cross", "same_output", ["cross", "{t}/fan.off", "{t}/fan.off", "{t}/lm_fan.txt", "{t}/cx_same.txt", "--svg", "{t}/cx_same.txt"], 2,

@@ -167,9 +167,9 @@ int cmd_cross(const Arguments& a)
   if(ec != PE::OK)
   {
     std::string detail;
-    // a landmark named by the function is a fault of the landmark file (exit 3), whatever the error code
-    // (border landmarks out of order come as ERROR_WRONG_PARAMETER, like a misuse of the function); so are too few
-    // landmarks for two closed meshes
+    // a landmark named by the function is a fault of the landmark file (exit 3), whatever the error code (an index
+    // that is no vertex comes as ERROR_WRONG_PARAMETER, like a misuse of the function); so are too few landmarks for
+    // two closed meshes
     const bool landmark_fault = st.failed_landmark < landmarks.size();
     const bool too_few = st.closed && st.failed_mesh < 0 && ec == PE::ERROR_WRONG_PARAMETER;
     if(landmark_fault)
@@ -178,7 +178,7 @@ int cmd_cross(const Arguments& a)
       detail = "'" + a.positional[2] + "' line " + std::to_string(lines[st.failed_landmark]) + ": landmark " +
                std::to_string(std::size_t(l.first)) + " " + std::to_string(std::size_t(l.second)) + ": " +
                (st.failed_mesh == 0 ? "the vertex of A " : "the vertex of B ") +
-               PE::internal::cross_landmark_fault(ec, st.failed_mesh, st.closed, false);
+               PE::internal::cross_landmark_fault(ec, st.closed, false);
       run.result.add("failed_landmark_line", lines[st.failed_landmark]);
     }
     else if(st.failed_mesh >= 0)

@@ -55,6 +55,7 @@ int exit_status(PE::Error_code ec)
     case PE::ERROR_CONSTRAINT_ON_BORDER:
     case PE::ERROR_NOT_GENUS_ZERO:
     case PE::ERROR_NOT_SELF_OVERLAPPING:
+    case PE::ERROR_LANDMARK_ORDER:
       return EXIT_INPUT;
     case PE::ERROR_CANNOT_WRITE_FILE:
       return EXIT_OUTPUT;

@@ -45,7 +45,8 @@ enum Error_code
   ERROR_NOT_GENUS_ZERO,            ///< The input mesh is not a connected genus-0 surface with at least one border cycle
   ERROR_DEGENERATE_CHORD,          ///< An interior edge joins two border vertices on one straight side of a patch: no valid map keeps it
   ERROR_PATH_TRACING_FAILED,       ///< The patch borders could not be traced on the mesh within the refinement budget
-  ERROR_NOT_SELF_OVERLAPPING       ///< The polygon is neither simple nor weakly self-overlapping: it bounds no immersed disk
+  ERROR_NOT_SELF_OVERLAPPING,      ///< The polygon is neither simple nor weakly self-overlapping: it bounds no immersed disk
+  ERROR_LANDMARK_ORDER             ///< Border landmarks come in another cyclic order along one border than along the other: no orientation-preserving bijection matches them
 };
 
 /// \ingroup PkgProgressiveEmbeddingEnums
@@ -82,6 +83,7 @@ inline const char* get_error_message(Error_code code)
     case ERROR_DEGENERATE_CHORD: return "An interior edge joins two border vertices on one straight side of a patch";
     case ERROR_PATH_TRACING_FAILED: return "The patch borders could not be traced on the mesh within the refinement budget";
     case ERROR_NOT_SELF_OVERLAPPING: return "The polygon is neither simple nor weakly self-overlapping";
+    case ERROR_LANDMARK_ORDER: return "The border landmarks come in another order along one border than along the other";
   }
   return "Unknown error";
 }
@@ -119,6 +121,7 @@ inline const char* get_error_name(Error_code code)
     case ERROR_DEGENERATE_CHORD: return "ERROR_DEGENERATE_CHORD";
     case ERROR_PATH_TRACING_FAILED: return "ERROR_PATH_TRACING_FAILED";
     case ERROR_NOT_SELF_OVERLAPPING: return "ERROR_NOT_SELF_OVERLAPPING";
+    case ERROR_LANDMARK_ORDER: return "ERROR_LANDMARK_ORDER";
   }
   return "UNKNOWN";
 }

@@ -152,12 +152,13 @@ template <typename T> unspecified_type planar_maps(const T& t);
 /// (also on error, as far as the computation went).
 struct Cross_parameterization_statistics
 {
-  /// on an error about one landmark (`ERROR_WRONG_PARAMETER`: a vertex not of its mesh, or a border landmark out of
-  /// the order of the others along B's border; `ERROR_CONSTRAINT_ON_BORDER`; `ERROR_DUPLICATE_CONSTRAINT`: a vertex of
+  /// on an error about one landmark (`ERROR_WRONG_PARAMETER`: a vertex not of its mesh; `ERROR_LANDMARK_ORDER`: a
+  /// border landmark out of the order of the others along B's border; `ERROR_CONSTRAINT_ON_BORDER`; `ERROR_DUPLICATE_CONSTRAINT`: a vertex of
   /// A or of B used twice, the later one, or a border landmark that gives a vertex of `border_vertex_pair` another
-  /// partner; for closed meshes `ERROR_PATH_TRACING_FAILED`: the landmark the chain of cuts cannot reach from the one
-  /// before, and `ERROR_NOT_A_DISK`: the second of two landmarks joined by an edge): its position in the `landmarks`
-  /// range; `std::size_t(-1)` otherwise
+  /// partner; `ERROR_BORDER_TOO_SHORT`: the border landmark at the end of an arc of A's border that has no vertex
+  /// for the corner of the square that B's arc holds; for closed meshes `ERROR_PATH_TRACING_FAILED`: the landmark the
+  /// chain of cuts cannot reach from the one before, and `ERROR_NOT_A_DISK`: the second of two landmarks joined by an
+  /// edge): its position in the `landmarks` range; `std::size_t(-1)` otherwise
   std::size_t failed_landmark = std::size_t(-1);
   /// the mesh an error is about: 0 for A, 1 for B, -1 for none (a mesh that is not a disk or has fewer than four
   /// border vertices, a landmark vertex, a border vertex of `border_vertex_pair`, a map that failed)
@@ -677,6 +678,9 @@ Error_code cross_parameterization_disks(
   if(!(max_seconds >= 0) || !(optimization_seconds >= 0)) return finish(ERROR_WRONG_PARAMETER);
 
   // ---- 1. validation -----------------------------------------------------------------------
+  // an empty mesh is neither closed nor a disk: said so before the two kinds are compared
+  if(faces(tm_a).empty()) { stats.failed_mesh = 0; return finish(ERROR_EMPTY_MESH); }
+  if(faces(tm_b).empty()) { stats.failed_mesh = 1; return finish(ERROR_EMPTY_MESH); }
   // two closed surfaces: cut into disks along the chain of landmarks
   const bool closed_a = internal::is_closed_mesh(tm_a), closed_b = internal::is_closed_mesh(tm_b);
   if(closed_a && closed_b) return internal::cross_parameterization_closed<ConcurrencyTag>(tm_a, tm_b, landmarks, settings, output);
@@ -799,7 +803,7 @@ Error_code cross_parameterization_disks(
       {
         stats.failed_landmark = border_pair_input[k]; // -1 for border_vertex_pair
         stats.failed_mesh = 1;
-        return finish(ERROR_WRONG_PARAMETER); // not in A's order along B's border
+        return finish(ERROR_LANDMARK_ORDER); // not in A's order along B's border
       }
       sorted.push_back(matched[k]);
     }
@@ -815,8 +819,13 @@ Error_code cross_parameterization_disks(
       for(std::size_t k = 0; k < nb; ++k) border_uv_b[k] = request->border_uv_b[disk_b.border[k]];
     }
     else
+    {
+      std::size_t arc = 0;
       ec = internal::common_square_border_through(disk_a, vpm_a, start_a, disk_b, vpm_b, start_b, sorted,
-                                                  border_uv_a, border_uv_b);
+                                                  border_uv_a, border_uv_b, &arc);
+      // the border landmark that ends the arc of A with no vertex for B's corner (-1 for border_vertex_pair)
+      if(ec == ERROR_BORDER_TOO_SHORT && arc < order.size()) stats.failed_landmark = border_pair_input[order[arc]];
+    }
     if(ec == ERROR_BORDER_TOO_SHORT) stats.failed_mesh = 0;
   }
   if(ec != OK) return finish(ec);
@@ -1467,7 +1476,11 @@ Error_code cross_parameterization_closed(
 /// maps are certified by `check_embedding()` (the reports are in the statistics). Each vertex of A is then located
 /// in B's map: the face is decided by exact orientations (a point on an edge or a vertex of B gets the incident face
 /// of B listed first in `faces(tm_b)`, with exact zero coordinates), the barycentric coordinates are computed in
-/// exact rationals and rounded once to double (they sum to 1 up to that rounding). A landmark of A gets the
+/// exact rationals and rounded once to double (they sum to 1 up to that rounding). When B's map is on a refined copy
+/// of B (`Cross_parameterization_statistics::vertices_added_b` > 0), the point is located in the refined copy that
+/// way and expressed in a face of B that contains the refined face (for a point on an edge or a vertex of B, the first
+/// such face found around one of its vertices), each vertex added to the copy being a combination of the vertices of
+/// one face of B: these coordinates are sums of products in double, rounded once more. A landmark of A gets the
 /// coordinate 1 exactly at its partner.
 ///
 /// Two closed genus-0 meshes (no border) are first cut into disks along a chain through the landmarks, in their
@@ -1510,8 +1523,13 @@ Error_code cross_parameterization_closed(
 ///                       3D (right for two meshes of one surface in one frame; give the pair otherwise)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_running_time}
-///     \cgalParamDescription{seconds (wall clock) for the whole call, counted from its start: each stage gets what
-///                           is left; `ERROR_BUDGET_EXHAUSTED` when exceeded}
+///     \cgalParamDescription{seconds (wall clock) for the whole call, counted from its start: each map and each
+///                           optimization gets what is left; `ERROR_BUDGET_EXHAUSTED` when a certified map of A or
+///                           of B cannot be made within it (an optimization cut short keeps the certified map it
+///                           has, and the steps not started are skipped: the composed distortion, B's matched map).
+///                           The location and the compatible meshes, whose time is bounded by the sizes of the
+///                           meshes and of the overlay, are not interrupted: the call may end after the budget, with
+///                           `OK`}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{no limit}
 ///   \cgalParamNEnd
@@ -1611,12 +1629,15 @@ Error_code cross_parameterization_closed(
 ///         and `ERROR_PATH_TRACING_FAILED` (the chain of landmarks cannot go on without crossing itself; with
 ///         `failed_landmark`), `ERROR_WRONG_PARAMETER` for two closed meshes with fewer than two landmarks,
 ///         `ERROR_BORDER_TOO_SHORT` (fewer than four border vertices; `failed_mesh` says which mesh), `ERROR_WRONG_PARAMETER` (a landmark vertex
-///         not of its mesh, a `border_vertex_pair` vertex not on its border, border landmarks not in the same order
-///         along both borders), `ERROR_CONSTRAINT_ON_BORDER` (a landmark with one vertex on its border and the other
+///         not of its mesh, a `border_vertex_pair` vertex not on its border), `ERROR_LANDMARK_ORDER` (border landmarks
+///         not in the same counterclockwise order along both borders, `border_vertex_pair` counted as the first:
+///         no orientation-preserving bijection matches them; the first landmark out of order along B's border),
+///         `ERROR_CONSTRAINT_ON_BORDER` (a landmark with one vertex on its border and the other
 ///         inside), `ERROR_DUPLICATE_CONSTRAINT` (a vertex used by two landmarks, or by a landmark and
-///         `border_vertex_pair` with another partner) -- these three with
+///         `border_vertex_pair` with another partner) -- these four with
 ///         `Cross_parameterization_statistics::failed_landmark` --, `ERROR_BORDER_TOO_SHORT` also when an arc of A's
-///         border between two border landmarks has no vertex for a corner of the square that B's arc holds, the
+///         border between two border landmarks has no vertex for a corner of the square that B's arc holds (with
+///         `failed_landmark`: the border landmark at the end of that arc, counterclockwise), the
 ///         errors of `parameterize_certified()` on B and of `constrained_embedding()` on A, or
 ///         `ERROR_INVALID_EMBEDDING` when a certificate fails (of either map, of the location, or with `compatible_meshes` of
 ///         the triangulated overlay, for closed meshes also of the overlay joined along the cut), for closed meshes

@@ -183,7 +183,7 @@ int border_landmarks()
     const PE::Error_code ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(loc), PE::parameters::statistics(&st));
     // which of the two is named depends on the direction of the border cycle above (the function walks each border
     // counterclockwise, the interior on the left)
-    CHECK(ec == PE::ERROR_WRONG_PARAMETER && (st.failed_landmark == 1 || st.failed_landmark == 2) && st.failed_mesh == 1 && loc.empty(),
+    CHECK(ec == PE::ERROR_LANDMARK_ORDER && (st.failed_landmark == 1 || st.failed_landmark == 2) && st.failed_mesh == 1 && loc.empty(),
           "out of order: " << PE::get_error_name(ec) << ", landmark " << st.failed_landmark << ", mesh " << st.failed_mesh);
     std::cout << "border landmarks out of order (" << mesh_name<Mesh>() << "): " << PE::get_error_name(ec) << ", landmark "
               << st.failed_landmark << std::endl;
@@ -387,6 +387,30 @@ int remeshed_pair(const std::string& file, std::size_t count, double& mean_error
                                boost::make_assoc_property_map(height_a));
   for(auto v : vertices(a))
     CHECK(std::abs(height_a.at(v) - moved.at(v).z()) <= 1e-12 * diag, "scalar transfer");
+  // a uv (Point_2) and a std::array of numbers: B's (x, y) and (x, y, z) give A's moved points' coordinates
+  std::unordered_map<MeshB::Vertex_index, Epick::Point_2> uv_b;
+  std::unordered_map<MeshB::Vertex_index, std::array<double, 3> > xyz_b;
+  for(auto w : vertices(b))
+  {
+    uv_b[w] = Epick::Point_2(b.point(w).x(), b.point(w).y());
+    xyz_b[w] = {{ b.point(w).x(), b.point(w).y(), b.point(w).z() }};
+  }
+  std::unordered_map<typename boost::graph_traits<MeshA>::vertex_descriptor, Epick::Point_2,
+                     boost::hash<typename boost::graph_traits<MeshA>::vertex_descriptor> > uv_a;
+  std::unordered_map<typename boost::graph_traits<MeshA>::vertex_descriptor, std::array<double, 3>,
+                     boost::hash<typename boost::graph_traits<MeshA>::vertex_descriptor> > xyz_a;
+  PE::transfer_vertex_property(a, b, boost::make_assoc_property_map(loc), boost::make_assoc_property_map(uv_b),
+                               boost::make_assoc_property_map(uv_a));
+  PE::transfer_vertex_property(a, b, boost::make_assoc_property_map(loc), boost::make_assoc_property_map(xyz_b),
+                               boost::make_assoc_property_map(xyz_a));
+  for(auto v : vertices(a))
+  {
+    const Epick::Point_3& m = moved.at(v);
+    CHECK(std::abs(uv_a.at(v).x() - m.x()) <= 1e-12 * diag && std::abs(uv_a.at(v).y() - m.y()) <= 1e-12 * diag,
+          "Point_2 transfer");
+    CHECK(std::abs(xyz_a.at(v)[0] - m.x()) <= 1e-12 * diag && std::abs(xyz_a.at(v)[1] - m.y()) <= 1e-12 * diag &&
+          std::abs(xyz_a.at(v)[2] - m.z()) <= 1e-12 * diag, "std::array transfer");
+  }
   std::cout << file << " (" << mesh_name<MeshA>() << ", " << st.vertices_a << " vertices) -> remeshed ("
             << st.vertices_b << " vertices), " << count << " landmarks: mean error " << mean_error
             << " of the diagonal, max " << max_error << " (B -> A: mean " << back_error.first << ", max "
@@ -881,6 +905,14 @@ int errors(const std::string& data_dir)
     CGAL::make_triangle(Epick::Point_3(0, 0, 0), Epick::Point_3(1, 0, 0), Epick::Point_3(0, 1, 0), tri);
     RUN(run(tri, b, {}, PE::ERROR_BORDER_TOO_SHORT, none, 0, "A with three border vertices"));
     RUN(run(a, tri, {}, PE::ERROR_BORDER_TOO_SHORT, none, 1, "B with three border vertices"));
+  }
+  {
+    // an empty mesh, against a disk or against a closed mesh: empty (not "a closed mesh against a disk")
+    Mesh empty, closed;
+    CGAL::make_tetrahedron(Epick::Point_3(0, 0, 0), Epick::Point_3(1, 0, 0), Epick::Point_3(0, 1, 0),
+                           Epick::Point_3(0, 0, 1), closed);
+    RUN(run(empty, b, {}, PE::ERROR_EMPTY_MESH, none, 0, "A empty"));
+    RUN(run(closed, empty, {}, PE::ERROR_EMPTY_MESH, none, 1, "B empty against a closed A"));
   }
   {
     // a NaN 3D point inside A, an infinite one on B's border (not a path that cannot be traced)

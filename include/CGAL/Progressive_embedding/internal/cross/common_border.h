@@ -213,12 +213,14 @@ Error_code common_square_border(const Indexed_disk<MeshA>& disk_a, VPMA vpm_a, s
 // other vertices by arc length between these anchors. Consecutive anchors lie on one side of the square,
 // so every border point of A lies exactly on a side too. `matched`: (position on A's border from
 // start_a, position on B's border from start_b), the first (0, 0), both positions strictly increasing.
-// ERROR_BORDER_TOO_SHORT when an arc of A has no vertex for a corner that B's arc has.
+// ERROR_BORDER_TOO_SHORT when an arc of A has no vertex for a corner that B's arc has; `failed_arc`, if given,
+// is then the index in `matched` of the pair that ends that arc (0 when it ends at the start).
 template <class Point_2, class MeshA, class VPMA, class MeshB, class VPMB>
 Error_code common_square_border_through(const Indexed_disk<MeshA>& disk_a, VPMA vpm_a, std::size_t start_a,
                                         const Indexed_disk<MeshB>& disk_b, VPMB vpm_b, std::size_t start_b,
                                         const std::vector<std::pair<std::size_t, std::size_t> >& matched,
-                                        std::vector<Point_2>& uv_a, std::vector<Point_2>& uv_b)
+                                        std::vector<Point_2>& uv_a, std::vector<Point_2>& uv_b,
+                                        std::size_t* failed_arc = nullptr)
 {
   typedef typename CGAL::Kernel_traits<Point_2>::Kernel::FT FT;
   CGAL_precondition(!matched.empty() && matched.front().first == 0 && matched.front().second == 0);
@@ -240,6 +242,7 @@ Error_code common_square_border_through(const Indexed_disk<MeshA>& disk_a, VPMA 
     std::size_t i = 0; // the last matched pair at or before B's corner
     while(i + 1 < nm && matched[i + 1].second <= kb) ++i;
     std::size_t ka = matched[i].first;
+    if(failed_arc != nullptr) *failed_arc = (i + 1 < nm) ? i + 1 : 0;
     if(matched[i].second != kb)
     {
       const std::size_t a0 = matched[i].first, a1 = (i + 1 < nm) ? matched[i + 1].first : na;

@@ -18,11 +18,10 @@ namespace CGAL {
 namespace Progressive_embedding {
 namespace internal {
 
-// What is wrong with the landmark that `failed_landmark` names, its vertex on the mesh `failed_mesh` (0: A, 1: B):
-// the words that follow "the vertex of A" (or "of B"). `closed`: the two meshes are closed (cut along the chain
-// of landmarks); `border_vertex_pair`: the caller gave one. The callers check first that every index is a vertex of
-// its mesh, so `ERROR_WRONG_PARAMETER` on B can only be the order of the border landmarks.
-inline std::string cross_landmark_fault(Error_code ec, int failed_mesh, bool closed, bool border_vertex_pair)
+// What is wrong with the landmark that `failed_landmark` names, its vertex on the mesh `failed_mesh`: the words that
+// follow "the vertex of A" (or "of B"). `closed`: the two meshes are closed (cut along the chain of landmarks);
+// `border_vertex_pair`: the caller gave one.
+inline std::string cross_landmark_fault(Error_code ec, bool closed, bool border_vertex_pair)
 {
   switch(ec)
   {
@@ -31,9 +30,13 @@ inline std::string cross_landmark_fault(Error_code ec, int failed_mesh, bool clo
     case ERROR_DUPLICATE_CONSTRAINT:
       return border_vertex_pair ? "is used by an earlier landmark, or by the border vertex pair with another partner"
                                 : "is used by an earlier landmark";
+    case ERROR_BORDER_TOO_SHORT:
+      return "leaves no border vertex of A between it and the border landmark before it (counterclockwise) for the "
+             "corner of the square that B's border holds there (move the border landmarks apart, or give fewer)";
+    case ERROR_LANDMARK_ORDER:
+      return "is out of the order of the other border landmarks along B's border";
     case ERROR_WRONG_PARAMETER:
-      return failed_mesh == 1 ? "is out of the order of the other border landmarks along B's border"
-                              : "is not a vertex of its mesh";
+      return "is not a vertex of its mesh";
     case ERROR_NOT_A_DISK:
       if(closed)
         return "is joined to the previous landmark by an edge: a cut along one edge opens nothing (a third landmark, "

@@ -1045,13 +1045,15 @@ PYBIND11_MODULE(progressive_embedding, m)
     "'planar_uv_b', 'planar_F_b' (B's map, on B or its refined copy: rows of V_b first); faces counterclockwise,\n"
     "a landmark of A at exactly the uv of its partner. time_limit: seconds in all (ERROR_BUDGET_EXHAUSTED\n"
     "when a certified map of A or B cannot be made within it; an optimization cut short keeps its certified\n"
-    "map; the location and the compatible meshes run to their end, so the call may end after it);\n"
+    "map; the location and the compatible meshes run to their end, and for closed meshes the cut, so the\n"
+    "call may end after it);\n"
     "optimization_time_limit: seconds for the optimization of A's map.\n"
     "Raises Error with ERROR_WRONG_PARAMETER for a landmark or border_vertex_pair index that is no vertex\n"
     "(as the C++ function, not ValueError) or a border_vertex_pair vertex off its border,\n"
     "ERROR_LANDMARK_ORDER for border landmarks not in the same order along both borders, ERROR_CONSTRAINT_ON_BORDER for a landmark\n"
     "with one vertex on its border and the other inside, ERROR_DUPLICATE_CONSTRAINT for a\n"
-    "vertex used twice, ERROR_NOT_A_DISK, ERROR_BORDER_TOO_SHORT (fewer than 4 border vertices), ...; the\n"
+    "vertex used twice, ERROR_NOT_A_DISK, ERROR_BORDER_TOO_SHORT (fewer than 4 border vertices, or an arc of\n"
+    "A's border between two border landmarks with too few vertices for the corners that B's arc holds), ...; the\n"
     "message names the landmark (its row) or the mesh.");
   m.def("last_timing", &py_last_timing,
     "last_timing() -> dict\n\n"

@@ -236,8 +236,14 @@ def test_errors():
     assert 'mesh B (V_b, F_b): closed, and the other mesh is not' in raises('ERROR_NOT_A_DISK', V, F, TETRAHEDRON_V, TETRAHEDRON_F)
     raises('ERROR_BORDER_TOO_SHORT', V[:3], [[0, 1, 2]], V, F)  # a triangle: 3 border vertices for 4 corners
     # border landmarks that leave A's arc from 1 to 2 without a vertex for B's corner 5: said as in `pe cross`
-    assert 'landmarks[1] = (2, 17): the vertex 2 of A leaves no border vertex of A' in raises('ERROR_BORDER_TOO_SHORT', V, F, V, F,
-                                                                          [[1, 1], [2, 17]])
+    assert 'landmarks[1] = (2, 17): the vertex 2 of A leaves too few border vertices of A' in raises(
+        'ERROR_BORDER_TOO_SHORT', V, F, V, F, [[1, 1], [2, 17]])
+    # the same with the landmarks given out of their border order (the landmark is named by its row), and with
+    # the arc that wraps around to the first border landmark
+    assert 'landmarks[2] = (2, 23): the vertex 2 of A leaves too few' in raises(
+        'ERROR_BORDER_TOO_SHORT', V, F, V, F, [[0, 0], [35, 35], [2, 23], [1, 1]])
+    assert 'landmarks[0] = (1, 1): the vertex 1 of A leaves too few' in raises(
+        'ERROR_BORDER_TOO_SHORT', V, F, V, F, [[1, 1], [0, 31]])
     # a vertex in no face (a row of V that F does not use)
     assert 'vertex 36 is in no face of F_a' in raises('ERROR_NOT_A_DISK', np.r_[V, [[9.0, 9.0, 9.0]]], F, V, F)
     assert 'F_b[50]' in raises('ERROR_NON_MANIFOLD', V, F, V, np.r_[F, [[3, 3, 4]]])

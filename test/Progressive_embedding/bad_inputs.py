@@ -372,7 +372,7 @@ CASES = [
      r"line 2: landmark 1 1: the vertex of A is joined to the previous landmark by an edge: a cut along one edge opens "
      r"nothing.*ERROR_NOT_A_DISK"),
     ("cross", "border_too_short", ["cross", "{t}/grid6.obj", "{t}/grid6.obj", "{t}/lm_border_short.txt", "{t}/cx_short.txt"], 3,
-     r"line 2: landmark 2 17: the vertex of A leaves no border vertex of A between it and the border landmark before it.*ERROR_BORDER_TOO_SHORT"),
+     r"line 2: landmark 2 17: the vertex of A leaves too few border vertices of A between it and the border landmark before it.*ERROR_BORDER_TOO_SHORT"),
     ("cross", "closed_unreachable", ["cross", "{t}/octahedron.off", "{t}/octahedron.off", "{t}/lm_trap.txt", "{t}/cx_trap.txt"], 3,
      r"line 6: landmark 0 0: the vertex of A cannot be reached from the previous landmark.*another order may do.*"
      r"ERROR_PATH_TRACING_FAILED"),

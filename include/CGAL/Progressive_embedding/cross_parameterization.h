@@ -20,7 +20,8 @@
 ///  4. A's map on a refined copy of A: `constrained_embedding()` with every landmark of A pinned
 ///     bit-exactly at the uv of its partner in B's map, certified, then optimized for the composed map;
 ///  5. each vertex of A located in B's map (internal/cross/locate_in_map.h: exact orientations,
-///     coordinates in exact rationals rounded once), written to the output map.
+///     coordinates in exact rationals rounded once; on a refined copy of B, rounded once more), written to the
+///     output map.
 
 #include <CGAL/Progressive_embedding/Error_code.h>
 #include <CGAL/Progressive_embedding/parameters.h>
@@ -155,8 +156,9 @@ struct Cross_parameterization_statistics
   /// on an error about one landmark (`ERROR_WRONG_PARAMETER`: a vertex not of its mesh; `ERROR_LANDMARK_ORDER`: a
   /// border landmark out of the order of the others along B's border; `ERROR_CONSTRAINT_ON_BORDER`; `ERROR_DUPLICATE_CONSTRAINT`: a vertex of
   /// A or of B used twice, the later one, or a border landmark that gives a vertex of `border_vertex_pair` another
-  /// partner; `ERROR_BORDER_TOO_SHORT`: the border landmark at the end of an arc of A's border that has no vertex
-  /// for the corner of the square that B's arc holds; for closed meshes `ERROR_PATH_TRACING_FAILED`: the landmark the
+  /// partner; `ERROR_BORDER_TOO_SHORT`: the border landmark at the end of an arc of A's border with too few vertices
+  /// for the corners of the square that B's arc holds, `std::size_t(-1)` when that arc ends at `border_vertex_pair`;
+  /// for closed meshes `ERROR_PATH_TRACING_FAILED`: the landmark the
   /// chain of cuts cannot reach from the one before, and `ERROR_NOT_A_DISK`: the second of two landmarks joined by an
   /// edge): its position in the `landmarks` range; `std::size_t(-1)` otherwise
   std::size_t failed_landmark = std::size_t(-1);
@@ -820,10 +822,10 @@ Error_code cross_parameterization_disks(
     }
     else
     {
-      std::size_t arc = 0;
+      std::size_t arc = std::size_t(-1);
       ec = internal::common_square_border_through(disk_a, vpm_a, start_a, disk_b, vpm_b, start_b, sorted,
                                                   border_uv_a, border_uv_b, &arc);
-      // the border landmark that ends the arc of A with no vertex for B's corner (-1 for border_vertex_pair)
+      // the border landmark that ends the arc of A with too few vertices for B's corners (-1 for border_vertex_pair)
       if(ec == ERROR_BORDER_TOO_SHORT && arc < order.size()) stats.failed_landmark = border_pair_input[order[arc]];
     }
     if(ec == ERROR_BORDER_TOO_SHORT) stats.failed_mesh = 0;
@@ -1523,7 +1525,8 @@ Error_code cross_parameterization_closed(
 ///                       3D (right for two meshes of one surface in one frame; give the pair otherwise)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_running_time}
-///     \cgalParamDescription{seconds (wall clock) for the whole call, counted from its start: each map and each
+///     \cgalParamDescription{seconds (wall clock) for the whole call, counted from its start (for two closed meshes
+///                           from the end of the cut along the landmarks, which is not interrupted): each map and each
 ///                           optimization gets what is left; `ERROR_BUDGET_EXHAUSTED` when a certified map of A or
 ///                           of B cannot be made within it (an optimization cut short keeps the certified map it
 ///                           has, and the steps not started are skipped: the composed distortion, B's matched map).
@@ -1636,8 +1639,9 @@ Error_code cross_parameterization_closed(
 ///         inside), `ERROR_DUPLICATE_CONSTRAINT` (a vertex used by two landmarks, or by a landmark and
 ///         `border_vertex_pair` with another partner) -- these four with
 ///         `Cross_parameterization_statistics::failed_landmark` --, `ERROR_BORDER_TOO_SHORT` also when an arc of A's
-///         border between two border landmarks has no vertex for a corner of the square that B's arc holds (with
-///         `failed_landmark`: the border landmark at the end of that arc, counterclockwise), the
+///         border between two border landmarks has too few vertices for the corners of the square that B's arc holds
+///         (with `failed_landmark`: the border landmark at the end of that arc, counterclockwise, unless that is
+///         `border_vertex_pair`), the
 ///         errors of `parameterize_certified()` on B and of `constrained_embedding()` on A, or
 ///         `ERROR_INVALID_EMBEDDING` when a certificate fails (of either map, of the location, or with `compatible_meshes` of
 ///         the triangulated overlay, for closed meshes also of the overlay joined along the cut), for closed meshes

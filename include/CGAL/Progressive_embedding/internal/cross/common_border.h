@@ -213,8 +213,9 @@ Error_code common_square_border(const Indexed_disk<MeshA>& disk_a, VPMA vpm_a, s
 // other vertices by arc length between these anchors. Consecutive anchors lie on one side of the square,
 // so every border point of A lies exactly on a side too. `matched`: (position on A's border from
 // start_a, position on B's border from start_b), the first (0, 0), both positions strictly increasing.
-// ERROR_BORDER_TOO_SHORT when an arc of A has no vertex for a corner that B's arc has; `failed_arc`, if given,
-// is then the index in `matched` of the pair that ends that arc (0 when it ends at the start).
+// ERROR_BORDER_TOO_SHORT when an arc of A has too few vertices for the corners that B's arc has; `failed_arc`, if
+// given, is then the index in `matched` of the pair that ends that arc (0 when it ends at the start), and
+// std::size_t(-1) on any other outcome.
 template <class Point_2, class MeshA, class VPMA, class MeshB, class VPMB>
 Error_code common_square_border_through(const Indexed_disk<MeshA>& disk_a, VPMA vpm_a, std::size_t start_a,
                                         const Indexed_disk<MeshB>& disk_b, VPMB vpm_b, std::size_t start_b,
@@ -224,6 +225,7 @@ Error_code common_square_border_through(const Indexed_disk<MeshA>& disk_a, VPMA 
 {
   typedef typename CGAL::Kernel_traits<Point_2>::Kernel::FT FT;
   CGAL_precondition(!matched.empty() && matched.front().first == 0 && matched.front().second == 0);
+  if(failed_arc != nullptr) *failed_arc = std::size_t(-1);
   const std::size_t na = disk_a.border.size(), nb = disk_b.border.size(), nm = matched.size();
   std::vector<double> sb;
   std::vector<std::size_t> cb;
@@ -257,6 +259,7 @@ Error_code common_square_border_through(const Indexed_disk<MeshA>& disk_a, VPMA 
     if(ka <= ca.back()) return ERROR_BORDER_TOO_SHORT;
     ca.push_back(ka);
   }
+  if(failed_arc != nullptr) *failed_arc = std::size_t(-1);
   // the anchors of A, in border order: the matched vertices and the corners (a corner that is a matched
   // vertex once: its partner is B's corner, at the corner point exactly)
   std::vector<std::pair<std::size_t, Point_2> > anchors;

@@ -31,8 +31,9 @@ inline std::string cross_landmark_fault(Error_code ec, bool closed, bool border_
       return border_vertex_pair ? "is used by an earlier landmark, or by the border vertex pair with another partner"
                                 : "is used by an earlier landmark";
     case ERROR_BORDER_TOO_SHORT:
-      return "leaves no border vertex of A between it and the border landmark before it (counterclockwise) for the "
-             "corner of the square that B's border holds there (move the border landmarks apart, or give fewer)";
+      return "leaves too few border vertices of A between it and the border landmark before it (counterclockwise) "
+             "for the corners of the square that B's border holds there (move the border landmarks apart, or give "
+             "fewer)";
     case ERROR_LANDMARK_ORDER:
       return "is out of the order of the other border landmarks along B's border";
     case ERROR_WRONG_PARAMETER:

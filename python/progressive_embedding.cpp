@@ -1052,8 +1052,9 @@ PYBIND11_MODULE(progressive_embedding, m)
     "(as the C++ function, not ValueError) or a border_vertex_pair vertex off its border,\n"
     "ERROR_LANDMARK_ORDER for border landmarks not in the same order along both borders, ERROR_CONSTRAINT_ON_BORDER for a landmark\n"
     "with one vertex on its border and the other inside, ERROR_DUPLICATE_CONSTRAINT for a\n"
-    "vertex used twice, ERROR_NOT_A_DISK, ERROR_BORDER_TOO_SHORT (fewer than 4 border vertices, or an arc of\n"
-    "A's border between two border landmarks with too few vertices for the corners that B's arc holds), ...; the\n"
+    "vertex used twice, ERROR_NOT_A_DISK, ERROR_BORDER_TOO_SHORT (fewer than 4 border vertices, or border\n"
+    "landmarks that leave fewer than 4 places for the corners of the square: a border landmark, or vertices\n"
+    "inside an arc between two border landmarks on both borders), ...; the\n"
     "message names the landmark (its row) or the mesh.");
   m.def("last_timing", &py_last_timing,
     "last_timing() -> dict\n\n"

@@ -207,6 +207,14 @@ def test_border_landmarks():
     assert info['landmarks'] == 6 and info['border_landmarks'] == 5
     assert_landmarks_exact(faces, barycentric, F, landmarks)
     assert np.abs(images(faces, barycentric, V, F) - V).max() <= 1e-9
+    # arcs of A too short for the corners B's arcs hold at the quarters of B's border (A's border from 1 to 2 is one
+    # edge, B's from 1 to 17 holds the corner 5): the corners go to the landmarks or to arcs with room on both
+    # borders, and the maps are certified
+    for marks in ([[1, 1], [2, 17]], [[0, 0], [35, 35], [2, 23], [1, 1]], [[1, 1], [0, 31]]):
+        faces, barycentric, info = pe.cross_parameterization(V, F, V, F, np.array(marks))
+        assert_result(faces, barycentric, info, len(V), F)
+        assert info['border_landmarks'] == len(marks)
+        assert_landmarks_exact(faces, barycentric, F, marks)
     # out of order along B's border: 5 and 35 swapped (no orientation-preserving bijection matches them)
     message = raises('ERROR_LANDMARK_ORDER', V, F, V, F, [[0, 0], [5, 35], [35, 5]])
     assert 'landmarks[' in message and 'is out of the order of the other border landmarks along B' in message
@@ -214,6 +222,42 @@ def test_border_landmarks():
     # order along B's border: the landmark out of order is named
     message = raises('ERROR_LANDMARK_ORDER', V, F, V, F, [[5, 5], [35, 35]], border_vertex_pair=(30, 17))
     assert 'landmarks[' in message and 'is out of the order of the other border landmarks along B' in message
+
+
+def grid_border_cycle(n):
+    """The border vertices of grid_disk(n), counterclockwise from the vertex 0."""
+    return (list(range(n)) + [i * n + n - 1 for i in range(1, n)] + [(n - 1) * n + i for i in range(n - 2, -1, -1)]
+            + [i * n for i in range(n - 2, 0, -1)])
+
+
+@pytest.mark.parametrize('n_a,n_b,seed', [(6, 6, 1), (5, 8, 2), (8, 4, 3)])
+def test_border_landmarks_corner_places(n_a, n_b, seed):
+    # random border landmarks in the same cyclic order on both borders: the square's corners need three places
+    # besides the first landmark (a border landmark, or a pair of vertices inside an arc between consecutive
+    # landmarks on both borders); the call succeeds, certified, exactly when the landmarks leave them
+    rng = np.random.default_rng(seed)
+    (V_a, F_a), (V_b, F_b) = grid_disk(n_a), grid_disk(n_b)
+    ring_a, ring_b = grid_border_cycle(n_a), grid_border_cycle(n_b)
+    succeeded = refused = 0
+    for _ in range(40):
+        m = int(rng.integers(1, 7))
+        pa = sorted(rng.choice(len(ring_a), m, replace=False))
+        pb = sorted(rng.choice(len(ring_b), m, replace=False))
+        shift = int(rng.integers(0, m))
+        qb = [pb[(i + shift) % m] for i in range(m)]
+        places = m - 1 + sum(min((pa[(j + 1) % m] - pa[j] - 1) % len(ring_a) if m > 1 else len(ring_a) - 1,
+                                 (qb[(j + 1) % m] - qb[j] - 1) % len(ring_b) if m > 1 else len(ring_b) - 1)
+                             for j in range(m))
+        marks = np.array([[ring_a[pa[i]], ring_b[qb[i]]] for i in range(m)])
+        if places >= 3:
+            faces, barycentric, info = pe.cross_parameterization(V_a, F_a, V_b, F_b, marks)
+            assert_result(faces, barycentric, info, len(V_a), F_b)
+            assert_landmarks_exact(faces, barycentric, F_b, marks)
+            succeeded += 1
+        else:
+            assert 'leaves too few border vertices of A' in raises('ERROR_BORDER_TOO_SHORT', V_a, F_a, V_b, F_b, marks)
+            refused += 1
+    assert succeeded > 30
 
 
 def test_errors():
@@ -235,15 +279,14 @@ def test_errors():
     assert 'mesh A (V_a, F_a): closed, and the other mesh is not' in raises('ERROR_NOT_A_DISK', TETRAHEDRON_V, TETRAHEDRON_F, V, F)
     assert 'mesh B (V_b, F_b): closed, and the other mesh is not' in raises('ERROR_NOT_A_DISK', V, F, TETRAHEDRON_V, TETRAHEDRON_F)
     raises('ERROR_BORDER_TOO_SHORT', V[:3], [[0, 1, 2]], V, F)  # a triangle: 3 border vertices for 4 corners
-    # border landmarks that leave A's arc from 1 to 2 without a vertex for B's corner 5: said as in `pe cross`
-    assert 'landmarks[1] = (2, 17): the vertex 2 of A leaves too few border vertices of A' in raises(
-        'ERROR_BORDER_TOO_SHORT', V, F, V, F, [[1, 1], [2, 17]])
-    # the same with the landmarks given out of their border order (the landmark is named by its row), and with
-    # the arc that wraps around to the first border landmark
-    assert 'landmarks[2] = (2, 23): the vertex 2 of A leaves too few' in raises(
-        'ERROR_BORDER_TOO_SHORT', V, F, V, F, [[0, 0], [35, 35], [2, 23], [1, 1]])
-    assert 'landmarks[0] = (1, 1): the vertex 1 of A leaves too few' in raises(
-        'ERROR_BORDER_TOO_SHORT', V, F, V, F, [[1, 1], [0, 31]])
+    # border landmarks whose arcs leave no place for the square's corners: A's border from 1 to 2 and B's from 0
+    # to 1 are single edges, so a corner can only be at the landmarks themselves (two of the four): said as in
+    # `pe cross`, the landmark ending the arc of A found too short named
+    assert 'landmarks[1] = (2, 0): the vertex 2 of A leaves too few border vertices of A' in raises(
+        'ERROR_BORDER_TOO_SHORT', V, F, V, F, [[1, 1], [2, 0]])
+    # the same with the landmarks given in another order (the landmark is named by its row)
+    assert 'landmarks[0] = (2, 0): the vertex 2 of A leaves too few' in raises(
+        'ERROR_BORDER_TOO_SHORT', V, F, V, F, [[2, 0], [1, 1]])
     # a vertex in no face (a row of V that F does not use)
     assert 'vertex 36 is in no face of F_a' in raises('ERROR_NOT_A_DISK', np.r_[V, [[9.0, 9.0, 9.0]]], F, V, F)
     assert 'F_b[50]' in raises('ERROR_NON_MANIFOLD', V, F, V, np.r_[F, [[3, 3, 4]]])

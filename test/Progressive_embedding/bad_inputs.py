@@ -161,12 +161,15 @@ def inputs():
         "cfix_on_domain_border.txt": "7 1 0.5\n",
         "cfix_fan.txt": "4 0.1 0.05\n",
         # landmark files for cross (the fan's inner vertex; the tetrahedron's vertices, all joined by edges; border
-        # landmarks on grid6.obj that leave A's arc from 1 to 2 without a vertex for B's corner 5)
+        # landmarks on grid6.obj whose arcs leave no place for the square's corners: A's border from 1 to 2 and B's
+        # from 0 to 1 are single edges; and landmarks whose arc of A from 1 to 2 is too short for B's corner 5 at
+        # the quarter of B's border, which then goes elsewhere)
         "fan.off": off(FAN_V, FAN_F),
         "lm_fan.txt": "4 4\n",
         "lm_one.txt": "0 0\n",
         "lm_edge.txt": "0 0\n1 1\n",
-        "lm_border_short.txt": "1 1\n2 17\n",
+        "lm_border_short.txt": "1 1\n2 0\n",
+        "lm_border_short_arc.txt": "1 1\n2 17\n",
         # the octahedron's chain 1 2 3 4 5 then 0: every edge path from 5 to 0 goes through a landmark
         "octahedron.off": off(OCT_V, OCT_F),
         "lm_trap.txt": "1 1\n2 2\n3 3\n4 4\n5 5\n0 0\n",
@@ -372,7 +375,9 @@ CASES = [
      r"line 2: landmark 1 1: the vertex of A is joined to the previous landmark by an edge: a cut along one edge opens "
      r"nothing.*ERROR_NOT_A_DISK"),
     ("cross", "border_too_short", ["cross", "{t}/grid6.obj", "{t}/grid6.obj", "{t}/lm_border_short.txt", "{t}/cx_short.txt"], 3,
-     r"line 2: landmark 2 17: the vertex of A leaves too few border vertices of A between it and the border landmark before it.*ERROR_BORDER_TOO_SHORT"),
+     r"line 2: landmark 2 0: the vertex of A leaves too few border vertices of A between it and the border landmark before it.*ERROR_BORDER_TOO_SHORT"),
+    ("cross", "border_short_arc", ["cross", "{t}/grid6.obj", "{t}/grid6.obj", "{t}/lm_border_short_arc.txt", "{t}/cx_short_arc.txt", "--json"], 0,
+     r'"landmarks_exact": true.*"written": true'),
     ("cross", "closed_unreachable", ["cross", "{t}/octahedron.off", "{t}/octahedron.off", "{t}/lm_trap.txt", "{t}/cx_trap.txt"], 3,
      r"line 6: landmark 0 0: the vertex of A cannot be reached from the previous landmark.*another order may do.*"
      r"ERROR_PATH_TRACING_FAILED"),

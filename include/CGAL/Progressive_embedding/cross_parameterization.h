@@ -156,8 +156,9 @@ struct Cross_parameterization_statistics
   /// on an error about one landmark (`ERROR_WRONG_PARAMETER`: a vertex not of its mesh; `ERROR_LANDMARK_ORDER`: a
   /// border landmark out of the order of the others along B's border; `ERROR_CONSTRAINT_ON_BORDER`; `ERROR_DUPLICATE_CONSTRAINT`: a vertex of
   /// A or of B used twice, the later one, or a border landmark that gives a vertex of `border_vertex_pair` another
-  /// partner; `ERROR_BORDER_TOO_SHORT`: the border landmark at the end of an arc of A's border with too few vertices
-  /// for the corners of the square that B's arc holds, `std::size_t(-1)` when that arc ends at `border_vertex_pair`;
+  /// partner; `ERROR_BORDER_TOO_SHORT`: the border landmark at the end of the first arc of A's border found with too few
+  /// vertices for the corners of the square that B's arc holds, when no other place holds them,
+  /// `std::size_t(-1)` when that arc ends at `border_vertex_pair`;
   /// for closed meshes `ERROR_PATH_TRACING_FAILED`: the landmark the
   /// chain of cuts cannot reach from the one before, and `ERROR_NOT_A_DISK`: the second of two landmarks joined by an
   /// edge): its position in the `landmarks` range; `std::size_t(-1)` otherwise
@@ -1638,10 +1639,11 @@ Error_code cross_parameterization_closed(
 ///         `ERROR_CONSTRAINT_ON_BORDER` (a landmark with one vertex on its border and the other
 ///         inside), `ERROR_DUPLICATE_CONSTRAINT` (a vertex used by two landmarks, or by a landmark and
 ///         `border_vertex_pair` with another partner) -- these four with
-///         `Cross_parameterization_statistics::failed_landmark` --, `ERROR_BORDER_TOO_SHORT` also when an arc of A's
-///         border between two border landmarks has too few vertices for the corners of the square that B's arc holds
-///         (with `failed_landmark`: the border landmark at the end of that arc, counterclockwise, unless that is
-///         `border_vertex_pair`), the
+///         `Cross_parameterization_statistics::failed_landmark` --, `ERROR_BORDER_TOO_SHORT` also when the border
+///         landmarks leave fewer than four places for the corners of the square (each corner needs a vertex at the
+///         same place along both borders: a border landmark, or vertices inside an arc between two border landmarks
+///         on both borders; with `failed_landmark`: the border landmark at the end of the first arc of A found too
+///         short for the corners that B's arc holds, counterclockwise, unless that is `border_vertex_pair`), the
 ///         errors of `parameterize_certified()` on B and of `constrained_embedding()` on A, or
 ///         `ERROR_INVALID_EMBEDDING` when a certificate fails (of either map, of the location, or with `compatible_meshes` of
 ///         the triangulated overlay, for closed meshes also of the overlay joined along the cut), for closed meshes

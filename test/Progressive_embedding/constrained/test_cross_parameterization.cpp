@@ -188,6 +188,30 @@ int border_landmarks()
     std::cout << "border landmarks out of order (" << mesh_name<Mesh>() << "): " << PE::get_error_name(ec) << ", landmark "
               << st.failed_landmark << std::endl;
   }
+  // an arc of A too short for the corner that B's arc holds at the quarter of B's border (A's arc is one edge): the
+  // corners go to the landmarks or to arcs with room on both borders, and the maps are certified
+  {
+    const std::vector<std::pair<vd, vd> > landmarks = { { ca[(p0 + 1) % n], cb[(p0 + 1) % n] }, { ca[(p0 + 2) % n], cb[(p0 + n / 2) % n] } };
+    Location_map<Mesh> loc, back;
+    PE::Cross_parameterization_statistics st;
+    RUN(certified_cross(a, b, landmarks, loc, st, back));
+    CHECK(st.border_landmarks == 2, "counted: " << st.border_landmarks);
+    std::cout << "border landmarks with an arc of A too short for B's corner (" << mesh_name<Mesh>() << "): certified, "
+              << "landmarks exact both ways" << std::endl;
+  }
+  // no place for the corners: A's arc from the first landmark to the second and B's from the second to the first are
+  // single edges, so only the two landmarks could be corners on both borders
+  {
+    const std::vector<std::pair<vd, vd> > landmarks = { { ca[(p0 + 1) % n], cb[(p0 + 1) % n] }, { ca[(p0 + 2) % n], cb[p0 % n] } };
+    Location_map<Mesh> loc;
+    PE::Cross_parameterization_statistics st;
+    const PE::Error_code ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(loc), PE::parameters::statistics(&st));
+    CHECK(ec == PE::ERROR_BORDER_TOO_SHORT && st.failed_mesh == 0 && loc.empty() &&
+          (st.failed_landmark == 0 || st.failed_landmark == 1),
+          "no place for the corners: " << PE::get_error_name(ec) << ", landmark " << st.failed_landmark << ", mesh " << st.failed_mesh);
+    std::cout << "border landmarks with no place for the square's corners (" << mesh_name<Mesh>() << "): "
+              << PE::get_error_name(ec) << ", landmark " << st.failed_landmark << std::endl;
+  }
   return EXIT_SUCCESS;
 }
 

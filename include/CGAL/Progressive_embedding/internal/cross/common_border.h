@@ -206,6 +206,78 @@ Error_code common_square_border(const Indexed_disk<MeshA>& disk_a, VPMA vpm_a, s
   return OK;
 }
 
+// the position in [lo, hi) whose parameter is nearest to `target` (the first of equals; lo when the range is empty)
+inline std::size_t nearest_in(const std::vector<double>& s, double target, std::size_t lo, std::size_t hi)
+{
+  std::size_t best = lo;
+  for(std::size_t k = lo + 1; k < hi; ++k) if(std::abs(s[k] - target) < std::abs(s[best] - target)) best = k;
+  return best;
+}
+
+// The corners of the square through matched border vertices when B's corners leave an arc of A without a vertex
+// for one of them. A corner needs a vertex on both borders, in the same place along them: a matched pair after the
+// first, or an inside vertex of an arc of B (between consecutive matched pairs; the last arc ends at the start
+// again) with the inside vertex of A's arc at the same relative arc length. Corners 1 to 3 are chosen in order, each
+// the place nearest to B's corner `cb[c]` in B's relative arc length (`sb`), after the corner before it on both
+// borders, leaving places for the corners still to come. `matched`, `sa`, `sb`, `na`, `nb` as in
+// common_square_border_through(); `ca` and `cb` get the four corners (positions from the start, the first 0).
+// False, with `ca` and `cb` unchanged, when the borders have fewer than three places in order: no square with its
+// corners at vertices of both borders matches the landmarks. O(3 (na + nb)).
+inline bool corners_at_places(const std::vector<double>& sa, const std::vector<double>& sb,
+                              const std::vector<std::pair<std::size_t, std::size_t> >& matched,
+                              std::size_t na, std::size_t nb, std::vector<std::size_t>& ca, std::vector<std::size_t>& cb)
+{
+  const std::size_t nm = matched.size();
+  auto a_end = [&](std::size_t j) { return j + 1 < nm ? matched[j + 1].first : na; };
+  auto b_end = [&](std::size_t j) { return j + 1 < nm ? matched[j + 1].second : nb; };
+  // inside places of arc j, and the places from the matched pair j (the start excluded) on
+  std::vector<std::size_t> inside(nm), from(nm + 1, 0);
+  for(std::size_t j = nm; j-- > 0;)
+  {
+    inside[j] = (std::min)(a_end(j) - matched[j].first - 1, b_end(j) - matched[j].second - 1);
+    from[j] = from[j + 1] + inside[j] + (j > 0 ? 1 : 0);
+  }
+  if(from[0] < 3) return false;
+  std::vector<std::size_t> qa(1, 0), qb(1, 0);
+  for(std::size_t c = 1; c < 4; ++c)
+  {
+    const std::size_t need = 3 - c; // corners after this one
+    const double target = sb[cb[c]];
+    double best = std::numeric_limits<double>::infinity();
+    std::size_t best_a = 0, best_b = 0;
+    for(std::size_t j = 0; j < nm; ++j)
+    {
+      if(b_end(j) <= qb.back() || a_end(j) <= qa.back()) continue; // arc j and its matched pair before the last corner
+      if(j > 0 && matched[j].first > qa.back() && matched[j].second > qb.back() && inside[j] + from[j + 1] >= need)
+      {
+        const double d = std::abs(sb[matched[j].second] - target);
+        if(d < best) { best = d; best_a = matched[j].first; best_b = matched[j].second; }
+      }
+      // inside vertices of the arc, leaving the corners after this one the room they need here
+      const std::size_t in_arc = need > from[j + 1] ? need - from[j + 1] : 0;
+      const std::size_t a0 = matched[j].first, b0 = matched[j].second, a1 = a_end(j), b1 = b_end(j);
+      const std::size_t a_lo = (std::max)(a0, qa.back()) + 1, b_lo = (std::max)(b0, qb.back()) + 1;
+      if(a1 < in_arc + 1 || b1 < in_arc + 1) continue;
+      const std::size_t a_hi = a1 - 1 - in_arc, b_hi = b1 - 1 - in_arc; // last usable positions
+      if(a_lo > a_hi || b_lo > b_hi) continue;
+      const std::size_t k = nearest_in(sb, target, b_lo, b_hi + 1);
+      const double d = std::abs(sb[k] - target);
+      if(d < best)
+      {
+        const double r = (sb[b1] > sb[b0]) ? (sb[k] - sb[b0]) / (sb[b1] - sb[b0]) : 0.5;
+        best = d; best_b = k;
+        best_a = nearest_in(sa, sa[a0] + r * (sa[a1] - sa[a0]), a_lo, a_hi + 1);
+      }
+    }
+    if(!(best < std::numeric_limits<double>::infinity())) return false;
+    qa.push_back(best_a);
+    qb.push_back(best_b);
+  }
+  ca.swap(qa);
+  cb.swap(qb);
+  return true;
+}
+
 // As common_square_border(), through matched pairs of border vertices (border landmarks): B is placed as
 // there; on A, each matched vertex goes to the uv of its partner (bit for bit), each corner of the square
 // to the vertex of A, strictly between the matched vertices around B's corner, whose relative arc length
@@ -213,9 +285,11 @@ Error_code common_square_border(const Indexed_disk<MeshA>& disk_a, VPMA vpm_a, s
 // other vertices by arc length between these anchors. Consecutive anchors lie on one side of the square,
 // so every border point of A lies exactly on a side too. `matched`: (position on A's border from
 // start_a, position on B's border from start_b), the first (0, 0), both positions strictly increasing.
-// ERROR_BORDER_TOO_SHORT when an arc of A has too few vertices for the corners that B's arc has; `failed_arc`, if
-// given, is then the index in `matched` of the pair that ends that arc (0 when it ends at the start), and
-// std::size_t(-1) on any other outcome.
+// When an arc of A (between two consecutive matched vertices) has too few vertices for the corners that B's arc
+// holds, the three corners after the start are chosen again (corners_at_places()), B's among them: the square
+// then has corners at matched vertices or in arcs with room on both borders. ERROR_BORDER_TOO_SHORT when no such
+// choice exists; `failed_arc`, if given, is then the index in `matched` of the pair that ends the first arc of A
+// found too short (0 when it ends at the start), and std::size_t(-1) on any other outcome.
 template <class Point_2, class MeshA, class VPMA, class MeshB, class VPMB>
 Error_code common_square_border_through(const Indexed_disk<MeshA>& disk_a, VPMA vpm_a, std::size_t start_a,
                                         const Indexed_disk<MeshB>& disk_b, VPMB vpm_b, std::size_t start_b,
@@ -238,28 +312,33 @@ Error_code common_square_border_through(const Indexed_disk<MeshA>& disk_a, VPMA 
 
   // A's corners
   std::vector<std::size_t> ca(1, 0);
-  for(std::size_t c = 1; c < 4; ++c)
+  std::size_t short_arc = std::size_t(-1); // the pair ending the first arc of A found too short
+  for(std::size_t c = 1; c < 4 && short_arc == std::size_t(-1); ++c)
   {
     const std::size_t kb = cb[c];
     std::size_t i = 0; // the last matched pair at or before B's corner
     while(i + 1 < nm && matched[i + 1].second <= kb) ++i;
     std::size_t ka = matched[i].first;
-    if(failed_arc != nullptr) *failed_arc = (i + 1 < nm) ? i + 1 : 0;
     if(matched[i].second != kb)
     {
       const std::size_t a0 = matched[i].first, a1 = (i + 1 < nm) ? matched[i + 1].first : na;
       const std::size_t b0 = matched[i].second, b1 = (i + 1 < nm) ? matched[i + 1].second : nb;
       const double r = (sb[b1] > sb[b0]) ? (sb[kb] - sb[b0]) / (sb[b1] - sb[b0]) : 0.5;
-      const double target = sa[a0] + r * (sa[a1] - sa[a0]);
-      std::size_t best = a0 + 1;
-      for(std::size_t k = a0 + 1; k < a1; ++k) if(std::abs(sa[k] - target) < std::abs(sa[best] - target)) best = k;
-      ka = (std::max)(best, ca.back() + 1);
-      if(ka >= a1) return ERROR_BORDER_TOO_SHORT;
+      ka = (std::max)(nearest_in(sa, sa[a0] + r * (sa[a1] - sa[a0]), a0 + 1, a1), ca.back() + 1);
     }
-    if(ka <= ca.back()) return ERROR_BORDER_TOO_SHORT;
-    ca.push_back(ka);
+    if(ka <= ca.back() || (matched[i].second != kb && ka >= ((i + 1 < nm) ? matched[i + 1].first : na)))
+      short_arc = (i + 1 < nm) ? i + 1 : 0;
+    else ca.push_back(ka);
   }
-  if(failed_arc != nullptr) *failed_arc = std::size_t(-1);
+  if(short_arc != std::size_t(-1))
+  {
+    if(!corners_at_places(sa, sb, matched, na, nb, ca, cb))
+    {
+      if(failed_arc != nullptr) *failed_arc = short_arc;
+      return ERROR_BORDER_TOO_SHORT;
+    }
+    place_on_polygon<FT>(sb, cb, square, pb);
+  }
   // the anchors of A, in border order: the matched vertices and the corners (a corner that is a matched
   // vertex once: its partner is B's corner, at the corner point exactly)
   std::vector<std::pair<std::size_t, Point_2> > anchors;

@@ -249,8 +249,9 @@ struct Cross_parameterization_statistics
   /// isometry), `energy_before` and `energy_after` are A's map's own (`check_embedding()`'s `mean_energy_3d`)
   Optimization_statistics composed;
   /// the status of that optimization: `OK` (converged, or no step lowers the energy), `ERROR_BUDGET_EXHAUSTED` (stopped
-  /// by its time or iteration budget: A's map is the last certified one), another error (A's map is kept as
-  /// `constrained_embedding()` left it). It is not run when `maximum_running_time` is already spent.
+  /// by its time or iteration budget: A's map is the last certified one; or not run at all because
+  /// `maximum_running_time` was already spent: `seconds_composed` is then 0), another error (A's map is kept as
+  /// `constrained_embedding()` left it).
   Error_code composed_status = OK;
   /// seconds spent on that optimization (part of `seconds_map_a`)
   double seconds_composed = 0;
@@ -261,8 +262,9 @@ struct Cross_parameterization_statistics
   /// what `constrained_embedding()` did for that map of B (`Constrained_embedding_statistics::optimization` is its
   /// optimization)
   Constrained_embedding_statistics map_b_matched;
-  /// the status of `constrained_embedding()` for that map (`OK` when it was not made); on another status, or when
-  /// its map is not certified (`ERROR_INVALID_EMBEDDING`), B's first map is kept
+  /// the status of `constrained_embedding()` for that map (`OK` when it was not asked for: `matched_maps` false or no
+  /// interior landmark; `ERROR_BUDGET_EXHAUSTED` also when it was not made because `maximum_running_time` was already
+  /// spent); on another status, or when its map is not certified (`ERROR_INVALID_EMBEDDING`), B's first map is kept
   Error_code matched_status = OK;
   /// `true` when that map was made and certified but its mean distortion energy (`Embedding_report::mean_energy_3d`)
   /// is more than 5% above that of B's first map, which has the same border and the same landmark positions: it went
@@ -922,7 +924,8 @@ Error_code cross_parameterization_disks(
   // each task writes only its own copy, uv map, Steiner list and statistics
   bool matched_ran = false;
   auto matched_task = [&]() {
-    if(!make_matched || !(remaining() > 0)) return;
+    if(!make_matched) return;
+    if(!(remaining() > 0)) { stats.matched_status = ERROR_BUDGET_EXHAUSTED; return; } // not made: no time left
     matched_ran = true;
     const double t0 = timer.time();
     stats.matched_status = constrained_embedding(work_b, pins, uv_wb,
@@ -1023,6 +1026,7 @@ Error_code cross_parameterization_disks(
                               (std::min)(optimization_seconds, remaining()), stats.composed);
     stats.seconds_composed = timer.time() - before_composed;
   }
+  else if(ec == OK && settings.composed_distortion) stats.composed_status = ERROR_BUDGET_EXHAUSTED; // not run: no time left
   if(ec == OK) stats.report_a = check_embedding(work, uv_a);
   stats.seconds_map_a = seconds_constrained_a + (timer.time() - after_tasks);
   if(ec != OK) { stats.failed_mesh = 0; return finish(ec); }
@@ -1530,7 +1534,8 @@ Error_code cross_parameterization_closed(
 ///                           from the end of the cut along the landmarks, which is not interrupted): each map and each
 ///                           optimization gets what is left; `ERROR_BUDGET_EXHAUSTED` when a certified map of A or
 ///                           of B cannot be made within it (an optimization cut short keeps the certified map it
-///                           has, and the steps not started are skipped: the composed distortion, B's matched map).
+///                           has, and the steps not started are skipped: the composed distortion, B's matched map,
+///                           whose statuses in the statistics are then `ERROR_BUDGET_EXHAUSTED`).
 ///                           The location and the compatible meshes, whose time is bounded by the sizes of the
 ///                           meshes and of the overlay, are not interrupted: the call may end after the budget, with
 ///                           `OK`}

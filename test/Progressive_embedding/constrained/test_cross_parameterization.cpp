@@ -997,6 +997,16 @@ int errors(const std::string& data_dir)
     CHECK(ec == PE::ERROR_WRONG_PARAMETER && st.failed_mesh == 0 && loc.empty(), "border pair not on A's border");
     std::cout << "  " << mesh_name<Mesh>() << ", border pair not on A's border: " << PE::get_error_name(ec) << std::endl;
   }
+  {
+    // no time at all: no map can be made, nothing is written
+    PE::Cross_parameterization_statistics st;
+    const std::vector<std::pair<vd, vd> > one{ { ia[0], ib[0] } };
+    const PE::Error_code ec = PE::cross_parameterization(a, b, one, boost::make_assoc_property_map(loc),
+      PE::parameters::statistics(&st, CGAL::parameters::maximum_running_time(0.)));
+    CHECK(ec == PE::ERROR_BUDGET_EXHAUSTED && loc.empty() && !st.matched_b && st.seconds_composed == 0,
+          "no time: " << PE::get_error_name(ec) << ", mesh " << st.failed_mesh);
+    std::cout << "  " << mesh_name<Mesh>() << ", no time: " << PE::get_error_name(ec) << ", mesh " << st.failed_mesh << std::endl;
+  }
   return EXIT_SUCCESS;
 }
 

@@ -1053,8 +1053,8 @@ PYBIND11_MODULE(progressive_embedding, m)
     "ERROR_LANDMARK_ORDER for border landmarks not in the same order along both borders, ERROR_CONSTRAINT_ON_BORDER for a landmark\n"
     "with one vertex on its border and the other inside, ERROR_DUPLICATE_CONSTRAINT for a\n"
     "vertex used twice, ERROR_NOT_A_DISK, ERROR_BORDER_TOO_SHORT (fewer than 4 border vertices, or border\n"
-    "landmarks that leave fewer than 4 places for the corners of the square: a border landmark, or vertices\n"
-    "inside an arc between two border landmarks on both borders), ...; the\n"
+    "landmarks that leave fewer than 3 places for the corners of the square after the first: a border\n"
+    "landmark, or vertices inside an arc between two matched border vertices on both borders), ...; the\n"
     "message names the landmark (its row) or the mesh.");
   m.def("last_timing", &py_last_timing,
     "last_timing() -> dict\n\n"

@@ -215,6 +215,9 @@ def test_border_landmarks():
         assert_result(faces, barycentric, info, len(V), F)
         assert info['border_landmarks'] == len(marks)
         assert_landmarks_exact(faces, barycentric, F, marks)
+        # no square through these landmarks keeps B's edges between border vertices (at the grid's corners) off
+        # its sides: B's first map is made on a copy with one such edge split
+        assert info['chords_split_b'] == 1 and info['vertices_added_b'] == 1
     # out of order along B's border: 5 and 35 swapped (no orientation-preserving bijection matches them)
     message = raises('ERROR_LANDMARK_ORDER', V, F, V, F, [[0, 0], [5, 35], [35, 5]])
     assert 'landmarks[' in message and 'is out of the order of the other border landmarks along B' in message

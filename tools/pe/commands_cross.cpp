@@ -162,8 +162,8 @@ int cmd_cross(const Arguments& a)
   {
     run.result.add("cut_edges_a", st.cut_edges_a);
     run.result.add("cut_edges_b", st.cut_edges_b);
-    run.result.add("chords_split_b", st.chords_split_b);
   }
+  run.result.add("chords_split_b", st.chords_split_b);
   if(ec != PE::OK)
   {
     std::string detail;

@@ -1645,10 +1645,11 @@ Error_code cross_parameterization_closed(
 ///         inside), `ERROR_DUPLICATE_CONSTRAINT` (a vertex used by two landmarks, or by a landmark and
 ///         `border_vertex_pair` with another partner) -- these four with
 ///         `Cross_parameterization_statistics::failed_landmark` --, `ERROR_BORDER_TOO_SHORT` also when the border
-///         landmarks leave fewer than four places for the corners of the square (each corner needs a vertex at the
-///         same place along both borders: a border landmark, or vertices inside an arc between two border landmarks
-///         on both borders; with `failed_landmark`: the border landmark at the end of the first arc of A found too
-///         short for the corners that B's arc holds, counterclockwise, unless that is `border_vertex_pair`), the
+///         landmarks leave fewer than three places for the corners of the square besides the first (the first border
+///         landmark, or `border_vertex_pair`; each corner needs a vertex at the same place along both borders: a
+///         border landmark, or vertices inside an arc between two matched border vertices on both borders; with
+///         `failed_landmark`: the border landmark at the end of the first arc of A found too short for the corners
+///         that B's arc holds, counterclockwise, unless that is `border_vertex_pair`), the
 ///         errors of `parameterize_certified()` on B and of `constrained_embedding()` on A, or
 ///         `ERROR_INVALID_EMBEDDING` when a certificate fails (of either map, of the location, or with `compatible_meshes` of
 ///         the triangulated overlay, for closed meshes also of the overlay joined along the cut), for closed meshes

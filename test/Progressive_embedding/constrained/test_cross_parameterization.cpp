@@ -998,7 +998,8 @@ int errors(const std::string& data_dir)
     std::cout << "  " << mesh_name<Mesh>() << ", border pair not on A's border: " << PE::get_error_name(ec) << std::endl;
   }
   {
-    // no time at all: no map can be made, nothing is written
+    // no time at all: B's first map cannot be made, nothing is written (the statuses of the steps skipped when the
+    // budget runs out later, ERROR_BUDGET_EXHAUSTED, depend on the clock: not tested here)
     PE::Cross_parameterization_statistics st;
     const std::vector<std::pair<vd, vd> > one{ { ia[0], ib[0] } };
     const PE::Error_code ec = PE::cross_parameterization(a, b, one, boost::make_assoc_property_map(loc),

@@ -12,9 +12,11 @@
 // each side is parametrized by arc length. Every border point then lies exactly on a side (one of its
 // coordinates is 0 or 1) and both border polygons are the whole square: the images of A's vertices
 // all lie in the closed domain of B's map. With border landmarks, A's border goes through their
-// partners' points (common_square_border_through()). B is mapped unchanged, so an interior edge of B
-// joining two border vertices of one side would be flat in any map: B's corners are moved off the
-// quarters where that is needed (separate_chords()).
+// partners' points (common_square_border_through()); where an arc of A between them has no vertex for
+// B's corner, all corners are chosen again among the places both borders have (corners_at_places()). B
+// is mapped unchanged, so an interior edge of B joining two border vertices of one side would be flat in
+// any map: B's corners are moved off the quarters where that is needed (separate_chords(); not after
+// corners_at_places(), whose corners the caller's map of B on a split copy then handles).
 
 #include <CGAL/Progressive_embedding/internal/length_3.h>
 #include <CGAL/Progressive_embedding/Error_code.h>

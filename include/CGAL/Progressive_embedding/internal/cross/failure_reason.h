@@ -34,7 +34,8 @@ inline std::string cross_landmark_fault(Error_code ec, bool closed, bool border_
       return "leaves too few border vertices of A between it and the border landmark before it (counterclockwise) "
              "for the corners of the square, and no other place holds them: each corner needs a vertex at the same "
              "place along both borders, a border landmark or vertices inside an arc between two border landmarks on "
-             "both, and the border landmarks leave fewer than four (move them apart, or give fewer)";
+             "both, and the border landmarks leave fewer than three besides the first corner (move them apart, or give "
+             "fewer)";
     case ERROR_LANDMARK_ORDER:
       return "is out of the order of the other border landmarks along B's border";
     case ERROR_WRONG_PARAMETER:
@@ -65,8 +66,9 @@ inline std::string cross_mesh_fault(Error_code ec, std::size_t border_landmarks,
     return "closed, and the other mesh is not (two disks or two closed genus-0 meshes)";
   if(ec == ERROR_BORDER_TOO_SHORT && border_landmarks > 0)
     return "the border landmarks leave too few border vertices: a border has fewer than four, or the border "
-           "landmarks leave fewer than four places for the corners of the square (a border landmark, or vertices "
-           "inside an arc between two border landmarks on both borders; move them apart, or give fewer)";
+           "landmarks leave fewer than three places for the corners of the square after the first (a border "
+           "landmark, or vertices inside an arc between two matched border vertices on both borders; move them apart, "
+           "or give fewer)";
   return std::string();
 }
 

@@ -218,6 +218,14 @@ def test_border_landmarks():
         # no square through these landmarks keeps B's edges between border vertices (at the grid's corners) off
         # its sides: B's first map is made on a copy with one such edge split
         assert info['chords_split_b'] == 1 and info['vertices_added_b'] == 1
+    # with border_vertex_pair as the first corner, three border landmarks are three places: A's arcs 0-1-2-3 are single
+    # edges where B's are long and the other way round, so the corners are the landmarks themselves; two are too few
+    faces, barycentric, info = pe.cross_parameterization(V, F, V, F, np.array([[1, 18], [2, 12], [3, 6]]),
+                                                         border_vertex_pair=(0, 0))
+    assert_result(faces, barycentric, info, len(V), F)
+    assert_landmarks_exact(faces, barycentric, F, [[1, 18], [2, 12], [3, 6]])
+    assert 'landmarks[0] = (1, 12): the vertex 1 of A leaves too few' in raises(
+        'ERROR_BORDER_TOO_SHORT', V, F, V, F, [[1, 12], [2, 6]], border_vertex_pair=(0, 0))
     # out of order along B's border: 5 and 35 swapped (no orientation-preserving bijection matches them)
     message = raises('ERROR_LANDMARK_ORDER', V, F, V, F, [[0, 0], [5, 35], [35, 5]])
     assert 'landmarks[' in message and 'is out of the order of the other border landmarks along B' in message

@@ -832,6 +832,7 @@ py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::objec
   info["faces_b"] = st.faces_b;
   info["vertices_added_a"] = st.vertices_added_a;
   info["closed"] = st.closed;
+  info["cut_landmarks"] = st.cut_landmarks;
   info["cut_edges_a"] = st.cut_edges_a;
   info["cut_edges_b"] = st.cut_edges_b;
   info["chords_split_b"] = st.chords_split_b;
@@ -1023,8 +1024,11 @@ PYBIND11_MODULE(progressive_embedding, m)
     "of B nearest to it in 3D (right for two meshes in one frame). Returns, per vertex of A, the row of F_b holding its image (faces, int64, (n_a,))\n"
     "and its barycentric coordinates in the order of that row's columns (barycentric, (n_a, 3) float64,\n"
     "computed exactly and rounded once: they sum to 1 up to one rounding, or to a few when B's map is on a\n"
-    "refined copy, info 'vertices_added_b' > 0; a landmark gets exactly 1 at its partner). Two closed genus-0 meshes are first cut into disks along a chain through the landmarks (at\n"
-    "least two, in their order; info 'closed', 'cut_edges_a', 'cut_edges_b', 'chords_split_b'; vertex and face counts are\n"
+    "refined copy, info 'vertices_added_b' > 0; a landmark gets exactly 1 at its partner). Two closed genus-0 meshes are first cut into disks (at\n"
+    "least two landmarks): each along its shortest edge path between the two landmarks nearest to each other on A\n"
+    "(and their partners on B), the others staying inside the cut disks (where every two landmarks are next to each other, along a chain\n"
+    "through all of them in their order); info 'closed', 'cut_landmarks', 'cut_edges_a', 'cut_edges_b',\n"
+    "'chords_split_b'; vertex and face counts are\n"
     "then those of the cut disks; border_vertex_pair does not apply to them (no border): ERROR_WRONG_PARAMETER;\n"
     "planar_maps gives the maps of the cut disks, the rows of V first, then the copies of the vertices inside\n"
     "the cut; compatible gives two closed meshes, the cut disks' overlay joined along the cut, certified closed\n"

@@ -3,7 +3,7 @@
 // Author(s) : Progressive_embedding contributors
 //
 // cross_parameterization() under the remeshed-pair protocol (internal/cross/remeshed_pair_protocol.h):
-// A a libcgal-demo disk, B its copy remeshed by CGAL's isotropic remeshing (target edge length 1.3
+// A a libcgal-demo disk or closed genus-0 mesh, B its copy remeshed by CGAL's isotropic remeshing (target edge length 1.3
 // times the mean), K landmarks (interior vertices of A spread out by farthest-point sampling, each
 // matched to the nearest interior vertex of B). Per run: vertices of A and B, vertices added to A's
 // copy, seconds (B's map, A's map, location, total), both certificates, landmarks exact, mean and max
@@ -374,7 +374,8 @@ int main(int argc, char** argv)
   {
     rows.push_back(run_naive(job[0], job[1], job[2]));
     const Row& n = rows.back();
-    std::cout << job[2] << " naive Tutte: " << n.status << ", faces flipped or degenerate " << n.bad_faces << ", unlocated "
+    if(n.status == PE::get_error_name(PE::ERROR_NOT_A_DISK)) rows.pop_back(); // a closed mesh: no Tutte map of its own
+    else std::cout << job[2] << " naive Tutte: " << n.status << ", faces flipped or degenerate " << n.bad_faces << ", unlocated "
               << n.unlocated << ", mean error " << n.mean_error << ", max " << n.max_error << ", distortion " << n.distortion
               << ", " << n.t_total << " s" << std::endl;
     for(std::size_t k : counts)
@@ -421,7 +422,7 @@ int main(int argc, char** argv)
   std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
   std::ofstream md(out + ".md");
   md << std::setprecision(3)
-     << (pairs.empty() ? "# cross_parameterization(): libcgal-demo disks against their remeshed copies\n\n"
+     << (pairs.empty() ? "# cross_parameterization(): libcgal-demo meshes against their remeshed copies\n\n"
                        : "# cross_parameterization(): pairs of meshes of one surface\n\n")
      << "Generated " << date << " by `cross_benchmark` (" << sysconf(_SC_NPROCESSORS_ONLN) << " cores). "
      << (pairs.empty() ? "A: the mesh as it is; B: its copy remeshed by CGAL's isotropic remeshing (target edge length "
@@ -444,8 +445,10 @@ int main(int argc, char** argv)
         "exact point location; vertices of A outside every positively oriented face of B (near the border: outside the "
         "polygon of B's border vertices inscribed in the circle; or where a map is not valid in floating point) are "
         "counted (unlocated) and left out of the errors, and the faces around them out of the distortion. "
-        "CGAL's Orbifold Tutte embedding does not apply: it maps closed genus-0 meshes with cones, and every pair "
-        "here is of disks. Composed: A's map optimized once more for the distortion of the composed map "
+        "Closed genus-0 meshes (with `--meshes`) are cut into disks by `cross_parameterization()` itself, between "
+        "the two landmarks nearest to each other (the others inside the cut disks); they have no naive row (Tutte's "
+        "map needs a disk), and CGAL's Orbifold Tutte embedding, which maps closed genus-0 meshes with cones, was not "
+        "run (its disks do not apply either). Composed: A's map optimized once more for the distortion of the composed map "
         "(`composed_distortion`, the default); its seconds (composed s) are part of A's map's. Matched: B's map made "
         "again by `constrained_embedding()` with B's landmarks pinned where its first map put them, as A's is "
         "(`matched_maps`, the default; with landmarks only; its seconds are part of B's map's); vertices added to "

@@ -348,10 +348,12 @@ def test_closed_surface_errors():
     # the chain 1 2 3 4 5, then 0: every edge path from 5 to 0 goes through a landmark
     message = raises('ERROR_PATH_TRACING_FAILED', V, F, V, F, [[1, 1], [2, 2], [3, 3], [4, 4], [5, 5], [0, 0]])
     assert 'landmarks[5] = (0, 0): the vertex 0 of A cannot be reached from the previous landmark' in message
-    # the same landmarks in another order make a chain
+    # the same landmarks in another order make a chain (every two landmarks are next to each other: no two make a
+    # cut of their own, so the cut runs through all of them)
     landmarks = [[1, 1], [0, 0], [2, 2], [3, 3], [4, 4], [5, 5]]
     faces, barycentric, info = pe.cross_parameterization(V, F, V, F, landmarks)
     assert info['closed'] and info['landmarks_exact'] and info['valid_a'] and info['valid_b']
+    assert info['cut_landmarks'] == 6
     assert_landmarks_exact(faces, barycentric, F, landmarks)
     # a vertex used twice, of A or of B: the later landmark named
     assert 'landmarks[2] = (1, 3): the vertex 1 of A is used by an earlier landmark' in raises(
@@ -365,11 +367,12 @@ def test_closed_surface_errors():
 
 
 def test_closed_surfaces():
-    # two closed genus-0 meshes: cut into disks along the chain through the landmarks, in their order
+    # two closed genus-0 meshes: cut into disks between the two landmarks nearest to each other, the others inside
     V, F = data_mesh('blobby.off')
     landmarks = [[0, 0], [500, 500], [1000, 1000], [1500, 1500]]
     faces, barycentric, info = pe.cross_parameterization(V, F, V, F, landmarks)
     assert info['closed'] and info['landmarks_exact']
+    assert info['landmarks'] == 4 and info['cut_landmarks'] == 2 and info['border_landmarks'] == 2
     assert_landmarks_exact(faces, barycentric, F, landmarks)
     assert np.abs(images(faces, barycentric, V, F) - V).max() < 1e-2 * np.ptp(V, axis=0).max()
     # one landmark is not a chain; a chain of one edge opens nothing

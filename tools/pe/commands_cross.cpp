@@ -120,7 +120,7 @@ int cmd_cross(const Arguments& a)
   Run run(a);
   run.summary << "cross " << a.positional[0] << " -> " << a.positional[1] << ": ";
   Input in_a, in_b;
-  // two disks, or two closed genus-0 meshes (cut along the chain of landmarks)
+  // two disks, or two closed genus-0 meshes (cut between two landmarks)
   int status = read_input(run, a.positional[0], in_a, Uv_mode::IGNORED, Shape::DISK_OR_SPHERE, "A");
   if(status != EXIT_VALID) return status;
   status = read_input(run, a.positional[1], in_b, Uv_mode::IGNORED, Shape::DISK_OR_SPHERE, "B");
@@ -160,6 +160,7 @@ int cmd_cross(const Arguments& a)
   run.result.add("closed", st.closed);
   if(st.closed)
   {
+    run.result.add("cut_landmarks", st.cut_landmarks);
     run.result.add("cut_edges_a", st.cut_edges_a);
     run.result.add("cut_edges_b", st.cut_edges_b);
   }

@@ -37,6 +37,7 @@
 #include <CGAL/Progressive_embedding/internal/cross/composed_distortion.h>
 #include <CGAL/Progressive_embedding/internal/cross/cut_border.h>
 #include <CGAL/Progressive_embedding/internal/cross/cut_closed.h>
+#include <CGAL/Progressive_embedding/internal/cross/cut_pair.h>
 #include <CGAL/Progressive_embedding/internal/cross/failure_reason.h>
 #include <CGAL/Progressive_embedding/internal/cross/locate_in_map.h>
 #include <CGAL/Progressive_embedding/internal/cross/overlay_maps.h>
@@ -160,8 +161,8 @@ struct Cross_parameterization_statistics
   /// vertices for the corners of the square that B's arc holds, when no other place holds them,
   /// `std::size_t(-1)` when that arc ends at `border_vertex_pair`;
   /// for closed meshes `ERROR_PATH_TRACING_FAILED`: the landmark the
-  /// chain of cuts cannot reach from the one before, and `ERROR_NOT_A_DISK`: the second of two landmarks joined by an
-  /// edge): its position in the `landmarks` range; `std::size_t(-1)` otherwise
+  /// cut cannot reach from the one before it on the cut, and `ERROR_NOT_A_DISK`: the second of two landmarks joined by
+  /// an edge): its position in the `landmarks` range; `std::size_t(-1)` otherwise
   std::size_t failed_landmark = std::size_t(-1);
   /// the mesh an error is about: 0 for A, 1 for B, -1 for none (a mesh that is not a disk or has fewer than four
   /// border vertices, a landmark vertex, a border vertex of `border_vertex_pair`, a map that failed)
@@ -213,9 +214,13 @@ struct Cross_parameterization_statistics
   std::size_t compatible_faces = 0;
   /// with `compatible_meshes`: seconds spent on the overlay, its certificate and the two meshes
   double seconds_compatible = 0;
-  /// whether both meshes were closed (genus 0) and cut into disks along the chain of landmarks; the counts and
-  /// certificates above are then those of the cut disks
+  /// whether both meshes were closed (genus 0) and cut into disks along a chain of landmarks; the counts and
+  /// certificates above are then those of the cut disks (`landmarks` is then the number of landmark pairs given)
   bool closed = false;
+  /// closed meshes: landmarks on the cut, the chain's two ends and the landmarks between them (2 unless no two
+  /// landmarks could be joined without the others, see `cross_parameterization()`); the other landmarks are inside
+  /// the cut disks
+  std::size_t cut_landmarks = 0;
   /// closed meshes: edges of A on the cut (each becomes two border edges of the cut disk)
   std::size_t cut_edges_a = 0;
   /// closed meshes: edges of B on the cut
@@ -686,7 +691,7 @@ Error_code cross_parameterization_disks(
   // an empty mesh is neither closed nor a disk: said so before the two kinds are compared
   if(faces(tm_a).empty()) { stats.failed_mesh = 0; return finish(ERROR_EMPTY_MESH); }
   if(faces(tm_b).empty()) { stats.failed_mesh = 1; return finish(ERROR_EMPTY_MESH); }
-  // two closed surfaces: cut into disks along the chain of landmarks
+  // two closed surfaces: cut into disks between two landmarks (or along the chain of all)
   const bool closed_a = internal::is_closed_mesh(tm_a), closed_b = internal::is_closed_mesh(tm_b);
   if(closed_a && closed_b) return internal::cross_parameterization_closed<ConcurrencyTag>(tm_a, tm_b, landmarks, settings, output);
   if(closed_a || closed_b) { stats.failed_mesh = closed_a ? 0 : 1; return finish(ERROR_NOT_A_DISK); }
@@ -1199,8 +1204,10 @@ Cross_location<TriangleMesh> location_on_closed_mesh(const TriangleMesh& tm, con
   return Cross_location<TriangleMesh>(f, w);
 }
 
-// two closed genus-0 meshes: both cut along the chain of landmarks (cut_closed.h), the cut disks mapped with
-// every landmark copy a border landmark, the locations brought back to the vertices and faces of the meshes
+// two closed genus-0 meshes: both cut between the two landmarks nearest to each other (cut_pair.h), or along the
+// chain of all landmarks where no two qualify (cut_closed.h), the cut disks mapped with every landmark copy on the
+// cut a border landmark and the other landmarks inside, the locations brought back to the vertices and faces of the
+// meshes
 template <class ConcurrencyTag, class TriangleMeshA, class TriangleMeshB>
 Error_code cross_parameterization_closed(
   const TriangleMeshA& tm_a, const TriangleMeshB& tm_b,
@@ -1247,13 +1254,35 @@ Error_code cross_parameterization_closed(
     stats.landmarks = chain_a.size();
     if(chain_a.size() < 2) return ERROR_WRONG_PARAMETER; // a cut needs two landmarks
   }
+  // With three landmarks or more, the cut joins the two nearest to each other on A (cut_pair.h) and the others stay
+  // inside the cut disks; where no two qualify, the chain goes through all of them in their order. `chain_landmark`:
+  // the position in `landmarks` of each chain vertex; `inside_landmark`: of each landmark left inside.
+  std::vector<std::size_t> chain_landmark, inside_landmark;
+  for(std::size_t k = 0; k < chain_a.size(); ++k) chain_landmark.push_back(k);
+  std::vector<vertex_a> inside_a;
+  std::vector<vertex_b> inside_b;
+  std::size_t first = 0, second = 1;
+  if(chain_a.size() > 2 && nearest_landmark_pair(tm_a, get(CGAL::vertex_point, tm_a), chain_a, first, second))
+  {
+    for(std::size_t k = 0; k < chain_a.size(); ++k)
+      if(k != first && k != second)
+      {
+        inside_a.push_back(chain_a[k]);
+        inside_b.push_back(chain_b[k]);
+        inside_landmark.push_back(k);
+      }
+    chain_a = { chain_a[first], chain_a[second] };
+    chain_b = { chain_b[first], chain_b[second] };
+    chain_landmark = { first, second };
+  }
   Cut_disk<TriangleMeshA> cut_a;
   Cut_disk<TriangleMeshB> cut_b;
   std::size_t failed = std::size_t(-1);
-  Error_code ec = cut_along_chain(tm_a, get(CGAL::vertex_point, tm_a), chain_a, cut_a, failed);
-  if(ec != OK) { stats.failed_mesh = 0; stats.failed_landmark = failed; return ec; }
-  ec = cut_along_chain(tm_b, get(CGAL::vertex_point, tm_b), chain_b, cut_b, failed);
-  if(ec != OK) { stats.failed_mesh = 1; stats.failed_landmark = failed; return ec; }
+  auto failed_landmark = [&](std::size_t position) { return position < chain_landmark.size() ? chain_landmark[position] : position; };
+  Error_code ec = cut_along_chain(tm_a, get(CGAL::vertex_point, tm_a), chain_a, cut_a, failed, inside_a);
+  if(ec != OK) { stats.failed_mesh = 0; stats.failed_landmark = failed_landmark(failed); return ec; }
+  ec = cut_along_chain(tm_b, get(CGAL::vertex_point, tm_b), chain_b, cut_b, failed, inside_b);
+  if(ec != OK) { stats.failed_mesh = 1; stats.failed_landmark = failed_landmark(failed); return ec; }
   Disk_a disk_a;
   {
     std::vector<Point_a> pa;
@@ -1293,12 +1322,19 @@ Error_code cross_parameterization_closed(
   {
     const std::size_t ia = index_a.at(chain_a[k]), ib = index_b.at(chain_b[k]);
     pairs.emplace_back(dva(ia), dvb(ib));
-    pair_landmark.push_back(k);
+    pair_landmark.push_back(chain_landmark[k]);
     if(cut_a.copy[ia] != std::size_t(-1) && cut_b.copy[ib] != std::size_t(-1))
     {
       pairs.emplace_back(dva(cut_a.copy[ia]), dvb(cut_b.copy[ib]));
-      pair_landmark.push_back(k);
+      pair_landmark.push_back(chain_landmark[k]);
     }
+  }
+  // the landmarks inside the cut disks (a vertex off the cut keeps its index there)
+  const std::size_t border_pair_count = pairs.size();
+  for(std::size_t k = 0; k < inside_a.size(); ++k)
+  {
+    pairs.emplace_back(dva(index_a.at(inside_a[k])), dvb(index_b.at(inside_b[k])));
+    pair_landmark.push_back(inside_landmark[k]);
   }
   std::vector<Cross_location<Disk_b> > located(disk_a.number_of_vertices());
   std::vector<Cross_location<Disk_a> > located_b; // B's cut disk's vertices on A's, with b_to_a_locations
@@ -1311,7 +1347,7 @@ Error_code cross_parameterization_closed(
   Cut_request request;
   request.compatible = compatible;
   std::vector<std::pair<std::size_t, std::size_t> > pair_indices;
-  for(const auto& p : pairs) pair_indices.emplace_back(std::size_t(p.first), std::size_t(p.second));
+  for(std::size_t k = 0; k < border_pair_count; ++k) pair_indices.emplace_back(std::size_t(pairs[k].first), std::size_t(pairs[k].second));
   auto place_borders = [&]() {
     Indexed_disk<Disk_a> indexed_a;
     Indexed_disk<Disk_b> indexed_b;
@@ -1332,7 +1368,9 @@ Error_code cross_parameterization_closed(
     disk_settings.cut = &request;
     disk_settings.statistics = &inner;
     disk_settings.composed_distortion = settings.composed_distortion;
-    disk_settings.matched_maps = settings.matched_maps;
+    // B's map stays the one made first: a matched map may refine B's cut disk, whose overlay could then not be joined
+    // along the cut
+    disk_settings.matched_maps = false;
     disk_settings.optimization_seconds = settings.optimization_seconds;
     disk_settings.max_seconds = (std::max)(0., max_seconds - timer.time());
     disk_settings.b_to_a = backwards;
@@ -1371,7 +1409,8 @@ Error_code cross_parameterization_closed(
   const std::size_t inner_failed = inner.failed_landmark;
   stats = inner;
   stats.closed = true;
-  stats.landmarks = chain_a.size();
+  stats.landmarks = landmarks.size();
+  stats.cut_landmarks = chain_a.size();
   stats.cut_edges_a = cut_a.path_edges;
   stats.cut_edges_b = cut_b.path_edges;
   stats.chords_split_b = chords_b;
@@ -1490,10 +1529,16 @@ Error_code cross_parameterization_closed(
 /// one face of B: these coordinates are sums of products in double, rounded once more. A landmark of A gets the
 /// coordinate 1 exactly at its partner.
 ///
-/// Two closed genus-0 meshes (no border) are first cut into disks along a chain through the landmarks, in their
-/// order: the shortest edge path from each landmark to the next, avoiding the earlier paths and the other landmarks;
-/// every landmark copy on the cut is a border landmark, and both borders are placed on the square so that the two
-/// sides of every arc of the cut are placed alike (see the user manual, section Closed Surfaces). They need at
+/// Two closed genus-0 meshes (no border) are first cut into disks. With three landmarks or more, each mesh is cut
+/// along its shortest edge path (3D edge lengths, avoiding the other landmarks) between the two landmarks nearest to
+/// each other on A (the shortest edge path of A through no other landmark with a vertex inside; ties to the earlier
+/// landmarks; among the pairs whose regions of nearest vertices meet, see the user manual), and the other landmarks
+/// stay inside the cut disks, pinned as on two disks; with two landmarks, or
+/// where every two landmarks are next to each other, the cut is the chain through all landmarks in their order: the
+/// shortest edge path from each landmark to the next, avoiding the earlier paths and the other landmarks
+/// (`Cross_parameterization_statistics::cut_landmarks`). Every landmark copy on the cut is a border landmark, and both
+/// borders are placed on the square so that the two sides of every arc of the cut are placed alike (see the user
+/// manual, section Closed Surfaces). B's map is its first map (`matched_maps` does not apply). They need at
 /// least two landmarks; `border_vertex_pair` does not apply to them (they have no border: `ERROR_WRONG_PARAMETER`);
 /// `planar_maps` receives the maps of the cut disks, `compatible_meshes` the overlay of the cut disks' maps
 /// joined along the cut into two closed meshes, and `b_to_a_locations` the locations of B's vertices on A's faces
@@ -1557,8 +1602,9 @@ Error_code cross_parameterization_closed(
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{matched_maps}
 ///     \cgalParamDescription{whether B's map is made again by `constrained_embedding()` with B's landmarks pinned, as
-///                           A's is (see above), when there are interior landmarks (so never for closed surfaces,
-///                           whose landmarks are all on the cut); its optimization has at most
+///                           A's is (see above), when there are interior landmarks (never for closed surfaces:
+///                           a matched map may refine B's cut disk, whose overlay could then not be joined along
+///                           the cut); its optimization has at most
 ///                           `optimization_time_limit` seconds, and it gets what A's map leaves of
 ///                           `maximum_running_time`}
 ///     \cgalParamType{`bool`}

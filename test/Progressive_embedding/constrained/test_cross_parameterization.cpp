@@ -20,6 +20,7 @@
 #include "../../fuzz/cross_parameterization.h"
 
 #include <CGAL/Polygon_mesh_processing/remesh.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -654,10 +655,11 @@ int eared_disks()
   return EXIT_SUCCESS;
 }
 
-// Closed genus-0 surfaces: both cut along the chain of landmarks into disks. blobby against itself (every
-// landmark exactly on its partner, the map the identity up to rounding; the compatible meshes closed, of one
-// connectivity) and against its remeshed copy (the error bound of the disks); a genus-3 surface, a closed surface
-// against a disk and a single landmark are refused, and the join along the cut refuses what is not closed.
+// Closed genus-0 surfaces: both cut into disks between the two landmarks nearest to each other, the others inside.
+// blobby against itself (every landmark exactly on its partner, the map the identity up to the optimizer's
+// tolerance; the compatible meshes closed, of one connectivity) and against its remeshed copy (the error bound of
+// the disks); a genus-3 surface, a closed surface against a disk and a single landmark are refused, and the join
+// along the cut refuses what is not closed.
 template <class Mesh>
 int closed_surfaces(const std::string& data_dir)
 {
@@ -674,12 +676,23 @@ int closed_surfaces(const std::string& data_dir)
   PE::Cross_parameterization_statistics st;
   PE::Error_code ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(loc), PE::parameters::statistics(&st));
   CHECK(ec == PE::OK, PE::get_error_message(ec) << " (failed mesh " << st.failed_mesh << ")");
-  CHECK(st.closed && st.cut_edges_a > 0 && st.cut_edges_a == st.cut_edges_b, "cut along the same chain");
+  CHECK(st.closed && st.cut_edges_a > 0 && st.cut_edges_a == st.cut_edges_b, "cut along the same path");
+  // the two landmarks nearest to each other on A (along its edges) on the cut, the four others inside
+  {
+    std::size_t first = 0, second = 0;
+    std::vector<vd> la;
+    for(const auto& l : landmarks) la.push_back(l.first);
+    CHECK(PE::internal::nearest_landmark_pair(a, get(CGAL::vertex_point, a), la, first, second) && first < second,
+          "a pair of landmarks to cut between");
+    CHECK(st.landmarks == 6 && st.cut_landmarks == 2 && st.border_landmarks == 2,
+          "cut between two landmarks: " << st.cut_landmarks << " on the cut, " << st.border_landmarks << " border landmarks");
+  }
   CHECK(st.report_a.is_valid() && st.report_b.is_valid() && st.landmarks_exact, "certified, landmarks exact");
   CHECK(loc.size() == va.size(), "every vertex located");
   for(const auto& l : landmarks) CHECK(weight_of(b, loc.at(l.first), l.second) == 1., "landmark exactly on its partner");
   const auto error = PE::internal::correspondence_error(a, b, boost::make_assoc_property_map(loc));
-  // the same cut and the same border on both (the corners avoid flat chords, so B's disk is not split): the identity
+  // the same cut and the same border on both (the corners avoid flat chords, so B's disk is not split), the four
+  // landmarks inside pinned where B's map puts them: the identity (A's map optimized to the optimizer's tolerance)
   CHECK(st.chords_split_b == 0 && error.second < 1e-9, "the identity: mean error " << error.first << ", max " << error.second);
   std::cout << "closed " << file << " (" << mesh_name<Mesh>() << ") against itself, 6 landmarks: cut along "
             << st.cut_edges_a << " edges, both disks certified, landmarks exact, mean error " << error.first
@@ -859,6 +872,53 @@ int closed_surfaces(const std::string& data_dir)
   std::cout << "closed surfaces refused: genus 3 (ERROR_NOT_GENUS_ZERO), closed against a disk (ERROR_NOT_A_DISK), "
             << "one landmark (ERROR_WRONG_PARAMETER), two landmarks joined by an edge (ERROR_NOT_A_DISK, the second named), "
             << "a NaN point in B (ERROR_NON_FINITE_COORDINATES)" << std::endl;
+  return EXIT_SUCCESS;
+}
+
+// Where a closed surface is cut (internal/cross/cut_pair.h): on the octahedron (poles 0 and 5, equator 1 2 3 4), the
+// two landmarks nearest along edges with a vertex between them that is no landmark; landmarks joined by an edge
+// never qualify, and when every two are, or all vertices are landmarks, there is no pair (the chain through all is
+// then the cut). With the six vertices as landmarks the call cuts along the chain and certifies the map.
+template <class Mesh>
+int cut_between_nearest_landmarks()
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vd;
+  const std::vector<Epick::Point_3> points = { { 0, 0, 1 }, { 1, 0, 0 }, { 0, 1, 0 }, { -1, 0, 0 }, { 0, -1, 0 }, { 0, 0, -1 } };
+  const std::vector<std::array<std::size_t, 3> > triangles = { {{ 0, 1, 2 }}, {{ 0, 2, 3 }}, {{ 0, 3, 4 }}, {{ 0, 4, 1 }},
+                                                              {{ 5, 2, 1 }}, {{ 5, 3, 2 }}, {{ 5, 4, 3 }}, {{ 5, 1, 4 }} };
+  Mesh m;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, m);
+  std::vector<vd> v(vertices(m).begin(), vertices(m).end());
+  auto pair_of = [&](const std::vector<std::size_t>& chosen, std::size_t& first, std::size_t& second) {
+    std::vector<vd> l;
+    for(std::size_t i : chosen) l.push_back(v[i]);
+    return PE::internal::nearest_landmark_pair(m, get(CGAL::vertex_point, m), l, first, second);
+  };
+  std::size_t first = 7, second = 7;
+  // the poles: two edges apart through the equator
+  CHECK(pair_of({ 0, 5 }, first, second) && first == 0 && second == 1, "the poles: " << first << ", " << second);
+  // 1, 2, 3: 1 and 3 are not joined by an edge (through a pole); 1-2 and 2-3 are
+  CHECK(pair_of({ 1, 2, 3 }, first, second) && first == 0 && second == 2, "1, 2, 3: " << first << ", " << second);
+  // 2, 0, 4, 5: 2-4 (positions 0 and 2, through 1 or 3) and the poles are the pairs not joined by an edge, both two
+  // edges long: the earlier positions
+  CHECK(pair_of({ 2, 0, 4, 5 }, first, second) && first == 0 && second == 2, "2, 0, 4, 5: " << first << ", " << second);
+  // every vertex a landmark, and a single landmark: no pair
+  CHECK(!pair_of({ 0, 1, 2, 3, 4, 5 }, first, second), "all six: no pair");
+  CHECK(!pair_of({ 3 }, first, second), "one landmark: no pair");
+  // the call with all six: the chain through them, in their order (1 0 2 3 4 5 makes one)
+  Mesh b;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, b);
+  std::vector<vd> w(vertices(b).begin(), vertices(b).end());
+  std::vector<std::pair<vd, vd> > landmarks;
+  for(std::size_t i : { 1, 0, 2, 3, 4, 5 }) landmarks.emplace_back(v[i], w[i]);
+  Location_map<Mesh> loc;
+  PE::Cross_parameterization_statistics st;
+  const PE::Error_code ec = PE::cross_parameterization(m, b, landmarks, boost::make_assoc_property_map(loc), PE::parameters::statistics(&st));
+  CHECK(ec == PE::OK && st.closed && st.cut_landmarks == 6 && st.landmarks == 6 && st.landmarks_exact &&
+        st.report_a.is_valid() && st.report_b.is_valid(), "the octahedron's chain: " << PE::get_error_name(ec) << ", "
+        << st.cut_landmarks << " landmarks on the cut");
+  std::cout << "cut between the nearest landmarks (" << mesh_name<Mesh>() << "): the octahedron's poles, 1 2 3, 2 0 4 5 "
+            << "as expected; all six or one: no pair; all six in the call: the chain through them, certified" << std::endl;
   return EXIT_SUCCESS;
 }
 
@@ -1378,6 +1438,8 @@ PE_TEST_GROUP(cross_closed)
 {
   RUN(closed_surfaces<Surface_mesh>(data_dir));
   RUN(closed_surfaces<Polyhedron>(data_dir));
+  RUN(cut_between_nearest_landmarks<Surface_mesh>());
+  RUN(cut_between_nearest_landmarks<Polyhedron>());
   return EXIT_SUCCESS;
 }
 

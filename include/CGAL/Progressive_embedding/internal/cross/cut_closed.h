@@ -61,7 +61,8 @@ bool is_closed_mesh(const TriangleMesh& tm)
   return !faces(tm).empty();
 }
 
-// `chain`: mesh vertices (distinct). On success `cut` is a disk (for a connected genus-0 mesh). Returns
+// `chain`: mesh vertices (distinct); `avoid`: other vertices no path may go through (the landmarks that stay inside
+// the cut disk). On success `cut` is a disk (for a connected genus-0 mesh). Returns
 // ERROR_NON_TRIANGULAR_MESH, ERROR_NOT_GENUS_ZERO (not connected, or Euler characteristic not 2),
 // ERROR_PATH_TRACING_FAILED with `failed` the chain position whose path from the previous one was not
 // found (the earlier paths and the other landmarks closed every way), or ERROR_NOT_A_DISK with `failed` 1 when
@@ -70,7 +71,8 @@ bool is_closed_mesh(const TriangleMesh& tm)
 template <class TriangleMesh, class VPM>
 Error_code cut_along_chain(const TriangleMesh& tm, VPM vpm,
                            const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& chain,
-                           Cut_disk<TriangleMesh>& cut, std::size_t& failed)
+                           Cut_disk<TriangleMesh>& cut, std::size_t& failed,
+                           const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& avoid = {})
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
@@ -106,6 +108,7 @@ Error_code cut_along_chain(const TriangleMesh& tm, VPM vpm,
   // the chain: shortest paths (3D edge lengths), disjoint
   std::vector<char> blocked(n, 0);
   for(vertex_descriptor l : chain) blocked[index.at(l)] = 1;
+  for(vertex_descriptor l : avoid) blocked[index.at(l)] = 1;
   std::vector<std::size_t> path(1, index.at(chain.front()));
   for(std::size_t i = 0; i + 1 < chain.size(); ++i)
   {

@@ -800,7 +800,7 @@ py::tuple py_cross(const py::object& V_a, const py::object& F_a, const py::objec
         if(!why.empty()) context += ": " + why;
       }
       else if(st.closed && ec == PE::ERROR_WRONG_PARAMETER)
-        context += ": closed meshes need at least two landmarks (the cut runs through them in their order), and "
+        context += ": closed meshes need at least two landmarks (the cut runs between two of them), and "
                    "border_vertex_pair does not apply to them (no border)";
       throw Pe_failure(ec, context);
     }
@@ -1025,9 +1025,10 @@ PYBIND11_MODULE(progressive_embedding, m)
     "and its barycentric coordinates in the order of that row's columns (barycentric, (n_a, 3) float64,\n"
     "computed exactly and rounded once: they sum to 1 up to one rounding, or to a few when B's map is on a\n"
     "refined copy, info 'vertices_added_b' > 0; a landmark gets exactly 1 at its partner). Two closed genus-0 meshes are first cut into disks (at\n"
-    "least two landmarks): each along its shortest edge path between the two landmarks nearest to each other on A\n"
-    "(and their partners on B), the others staying inside the cut disks (where every two landmarks are next to each other, along a chain\n"
-    "through all of them in their order); info 'closed', 'cut_landmarks', 'cut_edges_a', 'cut_edges_b',\n"
+    "least two landmarks): each along its shortest edge path between two landmarks near each other on A (the\n"
+    "nearest pair that both meshes can join; their partners on B), the others staying inside the cut disks (where\n"
+    "no pair does, e.g. every vertex a landmark, along a chain through all of them in their order); B's map is\n"
+    "then its first map (matched does not apply); info 'closed', 'cut_landmarks', 'cut_edges_a', 'cut_edges_b',\n"
     "'chords_split_b'; vertex and face counts are\n"
     "then those of the cut disks; border_vertex_pair does not apply to them (no border): ERROR_WRONG_PARAMETER;\n"
     "planar_maps gives the maps of the cut disks, the rows of V first, then the copies of the vertices inside\n"

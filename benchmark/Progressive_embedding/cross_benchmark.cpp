@@ -78,6 +78,7 @@ struct Row
   std::size_t unlocated = 0;        // naive: vertices of A outside every positively oriented face of B's map
   std::size_t bad_faces = 0;        // naive: flipped or degenerate faces of the two Tutte maps
   bool composed = true, matched = true, matched_b = false, parallel = false;
+  bool closed = false; // two closed meshes, cut into disks (B's map is then its first map: matched does not apply)
   std::size_t added_b = 0;
   std::size_t count = 0, landmarks = 0, va = 0, vb = 0, added = 0, vc = 0;
   std::string status;
@@ -293,6 +294,7 @@ Row run(const std::string& file_a, const std::string& file_b, const std::string&
   r.vb = st.vertices_b;
   r.added = st.vertices_added_a;
   r.matched_b = st.matched_b;
+  r.closed = st.closed;
   r.added_b = st.vertices_added_b;
   r.valid_a = st.report_a.is_valid();
   r.valid_b = st.report_b.is_valid();
@@ -396,7 +398,7 @@ int main(int argc, char** argv)
   csv << "mesh,method,landmarks_requested,landmarks,matched_maps,matched_b,vertices_added_b,composed_distortion,vertices_a,vertices_b,vertices_added_a,status,valid_a,valid_b,"
          "landmarks_exact,mean_error,max_error,mean_error_landmarks,mean_error_border,mean_error_inside,seconds_map_b,seconds_map_a,seconds_composed,seconds_location,"
          "compatible_vertices,compatible_certified,seconds_compatible,seconds_total,peak_rss_mb,"
-         "distortion,degenerate_images,unlocated,faces_flipped_or_degenerate,parallel\n";
+         "distortion,degenerate_images,unlocated,faces_flipped_or_degenerate,parallel,closed\n";
   csv << std::setprecision(6);
   for(const Row& r : rows)
   {
@@ -412,7 +414,7 @@ int main(int argc, char** argv)
     csv << ','
         << r.t_b << ',' << r.t_a << ',' << r.t_composed << ',' << r.t_location << ',' << r.vc << ',' << r.valid_c << ','
         << r.t_compatible << ',' << r.t_total << ',' << r.peak_mb << ',' << r.distortion << ',' << r.degenerate_images << ','
-        << r.unlocated << ',' << r.bad_faces << ',' << r.parallel << '\n';
+        << r.unlocated << ',' << r.bad_faces << ',' << r.parallel << ',' << r.closed << '\n';
   }
 
   char host[256] = {0};
@@ -446,13 +448,14 @@ int main(int argc, char** argv)
         "polygon of B's border vertices inscribed in the circle; or where a map is not valid in floating point) are "
         "counted (unlocated) and left out of the errors, and the faces around them out of the distortion. "
         "Closed genus-0 meshes (with `--meshes`) are cut into disks by `cross_parameterization()` itself, between "
-        "the two landmarks nearest to each other (the others inside the cut disks); they have no naive row (Tutte's "
+        "two landmarks near each other (the others inside the cut disks; their vertex counts are those of the "
+        "cut disks, a vertex inside the cut counted twice); they have no naive row (Tutte's "
         "map needs a disk), and CGAL's Orbifold Tutte embedding, which maps closed genus-0 meshes with cones, was not "
         "run (its disks do not apply either). Composed: A's map optimized once more for the distortion of the composed map "
         "(`composed_distortion`, the default); its seconds (composed s) are part of A's map's. Matched: B's map made "
         "again by `constrained_embedding()` with B's landmarks pinned where its first map put them, as A's is "
         "(`matched_maps`, the default; with landmarks only; its seconds are part of B's map's); vertices added to "
-        "B: Steiner vertices left in B's copy (B's map is then on that refined copy). Parallel: "
+        "B: Steiner vertices left in B's copy (B's map is then on that refined copy); - for closed meshes. Parallel: "
         "`cross_parameterization<CGAL::Parallel_tag>()`, B's matched map and A's map made at the same time, or "
         "`<CGAL::Sequential_tag>()`, one after the other (as `pe cross` and the Python binding do): the same maps, only "
         "the seconds and the memory differ (with Parallel_tag, B's map s and A's map s overlap). "
@@ -467,7 +470,7 @@ int main(int argc, char** argv)
      << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for(const Row& r : rows)
   {
-    md << "| " << r.mesh << " | " << r.method << " | " << r.landmarks << " | " << (r.matched_b ? "yes" : r.matched && r.landmarks > 0 ? "failed" : "no")
+    md << "| " << r.mesh << " | " << r.method << " | " << r.landmarks << " | " << (r.matched_b ? "yes" : r.closed ? "-" : r.matched && r.landmarks > 0 ? "failed" : "no")
        << " | " << r.added_b << " | " << (r.composed ? "yes" : "no") << " | "
        << (r.method != "cross" ? "-" : r.parallel ? "yes" : "no") << " | " << r.va << " | " << r.vb << " | " << r.status << " | "
        << (r.valid_a && r.valid_b ? "yes" : "no") << " | " << (r.exact ? "yes" : "no") << " | " << r.added << " | "

@@ -367,7 +367,7 @@ def test_closed_surface_errors():
 
 
 def test_closed_surfaces():
-    # two closed genus-0 meshes: cut into disks between the two landmarks nearest to each other, the others inside
+    # two closed genus-0 meshes: cut into disks between two landmarks near each other, the others inside
     V, F = data_mesh('blobby.off')
     landmarks = [[0, 0], [500, 500], [1000, 1000], [1500, 1500]]
     faces, barycentric, info = pe.cross_parameterization(V, F, V, F, landmarks)

@@ -189,7 +189,7 @@ int cmd_cross(const Arguments& a)
       detail = std::string(st.failed_mesh == 0 ? "A" : "B") + ": " + (why.empty() ? std::string(PE::get_error_message(ec)) : why);
     }
     else if(too_few)
-      detail = "'" + a.positional[2] + "': closed meshes need at least two landmarks (the cut runs through them in file order)";
+      detail = "'" + a.positional[2] + "': closed meshes need at least two landmarks (the cut runs between two of them)";
     return run.fail(ec, "cross-parameterization of '" + in_a.filename + "' and '" + in_b.filename + "' failed", detail,
                     landmark_fault || too_few ? EXIT_INPUT : -1);
   }

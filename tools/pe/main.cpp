@@ -204,8 +204,9 @@ const std::vector<Command_spec>& command_table()
       "locally injective, border only, optimized as an immersion; JSON \"immersion\": true)", cmd_constrain },
     { "cross", "A B LANDMARKS OUT.txt", 4, 4, 3, { "--compatible", "--svg", "--no-composed", "--no-matched", "--time-limit" },
       "the location on the disk B of every vertex of the disk A through a certified cross-parameterization\n"
-      "(two closed genus-0 meshes are first cut into disks between the two landmarks nearest to each other on A,\n"
-      "the others inside, JSON cut_landmarks; where every two are next to each other, through all in file order):\n"
+      "(two closed genus-0 meshes are first cut into disks between two landmarks near each other on A, the\n"
+      "others inside, JSON cut_landmarks; where no pair cuts both meshes, along the chain through all in file\n"
+      "order; B's map is then its first map, --no-matched is implied):\n"
       "both borders on the unit square by relative arc length (through the border landmarks), B mapped\n"
       "first, then again with its landmarks pinned where that map put them (unless --no-matched; kept only\n"
       "if at most 5% above the first map's distortion energy, JSON matched_b, matched_more_distorted), A mapped\n"

@@ -217,9 +217,8 @@ struct Cross_parameterization_statistics
   /// whether both meshes were closed (genus 0) and cut into disks along a chain of landmarks; the counts and
   /// certificates above are then those of the cut disks (`landmarks` is then the number of landmark pairs given)
   bool closed = false;
-  /// closed meshes: landmarks on the cut, the chain's two ends and the landmarks between them (2 unless no two
-  /// landmarks could be joined without the others, see `cross_parameterization()`); the other landmarks are inside
-  /// the cut disks
+  /// closed meshes: landmarks on the cut, its two ends and the landmarks between them (2 unless no pair of
+  /// landmarks cuts both meshes, see `cross_parameterization()`); the other landmarks are inside the cut disks
   std::size_t cut_landmarks = 0;
   /// closed meshes: edges of A on the cut (each becomes two border edges of the cut disk)
   std::size_t cut_edges_a = 0;
@@ -1101,7 +1100,7 @@ Error_code cross_parameterization_disks(
   if(compatible)
   {
     const double before_overlay = timer.time();
-    // the cut disks have no interior landmark, so B's map is never on a refined copy and its vertices are the disk's
+    // B's map of cut disks is its first map (matched maps off), so never on a refined copy: its vertices are the disk's
     std::vector<std::array<std::size_t, 2> >* origins = request && request->compatible ? &request->origins : nullptr;
     if(origins != nullptr && refined_b) return finish(ERROR_WRONG_PARAMETER);
     std::vector<wvertex> disk_a_in_work;
@@ -1204,8 +1203,8 @@ Cross_location<TriangleMesh> location_on_closed_mesh(const TriangleMesh& tm, con
   return Cross_location<TriangleMesh>(f, w);
 }
 
-// two closed genus-0 meshes: both cut between the two landmarks nearest to each other (cut_pair.h), or along the
-// chain of all landmarks where no two qualify (cut_closed.h), the cut disks mapped with every landmark copy on the
+// two closed genus-0 meshes: both cut between two landmarks near each other (cut_pair.h), or along the chain of all
+// landmarks where no pair cuts both (cut_closed.h), the cut disks mapped with every landmark copy on the
 // cut a border landmark and the other landmarks inside, the locations brought back to the vertices and faces of the
 // meshes
 template <class ConcurrencyTag, class TriangleMeshA, class TriangleMeshB>
@@ -1254,35 +1253,54 @@ Error_code cross_parameterization_closed(
     stats.landmarks = chain_a.size();
     if(chain_a.size() < 2) return ERROR_WRONG_PARAMETER; // a cut needs two landmarks
   }
-  // With three landmarks or more, the cut joins the two nearest to each other on A (cut_pair.h) and the others stay
-  // inside the cut disks; where no two qualify, the chain goes through all of them in their order. `chain_landmark`:
-  // the position in `landmarks` of each chain vertex; `inside_landmark`: of each landmark left inside.
+  // With three landmarks or more, the cut joins two landmarks near each other (cut_pair.h: the candidate pairs of A,
+  // nearest first; a pair is taken when both meshes cut between it, each avoiding the other landmarks and the edge
+  // joining the two, at most `tries` pairs tried) and the others stay inside the cut disks; where no pair cuts both,
+  // the chain goes through all of them in their order. `chain_landmark`: the position in `landmarks` of each chain
+  // vertex; `inside_landmark`: of each landmark left inside.
   std::vector<std::size_t> chain_landmark, inside_landmark;
   for(std::size_t k = 0; k < chain_a.size(); ++k) chain_landmark.push_back(k);
   std::vector<vertex_a> inside_a;
   std::vector<vertex_b> inside_b;
-  std::size_t first = 0, second = 1;
-  if(chain_a.size() > 2 && nearest_landmark_pair(tm_a, get(CGAL::vertex_point, tm_a), chain_a, first, second))
-  {
-    for(std::size_t k = 0; k < chain_a.size(); ++k)
-      if(k != first && k != second)
-      {
-        inside_a.push_back(chain_a[k]);
-        inside_b.push_back(chain_b[k]);
-        inside_landmark.push_back(k);
-      }
-    chain_a = { chain_a[first], chain_a[second] };
-    chain_b = { chain_b[first], chain_b[second] };
-    chain_landmark = { first, second };
-  }
   Cut_disk<TriangleMeshA> cut_a;
   Cut_disk<TriangleMeshB> cut_b;
   std::size_t failed = std::size_t(-1);
-  auto failed_landmark = [&](std::size_t position) { return position < chain_landmark.size() ? chain_landmark[position] : position; };
-  Error_code ec = cut_along_chain(tm_a, get(CGAL::vertex_point, tm_a), chain_a, cut_a, failed, inside_a);
-  if(ec != OK) { stats.failed_mesh = 0; stats.failed_landmark = failed_landmark(failed); return ec; }
-  ec = cut_along_chain(tm_b, get(CGAL::vertex_point, tm_b), chain_b, cut_b, failed, inside_b);
-  if(ec != OK) { stats.failed_mesh = 1; stats.failed_landmark = failed_landmark(failed); return ec; }
+  bool cut_done = false;
+  if(chain_a.size() > 2)
+  {
+    constexpr std::size_t tries = 8;
+    const auto candidates = landmark_pairs_to_cut(tm_a, get(CGAL::vertex_point, tm_a), chain_a);
+    for(std::size_t c = 0; c < candidates.size() && c < tries && !cut_done; ++c)
+    {
+      const std::size_t first = candidates[c].second.first, second = candidates[c].second.second;
+      std::vector<vertex_a> in_a;
+      std::vector<vertex_b> in_b;
+      std::vector<std::size_t> in_landmark;
+      for(std::size_t k = 0; k < chain_a.size(); ++k)
+        if(k != first && k != second) { in_a.push_back(chain_a[k]); in_b.push_back(chain_b[k]); in_landmark.push_back(k); }
+      const std::vector<vertex_a> pair_a = { chain_a[first], chain_a[second] };
+      const std::vector<vertex_b> pair_b = { chain_b[first], chain_b[second] };
+      if(cut_along_chain(tm_a, get(CGAL::vertex_point, tm_a), pair_a, cut_a, failed, in_a, true) != OK) continue;
+      if(cut_along_chain(tm_b, get(CGAL::vertex_point, tm_b), pair_b, cut_b, failed, in_b, true) != OK) continue;
+      cut_done = true;
+      chain_a = pair_a;
+      chain_b = pair_b;
+      inside_a.swap(in_a);
+      inside_b.swap(in_b);
+      inside_landmark.swap(in_landmark);
+      chain_landmark = { first, second };
+    }
+  }
+  stats.cut_landmarks = chain_a.size();
+  Error_code ec = OK;
+  if(!cut_done)
+  {
+    // (a chain position is a position in `landmarks`: the chain is all of them, in their order)
+    ec = cut_along_chain(tm_a, get(CGAL::vertex_point, tm_a), chain_a, cut_a, failed);
+    if(ec != OK) { stats.failed_mesh = 0; stats.failed_landmark = failed; return ec; }
+    ec = cut_along_chain(tm_b, get(CGAL::vertex_point, tm_b), chain_b, cut_b, failed);
+    if(ec != OK) { stats.failed_mesh = 1; stats.failed_landmark = failed; return ec; }
+  }
   Disk_a disk_a;
   {
     std::vector<Point_a> pa;
@@ -1309,7 +1327,7 @@ Error_code cross_parameterization_closed(
     CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pb, soup_b.triangles, disk_b);
   };
   build_b(false);
-  // every landmark a border landmark of the cut disks, each copy matched to the copy on the same side
+  // every landmark on the cut a border landmark of the cut disks, each copy matched to the copy on the same side
   std::unordered_map<vertex_a, std::size_t, boost::hash<vertex_a> > index_a;
   std::unordered_map<vertex_b, std::size_t, boost::hash<vertex_b> > index_b;
   for(std::size_t i = 0; i < cut_a.copy.size(); ++i) index_a.emplace(cut_a.vertices[i], i);
@@ -1530,11 +1548,10 @@ Error_code cross_parameterization_closed(
 /// coordinate 1 exactly at its partner.
 ///
 /// Two closed genus-0 meshes (no border) are first cut into disks. With three landmarks or more, each mesh is cut
-/// along its shortest edge path (3D edge lengths, avoiding the other landmarks) between the two landmarks nearest to
-/// each other on A (the shortest edge path of A through no other landmark with a vertex inside; ties to the earlier
-/// landmarks; among the pairs whose regions of nearest vertices meet, see the user manual), and the other landmarks
-/// stay inside the cut disks, pinned as on two disks; with two landmarks, or
-/// where every two landmarks are next to each other, the cut is the chain through all landmarks in their order: the
+/// along its shortest edge path (3D edge lengths, through no other landmark and not along an edge joining the two)
+/// between two landmarks near each other: the nearest pair on A that both meshes can join so (see the user manual,
+/// section Closed Surfaces), and the other landmarks stay inside the cut disks, pinned as on two disks; with two
+/// landmarks, or where no pair cuts both meshes, the cut is the chain through all landmarks in their order: the
 /// shortest edge path from each landmark to the next, avoiding the earlier paths and the other landmarks
 /// (`Cross_parameterization_statistics::cut_landmarks`). Every landmark copy on the cut is a border landmark, and both
 /// borders are placed on the square so that the two sides of every arc of the cut are placed alike (see the user
@@ -1681,8 +1698,8 @@ Error_code cross_parameterization_closed(
 ///         `ERROR_NON_MANIFOLD`, `ERROR_NOT_A_DISK`, also for a closed mesh against a disk;
 ///         `Cross_parameterization_statistics::failed_mesh` says which), `ERROR_NON_FINITE_COORDINATES` (a NaN or
 ///         infinite 3D point; `failed_mesh` says which mesh), for closed meshes `ERROR_NOT_GENUS_ZERO`
-///         and `ERROR_PATH_TRACING_FAILED` (the chain of landmarks cannot go on without crossing itself; with
-///         `failed_landmark`), `ERROR_WRONG_PARAMETER` for two closed meshes with fewer than two landmarks,
+///         and `ERROR_PATH_TRACING_FAILED` (no pair of landmarks cuts both meshes and the chain through all cannot
+///         go on without crossing itself or a landmark; with `failed_landmark`), `ERROR_WRONG_PARAMETER` for two closed meshes with fewer than two landmarks,
 ///         `ERROR_BORDER_TOO_SHORT` (fewer than four border vertices; `failed_mesh` says which mesh), `ERROR_WRONG_PARAMETER` (a landmark vertex
 ///         not of its mesh, a `border_vertex_pair` vertex not on its border), `ERROR_LANDMARK_ORDER` (border landmarks
 ///         not in the same counterclockwise order along both borders, `border_vertex_pair` counted as the first:

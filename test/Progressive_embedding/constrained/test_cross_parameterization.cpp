@@ -677,16 +677,13 @@ int closed_surfaces(const std::string& data_dir)
   PE::Error_code ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(loc), PE::parameters::statistics(&st));
   CHECK(ec == PE::OK, PE::get_error_message(ec) << " (failed mesh " << st.failed_mesh << ")");
   CHECK(st.closed && st.cut_edges_a > 0 && st.cut_edges_a == st.cut_edges_b, "cut along the same path");
-  // the two landmarks nearest to each other on A (along its edges) on the cut, the four others inside
-  {
-    std::size_t first = 0, second = 0;
-    std::vector<vd> la;
-    for(const auto& l : landmarks) la.push_back(l.first);
-    CHECK(PE::internal::nearest_landmark_pair(a, get(CGAL::vertex_point, a), la, first, second) && first < second,
-          "a pair of landmarks to cut between");
-    CHECK(st.landmarks == 6 && st.cut_landmarks == 2 && st.border_landmarks == 2,
-          "cut between two landmarks: " << st.cut_landmarks << " on the cut, " << st.border_landmarks << " border landmarks");
-  }
+  // two landmarks on the cut (the nearest pair of A, checked in the planar maps below), the four others inside
+  CHECK(st.landmarks == 6 && st.cut_landmarks == 2 && st.border_landmarks == 2,
+        "cut between two landmarks: " << st.cut_landmarks << " on the cut, " << st.border_landmarks << " border landmarks");
+  std::vector<vd> landmarks_a;
+  for(const auto& l : landmarks) landmarks_a.push_back(l.first);
+  const auto candidates = PE::internal::landmark_pairs_to_cut(a, get(CGAL::vertex_point, a), landmarks_a);
+  CHECK(!candidates.empty() && candidates.front().second.first < candidates.front().second.second, "pairs to cut between");
   CHECK(st.report_a.is_valid() && st.report_b.is_valid() && st.landmarks_exact, "certified, landmarks exact");
   CHECK(loc.size() == va.size(), "every vertex located");
   for(const auto& l : landmarks) CHECK(weight_of(b, loc.at(l.first), l.second) == 1., "landmark exactly on its partner");
@@ -748,7 +745,7 @@ int closed_surfaces(const std::string& data_dir)
     CHECK(kept == va.size(), "every vertex of A in A'");
     std::cout << "closed compatible meshes: " << num_vertices(ca) << " vertices, " << num_faces(ca) << " faces, "
               << sm.cut_vertices_welded << " joined along the cut, closed, Euler characteristic 2" << std::endl;
-    // two landmarks (the way back the mirror image of the way there) and three (four copies, the corners at them)
+    // two landmarks (the way back the mirror image of the way there) and three (two on the cut, one inside)
     for(std::size_t k : { std::size_t(2), std::size_t(3) })
     {
       const std::vector<std::pair<vd, vd> > few(landmarks.begin(), landmarks.begin() + std::ptrdiff_t(k));
@@ -777,6 +774,15 @@ int closed_surfaces(const std::string& data_dir)
       CHECK(pa.point(Surface_mesh::Vertex_index(static_cast<Surface_mesh::size_type>(index[l.first]))) ==
               pb.point(Surface_mesh::Vertex_index(static_cast<Surface_mesh::size_type>(index[l.first]))),
             "a landmark at its partner's point in the planar maps");
+    // the first pair to cut between on the square's border, the other landmarks strictly inside
+    for(std::size_t k = 0; k < landmarks.size(); ++k)
+    {
+      const auto& p = pa.point(Surface_mesh::Vertex_index(static_cast<Surface_mesh::size_type>(index[landmarks[k].first])));
+      const bool on_square = p.x() == 0 || p.x() == 1 || p.y() == 0 || p.y() == 1;
+      const bool on_cut = k == candidates.front().second.first || k == candidates.front().second.second;
+      CHECK(on_square == on_cut && p.x() >= 0 && p.x() <= 1 && p.y() >= 0 && p.y() <= 1,
+            "landmark " << k << (on_cut ? " on the cut" : " inside") << ": at (" << p.x() << ", " << p.y() << ")");
+    }
   }
   // against its remeshed copy
   Surface_mesh c;
@@ -875,37 +881,40 @@ int closed_surfaces(const std::string& data_dir)
   return EXIT_SUCCESS;
 }
 
-// Where a closed surface is cut (internal/cross/cut_pair.h): on the octahedron (poles 0 and 5, equator 1 2 3 4), the
-// two landmarks nearest along edges with a vertex between them that is no landmark; landmarks joined by an edge
-// never qualify, and when every two are, or all vertices are landmarks, there is no pair (the chain through all is
-// then the cut). With the six vertices as landmarks the call cuts along the chain and certifies the map.
+// Where a closed surface is cut (internal/cross/cut_pair.h) on the octahedron (poles 0 and 5, equator 1 2 3 4): the
+// pairs whose regions of nearest vertices meet across an edge with an end that is no landmark, nearest first (ties to
+// the earlier positions); none when every vertex is a landmark (the chain through all is then the cut, certified with
+// the compatible meshes). A pair that A can cut and B cannot is passed over: A the octahedron with each face split
+// in four, B the octahedron, landmarks 1 2 0 5 4: on B landmark 1 has only landmarks around it, so the four pairs
+// with it (the nearest on A) are passed over and a later pair is cut.
 template <class Mesh>
 int cut_between_nearest_landmarks()
 {
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor vd;
+  typedef std::vector<std::array<std::size_t, 3> > Soup;
   const std::vector<Epick::Point_3> points = { { 0, 0, 1 }, { 1, 0, 0 }, { 0, 1, 0 }, { -1, 0, 0 }, { 0, -1, 0 }, { 0, 0, -1 } };
-  const std::vector<std::array<std::size_t, 3> > triangles = { {{ 0, 1, 2 }}, {{ 0, 2, 3 }}, {{ 0, 3, 4 }}, {{ 0, 4, 1 }},
-                                                              {{ 5, 2, 1 }}, {{ 5, 3, 2 }}, {{ 5, 4, 3 }}, {{ 5, 1, 4 }} };
+  const Soup triangles = { {{ 0, 1, 2 }}, {{ 0, 2, 3 }}, {{ 0, 3, 4 }}, {{ 0, 4, 1 }},
+                           {{ 5, 2, 1 }}, {{ 5, 3, 2 }}, {{ 5, 4, 3 }}, {{ 5, 1, 4 }} };
   Mesh m;
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, m);
   std::vector<vd> v(vertices(m).begin(), vertices(m).end());
-  auto pair_of = [&](const std::vector<std::size_t>& chosen, std::size_t& first, std::size_t& second) {
+  auto first_pair = [&](const std::vector<std::size_t>& chosen) {
     std::vector<vd> l;
     for(std::size_t i : chosen) l.push_back(v[i]);
-    return PE::internal::nearest_landmark_pair(m, get(CGAL::vertex_point, m), l, first, second);
+    const auto c = PE::internal::landmark_pairs_to_cut(m, get(CGAL::vertex_point, m), l);
+    return c.empty() ? std::make_pair(std::size_t(7), std::size_t(7)) : c.front().second;
   };
-  std::size_t first = 7, second = 7;
+  typedef std::pair<std::size_t, std::size_t> Pair;
   // the poles: two edges apart through the equator
-  CHECK(pair_of({ 0, 5 }, first, second) && first == 0 && second == 1, "the poles: " << first << ", " << second);
-  // 1, 2, 3: 1 and 3 are not joined by an edge (through a pole); 1-2 and 2-3 are
-  CHECK(pair_of({ 1, 2, 3 }, first, second) && first == 0 && second == 2, "1, 2, 3: " << first << ", " << second);
-  // 2, 0, 4, 5: 2-4 (positions 0 and 2, through 1 or 3) and the poles are the pairs not joined by an edge, both two
-  // edges long: the earlier positions
-  CHECK(pair_of({ 2, 0, 4, 5 }, first, second) && first == 0 && second == 2, "2, 0, 4, 5: " << first << ", " << second);
+  CHECK(first_pair({ 0, 5 }) == Pair(0, 1), "the poles");
+  // 1, 2, 3: the vertices that are no landmarks all nearest to 1 (ties to the earlier), whose region meets 2's and
+  // 3's: the pair 1-2, joined by an edge, is cut around it
+  CHECK(first_pair({ 1, 2, 3 }) == Pair(0, 1), "1, 2, 3");
+  CHECK(first_pair({ 2, 0, 4, 5 }) == Pair(0, 1), "2, 0, 4, 5");
   // every vertex a landmark, and a single landmark: no pair
-  CHECK(!pair_of({ 0, 1, 2, 3, 4, 5 }, first, second), "all six: no pair");
-  CHECK(!pair_of({ 3 }, first, second), "one landmark: no pair");
-  // the call with all six: the chain through them, in their order (1 0 2 3 4 5 makes one)
+  CHECK(first_pair({ 0, 1, 2, 3, 4, 5 }) == Pair(7, 7), "all six: no pair");
+  CHECK(first_pair({ 3 }) == Pair(7, 7), "one landmark: no pair");
+  // the call with all six: the chain through them, in their order (1 0 2 3 4 5 makes one), with the compatible meshes
   Mesh b;
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, b);
   std::vector<vd> w(vertices(b).begin(), vertices(b).end());
@@ -913,12 +922,52 @@ int cut_between_nearest_landmarks()
   for(std::size_t i : { 1, 0, 2, 3, 4, 5 }) landmarks.emplace_back(v[i], w[i]);
   Location_map<Mesh> loc;
   PE::Cross_parameterization_statistics st;
-  const PE::Error_code ec = PE::cross_parameterization(m, b, landmarks, boost::make_assoc_property_map(loc), PE::parameters::statistics(&st));
+  Surface_mesh ca, cb;
+  PE::Error_code ec = PE::cross_parameterization(m, b, landmarks, boost::make_assoc_property_map(loc),
+                        PE::parameters::compatible_meshes(std::make_pair(&ca, &cb), PE::parameters::statistics(&st)));
   CHECK(ec == PE::OK && st.closed && st.cut_landmarks == 6 && st.landmarks == 6 && st.landmarks_exact &&
-        st.report_a.is_valid() && st.report_b.is_valid(), "the octahedron's chain: " << PE::get_error_name(ec) << ", "
-        << st.cut_landmarks << " landmarks on the cut");
-  std::cout << "cut between the nearest landmarks (" << mesh_name<Mesh>() << "): the octahedron's poles, 1 2 3, 2 0 4 5 "
-            << "as expected; all six or one: no pair; all six in the call: the chain through them, certified" << std::endl;
+        st.report_a.is_valid() && st.report_b.is_valid() && st.report_compatible.is_valid() && CGAL::is_closed(ca) &&
+        num_vertices(ca) == num_vertices(cb) && long(num_vertices(ca)) - long(num_edges(ca)) + long(num_faces(ca)) == 2,
+        "the octahedron's chain: " << PE::get_error_name(ec) << ", " << st.cut_landmarks << " landmarks on the cut");
+  // A: each face split in four at its edges' midpoints
+  std::vector<Epick::Point_3> fine_points = points;
+  Soup fine;
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> midpoint;
+  auto mid = [&](std::size_t i, std::size_t j) {
+    const auto key = std::make_pair((std::min)(i, j), (std::max)(i, j));
+    auto it = midpoint.find(key);
+    if(it != midpoint.end()) return it->second;
+    fine_points.push_back(CGAL::midpoint(points[i], points[j]));
+    return midpoint[key] = fine_points.size() - 1;
+  };
+  for(const auto& t : triangles)
+  {
+    const std::size_t ab = mid(t[0], t[1]), bc = mid(t[1], t[2]), ca_ = mid(t[2], t[0]);
+    fine.push_back({{ t[0], ab, ca_ }});
+    fine.push_back({{ ab, t[1], bc }});
+    fine.push_back({{ ca_, bc, t[2] }});
+    fine.push_back({{ ab, bc, ca_ }});
+  }
+  Mesh f;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(fine_points, fine, f);
+  std::vector<vd> vf(vertices(f).begin(), vertices(f).end());
+  std::vector<std::pair<vd, vd> > five;
+  std::vector<vd> five_a;
+  for(std::size_t i : { 1, 2, 0, 5, 4 }) { five.emplace_back(vf[i], w[i]); five_a.push_back(vf[i]); }
+  const auto candidates = PE::internal::landmark_pairs_to_cut(f, get(CGAL::vertex_point, f), five_a);
+  // (the four pairs with landmark 1 come first, all as near: on B each has only landmarks around landmark 1)
+  CHECK(candidates.size() == 9 && candidates[0].second == Pair(0, 1) && candidates[3].second == Pair(0, 4),
+        "the subdivided octahedron's pairs: " << candidates.size());
+  Location_map<Mesh> loc5;
+  PE::Cross_parameterization_statistics s5;
+  ec = PE::cross_parameterization(f, b, five, boost::make_assoc_property_map(loc5), PE::parameters::statistics(&s5));
+  CHECK(ec == PE::OK && s5.cut_landmarks == 2 && s5.landmarks_exact && s5.report_a.is_valid() && s5.report_b.is_valid(),
+        "a pair B cannot cut passed over: " << PE::get_error_name(ec) << ", " << s5.cut_landmarks << " landmarks on the cut");
+  for(const auto& l : five) CHECK(weight_of(b, loc5.at(l.first), l.second) == 1., "landmark exactly on its partner");
+  std::cout << "cut between landmarks near each other (" << mesh_name<Mesh>() << "): the octahedron's pairs as expected, "
+            << "none with every vertex a landmark (the chain through all six, certified with the compatible meshes: "
+            << num_vertices(ca) << " vertices); the subdivided octahedron onto the octahedron, 5 landmarks: the pairs "
+            << "B cannot cut passed over, a later one cut, certified, landmarks exact" << std::endl;
   return EXIT_SUCCESS;
 }
 

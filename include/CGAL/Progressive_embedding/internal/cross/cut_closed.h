@@ -62,7 +62,9 @@ bool is_closed_mesh(const TriangleMesh& tm)
 }
 
 // `chain`: mesh vertices (distinct); `avoid`: other vertices no path may go through (the landmarks that stay inside
-// the cut disk). On success `cut` is a disk (for a connected genus-0 mesh). Returns
+// the cut disk); `no_direct_edge`: no path takes the edge joining its two ends (for a chain of two landmarks joined by
+// an edge, a path around it; without it such a chain is refused, see below). On success `cut` is a disk (for a
+// connected genus-0 mesh). Returns
 // ERROR_NON_TRIANGULAR_MESH, ERROR_NOT_GENUS_ZERO (not connected, or Euler characteristic not 2),
 // ERROR_PATH_TRACING_FAILED with `failed` the chain position whose path from the previous one was not
 // found (the earlier paths and the other landmarks closed every way), or ERROR_NOT_A_DISK with `failed` 1 when
@@ -72,7 +74,8 @@ template <class TriangleMesh, class VPM>
 Error_code cut_along_chain(const TriangleMesh& tm, VPM vpm,
                            const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& chain,
                            Cut_disk<TriangleMesh>& cut, std::size_t& failed,
-                           const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& avoid = {})
+                           const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& avoid = {},
+                           bool no_direct_edge = false)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
@@ -130,6 +133,7 @@ Error_code cut_along_chain(const TriangleMesh& tm, VPM vpm,
       {
         const std::size_t j = index.at(w);
         if(blocked[j] && j != to) continue;
+        if(no_direct_edge && e.second == from && j == to) continue;
         const double d = e.first + length_3(get(vpm, v), get(vpm, w));
         if(d < distance[j]) { distance[j] = d; parent[j] = e.second; queue.emplace(d, j); }
       }

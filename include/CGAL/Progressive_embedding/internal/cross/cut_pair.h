@@ -5,8 +5,8 @@
 #ifndef CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CROSS_CUT_PAIR_H
 #define CGAL_PROGRESSIVE_EMBEDDING_INTERNAL_CROSS_CUT_PAIR_H
 
-// Where to cut a closed genus-0 surface with many landmarks: between the two landmarks nearest to each other along
-// the mesh's edges. Any two landmarks joined by a path make a cut that opens the surface into a disk (a slit); the
+// Where to cut a closed genus-0 surface with many landmarks: between two landmarks near each other along the mesh's
+// edges. Any two landmarks joined by a path make a cut that opens the surface into a disk (a slit); the
 // other landmarks then stay inside the disk, pinned like the landmarks of two disks. A short cut is traced alike on
 // two meshes of one surface, where a long one (between far landmarks) follows one of several nearly equal shortest
 // paths, which two triangulations choose differently, and carries that difference into the border of both maps.
@@ -15,11 +15,12 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <functional>
 #include <limits>
+#include <map>
 #include <queue>
-#include <set>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -28,22 +29,24 @@ namespace CGAL {
 namespace Progressive_embedding {
 namespace internal {
 
-// The positions in `landmarks` (distinct vertices of `tm`) of the two landmarks with the shortest edge path between
-// them that goes through no other landmark and has a vertex inside (two landmarks joined by an edge make a cut that
-// opens nothing); the first position the smaller. Lengths are 3D edge lengths; ties go to the smaller positions.
-// One multi-source Dijkstra labels each vertex by its nearest landmark, and the pairs whose regions meet across an
-// edge are the candidates: the nearest pair of landmarks is among them, so the result is the nearest qualifying
-// pair unless nearer landmarks are joined by an edge (then it is the nearest of the other candidates). False when
-// no candidate qualifies (fewer than two landmarks, or every pair whose regions meet joined by an edge).
-// O(E log V).
+// Candidate pairs of landmarks to cut between, nearest first: the positions in `landmarks` (distinct vertices of
+// `tm`), the first the smaller, and the length of an edge path between them through no other landmark and through a
+// vertex that is no landmark (two landmarks joined by an edge make a cut that opens nothing: the cut between them
+// avoids that edge, cut_along_chain()'s `direct_edge`). Lengths are 3D edge lengths; ties go to the smaller
+// positions. One multi-source Dijkstra labels each vertex by its nearest landmark; the pairs whose regions meet
+// across an edge with an end that is no landmark are the candidates, each with its shortest such crossing (the
+// nearest two landmarks are among them). Empty when there is none (fewer than two landmarks, or every vertex a
+// landmark). O(E log V).
 template <class TriangleMesh, class VPM>
-bool nearest_landmark_pair(const TriangleMesh& tm, VPM vpm,
-                           const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& landmarks,
-                           std::size_t& first, std::size_t& second)
+std::vector<std::pair<double, std::pair<std::size_t, std::size_t> > >
+landmark_pairs_to_cut(const TriangleMesh& tm, VPM vpm,
+                      const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& landmarks)
 {
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef std::pair<std::size_t, std::size_t> Pair;
   constexpr std::size_t none = std::size_t(-1);
-  if(landmarks.size() < 2) return false;
+  std::vector<std::pair<double, Pair> > candidates;
+  if(landmarks.size() < 2) return candidates;
   std::unordered_map<vertex_descriptor, std::size_t> index;
   std::vector<vertex_descriptor> at;
   for(vertex_descriptor v : vertices(tm)) { index.emplace(v, at.size()); at.push_back(v); }
@@ -78,30 +81,22 @@ bool nearest_landmark_pair(const TriangleMesh& tm, VPM vpm,
       }
     }
   }
-  // landmarks joined by an edge: their shortest path is that edge
-  std::set<std::pair<std::size_t, std::size_t> > adjacent;
-  for(vertex_descriptor l : landmarks)
-    for(vertex_descriptor w : vertices_around_target(halfedge(l, tm), tm))
-    {
-      const std::size_t a = landmark_of[index.at(l)], b = landmark_of[index.at(w)];
-      if(b != none) adjacent.emplace((std::min)(a, b), (std::max)(a, b));
-    }
-  double best = std::numeric_limits<double>::infinity();
-  std::pair<std::size_t, std::size_t> best_pair(none, none);
+  std::map<Pair, double> shortest;
   for(auto e : edges(tm))
   {
     const vertex_descriptor u = source(halfedge(e, tm), tm), w = target(halfedge(e, tm), tm);
     const std::size_t iu = index.at(u), iw = index.at(w);
     if(label[iu] == none || label[iw] == none || label[iu] == label[iw]) continue;
-    const std::pair<std::size_t, std::size_t> p((std::min)(label[iu], label[iw]), (std::max)(label[iu], label[iw]));
-    if(adjacent.count(p) != 0) continue;
+    if(landmark_of[iu] != none && landmark_of[iw] != none) continue; // the edge between two landmarks itself
+    const Pair p((std::min)(label[iu], label[iw]), (std::max)(label[iu], label[iw]));
     const double d = distance[iu] + length_3(get(vpm, u), get(vpm, w)) + distance[iw];
-    if(d < best || (d == best && p < best_pair)) { best = d; best_pair = p; }
+    auto it = shortest.find(p);
+    if(it == shortest.end()) shortest.emplace(p, d);
+    else if(d < it->second) it->second = d;
   }
-  if(best_pair.first == none) return false;
-  first = best_pair.first;
-  second = best_pair.second;
-  return true;
+  for(const auto& s : shortest) candidates.emplace_back(s.second, s.first);
+  std::sort(candidates.begin(), candidates.end());
+  return candidates;
 }
 
 } // namespace internal

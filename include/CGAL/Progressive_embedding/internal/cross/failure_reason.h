@@ -19,7 +19,7 @@ namespace Progressive_embedding {
 namespace internal {
 
 // What is wrong with the landmark that `failed_landmark` names, its vertex on the mesh `failed_mesh`: the words that
-// follow "the vertex of A" (or "of B"). `closed`: the two meshes are closed (cut along the chain of landmarks);
+// follow "the vertex of A" (or "of B"). `closed`: the two meshes are closed (cut between landmarks);
 // `border_vertex_pair`: the caller gave one.
 inline std::string cross_landmark_fault(Error_code ec, bool closed, bool border_vertex_pair)
 {

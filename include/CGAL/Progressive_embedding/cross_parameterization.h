@@ -1280,8 +1280,13 @@ Error_code cross_parameterization_closed(
         if(k != first && k != second) { in_a.push_back(chain_a[k]); in_b.push_back(chain_b[k]); in_landmark.push_back(k); }
       const std::vector<vertex_a> pair_a = { chain_a[first], chain_a[second] };
       const std::vector<vertex_b> pair_b = { chain_b[first], chain_b[second] };
-      if(cut_along_chain(tm_a, get(CGAL::vertex_point, tm_a), pair_a, cut_a, failed, in_a, true) != OK) continue;
-      if(cut_along_chain(tm_b, get(CGAL::vertex_point, tm_b), pair_b, cut_b, failed, in_b, true) != OK) continue;
+      // a fault of a mesh (not genus 0, not triangulated) is the same for every pair: the chain below reports it
+      const Error_code ea = cut_along_chain(tm_a, get(CGAL::vertex_point, tm_a), pair_a, cut_a, failed, in_a, true);
+      if(ea != OK && ea != ERROR_PATH_TRACING_FAILED) break;
+      if(ea != OK) continue;
+      const Error_code eb = cut_along_chain(tm_b, get(CGAL::vertex_point, tm_b), pair_b, cut_b, failed, in_b, true);
+      if(eb != OK && eb != ERROR_PATH_TRACING_FAILED) break;
+      if(eb != OK) continue;
       cut_done = true;
       chain_a = pair_a;
       chain_b = pair_b;

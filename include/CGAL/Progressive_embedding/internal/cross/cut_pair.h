@@ -32,7 +32,7 @@ namespace internal {
 // Candidate pairs of landmarks to cut between, nearest first: the positions in `landmarks` (distinct vertices of
 // `tm`), the first the smaller, and the length of an edge path between them through no other landmark and through a
 // vertex that is no landmark (two landmarks joined by an edge make a cut that opens nothing: the cut between them
-// avoids that edge, cut_along_chain()'s `direct_edge`). Lengths are 3D edge lengths; ties go to the smaller
+// avoids that edge, cut_along_chain()'s `no_direct_edge`). Lengths are 3D edge lengths; ties go to the smaller
 // positions. One multi-source Dijkstra labels each vertex by its nearest landmark; the pairs whose regions meet
 // across an edge with an end that is no landmark are the candidates, each with its shortest such crossing (the
 // nearest two landmarks are among them). Empty when there is none (fewer than two landmarks, or every vertex a

@@ -18,8 +18,11 @@
 #              about 15 minutes); --polygon-obj adds an OBJ disk with texture coordinates (repeatable).
 # --cross      also runs cross_benchmark (cross_parameterization.{csv,md}: mushroom and lion-head against
 #              their remeshed copies, 5, 20 and 50 landmarks, each without and with the composed distortion
-#              and B's matched map, and the naive composition of two Tutte maps, about two minutes); with
-#              --cross-pairs DIR also
+#              and B's matched map, and the naive composition of two Tutte maps, about two minutes),
+#              cross_parameterization_closed.{csv,md} (nine closed genus-0 meshes against their remeshed copies,
+#              without and with B's matched map, and CGAL's Orbifold Tutte maps composed, about 10 minutes) and
+#              cross_parameterization_closed_identity.{csv,md} (the same meshes each onto itself, about 4
+#              minutes); with --cross-pairs DIR also
 #              cross_parameterization_pairs.{csv,md}: two resolutions of one surface, 0, 5, 20 and 50 landmarks,
 #              from the OBJ files of OptCuts' inputs (its input/benchmark and input/scalability/lucy_o folders)
 #              that DIR holds: cat, cat_f1500, bishop_part, bishop_part_f1000, lucy_o_f12067, _f24136, _f48275
@@ -116,6 +119,12 @@ fi
 if [ "$cross" = 1 ]; then
   cmake --build "$build" --target cross_benchmark
   "$build/bin/cross_benchmark" "$build/cgal_data/data" "$results/cross_parameterization" --composed both --matched both
+  closed=blobby.off,cow.off,hand.off,triceratops.off,homer.off,bull.off,camel.off,bear_bis.off,man.off
+  "$build/bin/cross_benchmark" "$build/cgal_data/data" "$results/cross_parameterization_closed" --meshes "$closed" \
+    --counts 5,20,50 --matched both
+  m=$build/cgal_data/data/meshes
+  "$build/bin/cross_benchmark" "$build/cgal_data/data" "$results/cross_parameterization_closed_identity" --counts 5,20,50 \
+    --matched both --pairs "$(echo "$closed" | tr ',' '\n' | sed "s|.*|$m/&:$m/&|" | paste -sd, -)"
   if [ -n "$cross_pairs" ]; then
     d=$cross_pairs
     "$build/bin/cross_benchmark" "$build/cgal_data/data" "$results/cross_parameterization_pairs" --counts 0,5,20,50 --composed both --matched both \

@@ -43,6 +43,7 @@
 #include <CGAL/Progressive_embedding/internal/symmetric_dirichlet.h>
 #include <CGAL/Real_timer.h>
 
+#include "orbifold_composition.h"
 #include "process_memory.h"
 
 #include <unistd.h>
@@ -54,6 +55,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -77,8 +79,11 @@ struct Row
   std::size_t degenerate_images = 0;
   std::size_t unlocated = 0;        // naive: vertices of A outside every positively oriented face of B's map
   std::size_t bad_faces = 0;        // naive: flipped or degenerate faces of the two Tutte maps
+  std::size_t tiles = 0;            // Orbifold Tutte: copies of B's tile A's vertices were located among
+  std::size_t cone_orders_rejected = 0; // Orbifold Tutte: orders of the cones whose shortest paths made no chain
   bool composed = true, matched = true, matched_b = false, parallel = false;
-  bool closed = false; // two closed meshes, cut into disks (B's map is then its first map: matched does not apply)
+  bool matched_more_distorted = false; // B's matched map made, but more than 5% above the first map's energy
+  bool closed = false; // two closed meshes, cut into disks
   std::size_t added_b = 0;
   std::size_t count = 0, landmarks = 0, va = 0, vb = 0, added = 0, vc = 0;
   std::string status;
@@ -258,6 +263,115 @@ Row run_naive(const std::string& file_a, const std::string& file_b, const std::s
   return r;
 }
 
+// the landmarks spread over the coarser mesh, each matched to the nearest vertex of the finer one (the other
+// way round, a landmark would be moved by up to half an edge of the coarser mesh)
+std::vector<std::pair<SM::Vertex_index, SM::Vertex_index> > protocol_landmarks(const SM& a, const SM& b, std::size_t count)
+{
+  if(b.number_of_vertices() >= a.number_of_vertices())
+    return PE::internal::nearest_vertex_landmarks(a, b, PE::internal::spread_interior_vertices(a, count));
+  std::vector<std::pair<SM::Vertex_index, SM::Vertex_index> > landmarks;
+  for(const auto& p : PE::internal::nearest_vertex_landmarks(b, a, PE::internal::spread_interior_vertices(b, count)))
+    landmarks.emplace_back(p.second, p.first);
+  return landmarks;
+}
+
+// CGAL's Orbifold Tutte embedding of two closed genus-0 meshes with the first 3 (or 4, parallelogram) landmarks of
+// the protocol as cones, composed (orbifold_composition.h): measured as the naive row, vertices of A in no positively
+// oriented face of B's tiling counted as unlocated and left out
+Row run_orbifold(const std::string& file_a, const std::string& file_b, const std::string& name,
+                 CGAL::Surface_mesh_parameterization::Orbifold_type type)
+{
+  namespace SMP = CGAL::Surface_mesh_parameterization;
+  Row r;
+  r.mesh = name;
+  r.method = std::string("Orbifold Tutte (") + SMP::get_orbifold_type(type) + ")";
+  r.composed = r.matched = false;
+  r.closed = true;
+  r.count = type == SMP::Parallelogram ? 4 : 3;
+  SM a, b;
+  if(!read_pair(file_a, file_b, a, b)) { r.status = "unreadable"; return r; }
+  const std::vector<std::pair<SM::Vertex_index, SM::Vertex_index> > landmarks = protocol_landmarks(a, b, r.count);
+  r.landmarks = landmarks.size();
+  r.va = a.number_of_vertices();
+  r.vb = b.number_of_vertices();
+  std::vector<SM::Vertex_index> cones_a, cones_b;
+  for(const auto& p : landmarks) { cones_a.push_back(p.first); cones_b.push_back(p.second); }
+  CGAL::Real_timer timer;
+  timer.start();
+  pe_bench::reset_peak_rss();
+  pe_bench::Orbifold_map<K> map_a, map_b;
+  // the cones in their order, else the first other order in which CGAL's shortest paths make a chain on both meshes
+  std::vector<std::size_t> order(landmarks.size());
+  for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  int ec = SMP::ERROR_WRONG_PARAMETER;
+  do
+  {
+    std::vector<SM::Vertex_index> ca, cb;
+    for(std::size_t i : order) { ca.push_back(cones_a[i]); cb.push_back(cones_b[i]); }
+    const double t0 = timer.time();
+    ec = pe_bench::orbifold_map(b, cb, type, map_b);
+    const double t1 = timer.time();
+    if(ec == SMP::OK) ec = pe_bench::orbifold_map(a, ca, type, map_a);
+    r.t_b += t1 - t0;
+    r.t_a += timer.time() - t1;
+    if(ec != SMP::ERROR_WRONG_PARAMETER) break;
+    ++r.cone_orders_rejected;
+  }
+  while(std::next_permutation(order.begin(), order.end()));
+  if(ec == SMP::ERROR_WRONG_PARAMETER && r.cone_orders_rejected > 0)
+  {
+    r.status = "no chain of shortest paths"; // in any order of the cones, on A or on B
+    return r;
+  }
+  if(ec != SMP::OK)
+  {
+    // CGAL's get_error_message() misses a message and returns null for the last code
+    static const char* names[] = { "OK", "ERROR_EMPTY_MESH", "ERROR_NON_TRIANGULAR_MESH", "ERROR_NO_TOPOLOGICAL_DISC",
+                                   "ERROR_NO_TOPOLOGICAL_BALL", "ERROR_BORDER_TOO_SHORT", "ERROR_NON_CONVEX_BORDER",
+                                   "ERROR_CANNOT_SOLVE_LINEAR_SYSTEM", "ERROR_NO_1_TO_1_MAPPING", "ERROR_WRONG_PARAMETER" };
+    r.status = std::string("CGAL ") + (ec >= 0 && ec <= SMP::ERROR_WRONG_PARAMETER ? names[ec] : "unknown error");
+    return r;
+  }
+  std::vector<std::pair<std::size_t, std::array<double, 3> > > located;
+  r.unlocated = pe_bench::locate_in_tiling(map_a, map_b, 3, located, r.tiles);
+  r.t_total = timer.time();
+  r.t_location = r.t_total - r.t_a - r.t_b;
+  r.peak_mb = pe_bench::peak_rss_mb();
+  r.bad_faces = map_a.flipped + map_a.degenerate + map_b.flipped + map_b.degenerate;
+  r.valid_a = map_a.flipped + map_a.degenerate == 0;
+  r.valid_b = map_b.flipped + map_b.degenerate == 0;
+  r.status = "OK";
+  std::vector<SM::Face_index> faces_b(faces(b).begin(), faces(b).end());
+  auto loc = a.add_property_map<SM::Vertex_index, PE::Cross_location<SM> >("v:cross").first;
+  std::vector<char> is_located(a.num_vertices(), 0), landmark(a.num_vertices(), 0);
+  for(SM::Vertex_index v : vertices(a))
+  {
+    const auto& l = located[std::size_t(v)];
+    if(l.first == std::size_t(-1)) { loc[v] = PE::Cross_location<SM>(faces_b.front(), {{ 1., 0., 0. }}); continue; } // not measured
+    loc[v] = PE::Cross_location<SM>(faces_b[l.first], l.second);
+    is_located[std::size_t(v)] = 1;
+  }
+  // a cone is exact when it is located at its partner with coordinate 1 there
+  r.exact = true;
+  for(const auto& p : landmarks)
+  {
+    landmark[std::size_t(p.first)] = 1;
+    const PE::Cross_location<SM>& l = loc[p.first];
+    bool at_partner = false;
+    int k = 0;
+    for(SM::Vertex_index w : CGAL::vertices_around_face(b.halfedge(l.first), b))
+    {
+      // vertices_around_face starts at target(halfedge(f)): coordinate (k + 1) % 3
+      if(w == p.second && l.second[std::size_t((k + 1) % 3)] == 1.) at_partner = true;
+      ++k;
+    }
+    r.exact = r.exact && is_located[std::size_t(p.first)] && at_partner;
+  }
+  measure_errors(a, b, loc, landmark, is_located, r);
+  sampled_distortion(a, b, loc, is_located, r);
+  return r;
+}
+
 Row run(const std::string& file_a, const std::string& file_b, const std::string& name, std::size_t count, bool composed,
         bool matched, bool parallel)
 {
@@ -269,15 +383,7 @@ Row run(const std::string& file_a, const std::string& file_b, const std::string&
   r.matched = matched;
   SM a, b;
   if(!read_pair(file_a, file_b, a, b)) { r.status = "unreadable"; return r; }
-  // the landmarks spread over the coarser mesh, each matched to the nearest vertex of the finer one (the other
-  // way round, a landmark would be moved by up to half an edge of the coarser mesh)
-  std::vector<std::pair<SM::Vertex_index, SM::Vertex_index> > landmarks;
-  if(b.number_of_vertices() < a.number_of_vertices())
-  {
-    for(const auto& p : PE::internal::nearest_vertex_landmarks(b, a, PE::internal::spread_interior_vertices(b, count)))
-      landmarks.emplace_back(p.second, p.first);
-  }
-  else landmarks = PE::internal::nearest_vertex_landmarks(a, b, PE::internal::spread_interior_vertices(a, count));
+  const std::vector<std::pair<SM::Vertex_index, SM::Vertex_index> > landmarks = protocol_landmarks(a, b, count);
   r.landmarks = landmarks.size();
   SM::Property_map<SM::Vertex_index, PE::Cross_location<SM> > loc =
     a.add_property_map<SM::Vertex_index, PE::Cross_location<SM> >("v:cross").first;
@@ -294,6 +400,7 @@ Row run(const std::string& file_a, const std::string& file_b, const std::string&
   r.vb = st.vertices_b;
   r.added = st.vertices_added_a;
   r.matched_b = st.matched_b;
+  r.matched_more_distorted = st.matched_more_distorted;
   r.closed = st.closed;
   r.added_b = st.vertices_added_b;
   r.valid_a = st.report_a.is_valid();
@@ -376,7 +483,19 @@ int main(int argc, char** argv)
   {
     rows.push_back(run_naive(job[0], job[1], job[2]));
     const Row& n = rows.back();
-    if(n.status == PE::get_error_name(PE::ERROR_NOT_A_DISK)) rows.pop_back(); // a closed mesh: no Tutte map of its own
+    if(n.status == PE::get_error_name(PE::ERROR_NOT_A_DISK))
+    {
+      rows.pop_back(); // a closed mesh: no Tutte map of its own, but CGAL's Orbifold Tutte maps
+      for(auto type : { CGAL::Surface_mesh_parameterization::Square, CGAL::Surface_mesh_parameterization::Parallelogram })
+      {
+        rows.push_back(run_orbifold(job[0], job[1], job[2], type));
+        const Row& o = rows.back();
+        std::cout << job[2] << ' ' << o.method << ": " << o.status << ", faces flipped or degenerate " << o.bad_faces
+                  << ", unlocated " << o.unlocated << " (" << o.tiles << " copies of B's tile; cone orders rejected "
+                  << o.cone_orders_rejected << "), mean error " << o.mean_error
+                  << ", max " << o.max_error << ", distortion " << o.distortion << ", " << o.t_total << " s" << std::endl;
+      }
+    }
     else std::cout << job[2] << " naive Tutte: " << n.status << ", faces flipped or degenerate " << n.bad_faces << ", unlocated "
               << n.unlocated << ", mean error " << n.mean_error << ", max " << n.max_error << ", distortion " << n.distortion
               << ", " << n.t_total << " s" << std::endl;
@@ -398,7 +517,7 @@ int main(int argc, char** argv)
   csv << "mesh,method,landmarks_requested,landmarks,matched_maps,matched_b,vertices_added_b,composed_distortion,vertices_a,vertices_b,vertices_added_a,status,valid_a,valid_b,"
          "landmarks_exact,mean_error,max_error,mean_error_landmarks,mean_error_border,mean_error_inside,seconds_map_b,seconds_map_a,seconds_composed,seconds_location,"
          "compatible_vertices,compatible_certified,seconds_compatible,seconds_total,peak_rss_mb,"
-         "distortion,degenerate_images,unlocated,faces_flipped_or_degenerate,parallel,closed\n";
+         "distortion,degenerate_images,unlocated,faces_flipped_or_degenerate,parallel,closed,orbifold_tiles,orbifold_cone_orders_rejected,matched_more_distorted\n";
   csv << std::setprecision(6);
   for(const Row& r : rows)
   {
@@ -414,7 +533,7 @@ int main(int argc, char** argv)
     csv << ','
         << r.t_b << ',' << r.t_a << ',' << r.t_composed << ',' << r.t_location << ',' << r.vc << ',' << r.valid_c << ','
         << r.t_compatible << ',' << r.t_total << ',' << r.peak_mb << ',' << r.distortion << ',' << r.degenerate_images << ','
-        << r.unlocated << ',' << r.bad_faces << ',' << r.parallel << ',' << r.closed << '\n';
+        << r.unlocated << ',' << r.bad_faces << ',' << r.parallel << ',' << r.closed << ',' << r.tiles << ',' << r.cone_orders_rejected << ',' << r.matched_more_distorted << '\n';
   }
 
   char host[256] = {0};
@@ -450,12 +569,25 @@ int main(int argc, char** argv)
         "Closed genus-0 meshes (with `--meshes`) are cut into disks by `cross_parameterization()` itself, between "
         "two landmarks near each other (the others inside the cut disks; their vertex counts are those of the "
         "cut disks, a vertex inside the cut counted twice); they have no naive row (Tutte's "
-        "map needs a disk), and CGAL's Orbifold Tutte embedding, which maps closed genus-0 meshes with cones, was not "
-        "run (its disks do not apply either). Composed: A's map optimized once more for the distortion of the composed map "
+        "map needs a disk); instead, CGAL's Orbifold Tutte embedding (Aigerman and Lipman: each mesh cut along CGAL's "
+        "shortest paths between consecutive cones and mapped, with mean value weights, onto one tile of a periodic "
+        "tiling of the plane, the cones at the same points in both maps), with the first 3 landmarks as cones "
+        "(`Square`) or the first 4 (`Parallelogram`), the same landmarks as the first of the K; composed as the naive "
+        "maps are, each vertex of A located in double precision among the copies of B's tile under the motions of the "
+        "tiling's group (read off B's map across its seam; products of up to three) that reach A's tile; faces of "
+        "either map flipped or degenerate under the exact orientation test and vertices of A in no positively oriented "
+        "copied face of B are counted as for the naive maps (both maps certified: no such face; landmarks exact: each "
+        "cone located at its partner with coordinate 1); B's map s and A's map s are the two Orbifold Tutte maps. "
+        "CGAL's shortest paths between consecutive cones may cross or overlap (the seam is then not a chain through "
+        "the cones, which its parameterizer needs): the cones are then taken in the next order that gives a chain on "
+        "both meshes (`orbifold_cone_orders_rejected` in the CSV), status `no chain of shortest paths` when none does. "
+        "Its disks do not apply to disks. Composed: A's map optimized once more for the distortion of the composed map "
         "(`composed_distortion`, the default); its seconds (composed s) are part of A's map's. Matched: B's map made "
         "again by `constrained_embedding()` with B's landmarks pinned where its first map put them, as A's is "
         "(`matched_maps`, the default; with landmarks only; its seconds are part of B's map's); vertices added to "
-        "B: Steiner vertices left in B's copy (B's map is then on that refined copy); - for closed meshes. Parallel: "
+        "B: Steiner vertices left in B's copy (B's map is then on that refined copy); `more distorted`: the matched map "
+        "made but more than 5% above the first map's distortion energy, the first map kept (`failed`: not made). "
+        "Parallel: "
         "`cross_parameterization<CGAL::Parallel_tag>()`, B's matched map and A's map made at the same time, or "
         "`<CGAL::Sequential_tag>()`, one after the other (as `pe cross` and the Python binding do): the same maps, only "
         "the seconds and the memory differ (with Parallel_tag, B's map s and A's map s overlap). "
@@ -466,11 +598,11 @@ int main(int argc, char** argv)
      << "| mesh | method | K | matched | vertices added to B | composed | parallel | vertices A | vertices B | status | both maps certified | landmarks exact | vertices added to A "
         "| mean error | max error | mean error at landmarks | mean error on the border | mean error inside | B's map s "
         "| A's map s | composed s | location s | compatible vertices | compatible certified "
-        "| compatible s | total s | peak MB | distortion | naive: unlocated | naive: faces flipped or degenerate |\n"
+        "| compatible s | total s | peak MB | distortion | naive, Orbifold: unlocated | naive, Orbifold: faces flipped or degenerate |\n"
      << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for(const Row& r : rows)
   {
-    md << "| " << r.mesh << " | " << r.method << " | " << r.landmarks << " | " << (r.matched_b ? "yes" : r.closed ? "-" : r.matched && r.landmarks > 0 ? "failed" : "no")
+    md << "| " << r.mesh << " | " << r.method << " | " << r.landmarks << " | " << (r.matched_b ? "yes" : r.method != "cross" ? "-" : r.matched_more_distorted ? "more distorted" : r.matched && r.landmarks > 0 ? "failed" : "no")
        << " | " << r.added_b << " | " << (r.composed ? "yes" : "no") << " | "
        << (r.method != "cross" ? "-" : r.parallel ? "yes" : "no") << " | " << r.va << " | " << r.vb << " | " << r.status << " | "
        << (r.valid_a && r.valid_b ? "yes" : "no") << " | " << (r.exact ? "yes" : "no") << " | " << r.added << " | "
@@ -487,6 +619,8 @@ int main(int argc, char** argv)
     if(r.method == "cross")
       md << r.t_b << " | " << r.t_a << " | " << r.t_composed << " | " << r.t_location << " | " << r.vc << " | "
          << (r.valid_c ? "yes" : "no") << " | " << r.t_compatible << " | ";
+    else if(r.method != "naive Tutte")
+      md << r.t_b << " | " << r.t_a << " | - | " << r.t_location << " | - | - | - | "; // Orbifold Tutte: no overlay
     else md << "- | - | - | - | - | - | - | "; // the naive maps: total only, no overlay
     md << r.t_total << " | " << std::setprecision(4) << r.peak_mb << std::setprecision(3) << " | " << r.distortion << " | ";
     if(r.method == "cross") md << "- | - |\n";

@@ -206,7 +206,7 @@ const std::vector<Command_spec>& command_table()
       "the location on the disk B of every vertex of the disk A through a certified cross-parameterization\n"
       "(two closed genus-0 meshes are first cut into disks between two landmarks near each other on A, the\n"
       "others inside, JSON cut_landmarks; where no pair cuts both meshes, along the chain through all in file\n"
-      "order; B's map is then its first map, --no-matched is implied):\n"
+      "order; the maps are then those of the cut disks):\n"
       "both borders on the unit square by relative arc length (through the border landmarks), B mapped\n"
       "first, then again with its landmarks pinned where that map put them (unless --no-matched; kept only\n"
       "if at most 5% above the first map's distortion energy, JSON matched_b, matched_more_distorted), A mapped\n"

@@ -350,7 +350,8 @@ Error_code compatible_soups(const Work& work, UVMap uv, const TriangleMeshB& tm_
                             std::vector<std::array<double, 3> >& on_a, std::vector<std::array<double, 3> >& on_b,
                             std::vector<std::array<std::size_t, 3> >& triangles,
                             std::vector<std::array<std::size_t, 2> >* origins = nullptr,
-                            const std::vector<typename boost::graph_traits<Work>::vertex_descriptor>* disk_a_in_work = nullptr)
+                            const std::vector<typename boost::graph_traits<Work>::vertex_descriptor>* disk_a_in_work = nullptr,
+                            const std::vector<std::size_t>* b_in_disk = nullptr)
 {
   typedef typename boost::graph_traits<Work>::vertex_descriptor wvertex;
   typedef CGAL::Epeck EK;
@@ -439,7 +440,8 @@ Error_code compatible_soups(const Work& work, UVMap uv, const TriangleMeshB& tm_
         on_b[i] = place(overlay.points[i], overlay.features[i][1], disk_b.faces[overlay.cell_faces[t][1]], map_b, points_b);
       }
   // the vertex of each map that a point is: of A, its index in A's disk (`disk_a_in_work`: the vertex of the copy
-  // of each), -1 for a Steiner vertex; of B, its index in `disk_b`
+  // of each), -1 for a Steiner vertex; of B, its index in `disk_b`, or, B's map on a refined copy (`disk_b` is then
+  // the copy's), in B's own disk (`b_in_disk`, -1 for a Steiner vertex)
   if(origins != nullptr && disk_a_in_work != nullptr)
   {
     constexpr std::size_t none = std::size_t(-1);
@@ -451,7 +453,7 @@ Error_code compatible_soups(const Work& work, UVMap uv, const TriangleMeshB& tm_
       const Map_feature& fa = overlay.features[i][0];
       const Map_feature& fb = overlay.features[i][1];
       if(fa[0] != none && fa[1] == none) (*origins)[i][0] = disk_index[fa[0]];
-      if(fb[0] != none && fb[1] == none) (*origins)[i][1] = fb[0];
+      if(fb[0] != none && fb[1] == none) (*origins)[i][1] = b_in_disk != nullptr ? (*b_in_disk)[fb[0]] : fb[0];
     }
   }
   triangles.swap(overlay.triangles);
@@ -1100,13 +1102,27 @@ Error_code cross_parameterization_disks(
   if(compatible)
   {
     const double before_overlay = timer.time();
-    // B's map of cut disks is its first map (matched maps off), so never on a refined copy: its vertices are the disk's
+    // for the join along the cut of two cut disks: the vertex of each disk that an overlay point is (Steiner
+    // vertices of either refined copy are none)
     std::vector<std::array<std::size_t, 2> >* origins = request && request->compatible ? &request->origins : nullptr;
-    if(origins != nullptr && refined_b) return finish(ERROR_WRONG_PARAMETER);
     std::vector<wvertex> disk_a_in_work;
+    std::vector<std::size_t> b_in_disk;
     if(origins != nullptr)
+    {
       for(vertex_a v : disk_a.vertices) disk_a_in_work.push_back(to_work[v]);
-    ec = refined_b ? internal::compatible_soups(work, uv_a, refined_mesh_b, side_b, side_uv, stats, on_a, on_b, triangles)
+      if(refined_b)
+      {
+        std::unordered_map<wbvertex, std::size_t, boost::hash<wbvertex> > disk_index;
+        for(std::size_t i = 0; i < disk_b.vertices.size(); ++i) disk_index.emplace(to_refined_b.at(disk_b.vertices[i]), i);
+        for(wbvertex v : side_b.vertices)
+        {
+          const auto it = disk_index.find(v);
+          b_in_disk.push_back(it == disk_index.end() ? std::size_t(-1) : it->second);
+        }
+      }
+    }
+    ec = refined_b ? internal::compatible_soups(work, uv_a, refined_mesh_b, side_b, side_uv, stats, on_a, on_b, triangles,
+                                                origins, &disk_a_in_work, &b_in_disk)
                    : internal::compatible_soups(work, uv_a, tm_b, disk_b, map_b, stats, on_a, on_b, triangles, origins,
                                                 &disk_a_in_work);
     stats.seconds_compatible = timer.time() - before_overlay;
@@ -1391,9 +1407,10 @@ Error_code cross_parameterization_closed(
     disk_settings.cut = &request;
     disk_settings.statistics = &inner;
     disk_settings.composed_distortion = settings.composed_distortion;
-    // B's map stays the one made first: a matched map may refine B's cut disk, whose overlay could then not be joined
-    // along the cut
-    disk_settings.matched_maps = false;
+    // B's map made again as A's is, as for disks: on two copies of one surface, the two maps are then one
+    // computation, and the composition the identity (with B's first map, A's map settles elsewhere where the energy
+    // is flat: up to a third of the diagonal away on hand.off against itself with 20 landmarks)
+    disk_settings.matched_maps = settings.matched_maps;
     disk_settings.optimization_seconds = settings.optimization_seconds;
     disk_settings.max_seconds = (std::max)(0., max_seconds - timer.time());
     disk_settings.b_to_a = backwards;
@@ -1560,7 +1577,7 @@ Error_code cross_parameterization_closed(
 /// shortest edge path from each landmark to the next, avoiding the earlier paths and the other landmarks
 /// (`Cross_parameterization_statistics::cut_landmarks`). Every landmark copy on the cut is a border landmark, and both
 /// borders are placed on the square so that the two sides of every arc of the cut are placed alike (see the user
-/// manual, section Closed Surfaces). B's map is its first map (`matched_maps` does not apply). They need at
+/// manual, section Closed Surfaces); B's map of its cut disk is made again as for disks (`matched_maps`). They need at
 /// least two landmarks; `border_vertex_pair` does not apply to them (they have no border: `ERROR_WRONG_PARAMETER`);
 /// `planar_maps` receives the maps of the cut disks, `compatible_meshes` the overlay of the cut disks' maps
 /// joined along the cut into two closed meshes, and `b_to_a_locations` the locations of B's vertices on A's faces
@@ -1624,9 +1641,8 @@ Error_code cross_parameterization_closed(
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{matched_maps}
 ///     \cgalParamDescription{whether B's map is made again by `constrained_embedding()` with B's landmarks pinned, as
-///                           A's is (see above), when there are interior landmarks (never for closed surfaces:
-///                           a matched map may refine B's cut disk, whose overlay could then not be joined along
-///                           the cut); its optimization has at most
+///                           A's is (see above), when there are interior landmarks (for closed surfaces, the
+///                           map of B's cut disk); its optimization has at most
 ///                           `optimization_time_limit` seconds, and it gets what A's map leaves of
 ///                           `maximum_running_time`}
 ///     \cgalParamType{`bool`}

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Builds the test suite with AddressSanitizer and UndefinedBehaviorSanitizer (-O1, frame
-# pointers kept) in build-sanitize/ and runs it, the bad-input suite included. The constrained
+# Builds the test suite with AddressSanitizer and UndefinedBehaviorSanitizer (frame pointers kept; -O1,
+# except the test programs, whose own -O2 comes after the build type's flags) in build-sanitize/ and runs it, the bad-input suite included. The constrained
 # tests are compiled as 4 units instead of one (instrumented, the single unit took 15 GB of memory
 # to compile and was killed when other work needed memory too). Any sanitizer report fails the
 # run: ASan aborts on the first error, and UBSan is made fatal too. Timeouts are tripled
@@ -12,6 +12,8 @@ dir=${SANITIZE_BUILD_DIR:-build-sanitize}
 flags="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all"
 # -O1 and line tables only (-g1) through the build type's own flags: given in CMAKE_CXX_FLAGS, -O1 came before the
 # build type's -O2 -g on the command line and lost. A sanitizer report needs function names and lines, not variables.
+# The test programs add -O2 after these (test/Progressive_embedding/CMakeLists.txt, as in every build); everything
+# else is built at -O1.
 cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBUILD_TESTING=ON \
       -DPE_BUILD_DOC=OFF -DPE_BUILD_BENCHMARKS=OFF -DPE_EXAMPLES_TOGETHER=ON -DPE_TEST_TIMEOUT_FACTOR=3 \
       -DPE_CONSTRAINED_UNITY_GROUPS=4 \

@@ -323,6 +323,11 @@ Row run_orbifold(const std::string& file_a, const std::string& file_b, const std
     r.status = "no chain of shortest paths"; // in any order of the cones, on A or on B
     return r;
   }
+  if(ec == SMP::OK && map_a.mirrored != map_b.mirrored)
+  {
+    r.status = "maps of opposite orientations"; // the tiles could not be compared
+    return r;
+  }
   if(ec != SMP::OK)
   {
     // CGAL's get_error_message() misses a message and returns null for the last code
@@ -566,7 +571,7 @@ int main(int argc, char** argv)
         "exact point location; vertices of A outside every positively oriented face of B (near the border: outside the "
         "polygon of B's border vertices inscribed in the circle; or where a map is not valid in floating point) are "
         "counted (unlocated) and left out of the errors, and the faces around them out of the distortion. "
-        "Closed genus-0 meshes (with `--meshes`) are cut into disks by `cross_parameterization()` itself, between "
+        "Closed genus-0 meshes (with `--meshes`, or two closed files with `--pairs`) are cut into disks by `cross_parameterization()` itself, between "
         "two landmarks near each other (the others inside the cut disks; their vertex counts are those of the "
         "cut disks, a vertex inside the cut counted twice); they have no naive row (Tutte's "
         "map needs a disk); instead, CGAL's Orbifold Tutte embedding (Aigerman and Lipman: each mesh cut along CGAL's "
@@ -581,7 +586,8 @@ int main(int argc, char** argv)
         "CGAL's shortest paths between consecutive cones may cross or overlap (the seam is then not a chain through "
         "the cones, which its parameterizer needs): the cones are then taken in the next order that gives a chain on "
         "both meshes (`orbifold_cone_orders_rejected` in the CSV), status `no chain of shortest paths` when none does. "
-        "Its disks do not apply to disks. Composed: A's map optimized once more for the distortion of the composed map "
+        "(It does not apply to two disks.) The Orbifold rows count the vertices of the closed meshes, the rows "
+        "of this function those of the cut disks. Composed: A's map optimized once more for the distortion of the composed map "
         "(`composed_distortion`, the default); its seconds (composed s) are part of A's map's. Matched: B's map made "
         "again by `constrained_embedding()` with B's landmarks pinned where its first map put them, as A's is "
         "(`matched_maps`, the default; with landmarks only; its seconds are part of B's map's); vertices added to "

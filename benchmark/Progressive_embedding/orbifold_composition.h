@@ -101,6 +101,7 @@ int orbifold_map(SM& m, const std::vector<typename SM::Vertex_index>& cones,
   typedef typename boost::graph_traits<Mesh>::halfedge_descriptor MH;
   typedef typename K::Point_2 Point_2;
 
+  out = Orbifold_map<K>(); // nothing kept from a try with another order of the cones
   // fresh property maps, removed on return (the caller may try another order of the cones)
   Seam_edges seam_e = m.template add_property_map<E, bool>("e:orbifold_seam", false).first;
   Seam_vertices seam_v = m.template add_property_map<V, bool>("v:orbifold_seam", false).first;

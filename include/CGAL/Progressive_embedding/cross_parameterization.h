@@ -271,8 +271,9 @@ struct Cross_parameterization_statistics
   /// spent); on another status, or when its map is not certified (`ERROR_INVALID_EMBEDDING`), B's first map is kept
   Error_code matched_status = OK;
   /// `true` when that map was made and certified but its mean distortion energy (`Embedding_report::mean_energy_3d`)
-  /// is more than 5% above that of B's first map, which has the same border and the same landmark positions: it went
-  /// around the landmarks another way, and B's first map is kept (`matched_b` is then `false`)
+  /// is more than 5% above that of B's first map, which has the same border and the same landmark positions, and more
+  /// than 5% above that of A's map, made the same way: it went around the landmarks another way than A's, and B's
+  /// first map is kept (`matched_b` is then `false`)
   bool matched_more_distorted = false;
   /// vertices added to B's copy by that `constrained_embedding()` and kept after its coarsening (or, when B's first
   /// map is kept and was made on a refined copy, `chords_split_b`, the vertices added to that copy): B's map is then
@@ -292,11 +293,15 @@ using Cross_location = CGAL::Polygon_mesh_processing::Face_location<TriangleMesh
 namespace internal {
 
 // whether B's matched map may replace its first map: both certified, with the same border and landmark positions;
-// the matched map's mean energy at most 5% above the first's (reports without 3D energies are not compared)
-inline bool matched_map_acceptable(const Embedding_report& first, const Embedding_report& matched)
+// the matched map's mean energy at most 5% above the first's, or (`a`: A's constrained map, made the same way) at most
+// 5% above A's map's: a matched map that goes around the landmarks as A's does keeps the two maps alike (reports
+// without 3D energies are not compared)
+inline bool matched_map_acceptable(const Embedding_report& first, const Embedding_report& matched,
+                                   const Embedding_report* a = nullptr)
 {
   if(!first.has_3d_energy || !matched.has_3d_energy || !std::isfinite(first.mean_energy_3d)) return true;
-  return matched.mean_energy_3d <= 1.05 * first.mean_energy_3d;
+  if(matched.mean_energy_3d <= 1.05 * first.mean_energy_3d) return true;
+  return a != nullptr && a->has_3d_energy && matched.mean_energy_3d <= 1.05 * a->mean_energy_3d;
 }
 
 // What the function on two closed meshes asks of the one on their cut disks (Cross_settings::cut):
@@ -965,9 +970,17 @@ Error_code cross_parameterization_disks(
   ec = ec_a;
   // B's matched map, made and certified, replaces the first one, unless it is more distorted: the first map has the
   // same border and the same pins, so a matched map well above its energy went around the landmarks another way (a
-  // region wound around them), which A's map, made the other way, does not follow: the composition would carry a gross
-  // error there (seen on two meshes of one statue with 50 landmarks: 2.5% of the diagonal on average, 26% at most)
+  // region wound around them), which A's map need not follow: the composition would carry a gross error there (seen
+  // on two meshes of one statue with 50 landmarks: 2.5% of the diagonal on average, 26% at most). Unless A's map,
+  // made the same way, is as distorted: it then went around them the same way (two copies of one surface: the two
+  // maps are one computation), and B's first map would be the one A's does not follow.
+  bool acceptable = true;
   if(matched_ran && stats.matched_status == OK && !internal::matched_map_acceptable(stats.report_b, matched_report))
+  {
+    const Embedding_report report_a = ec_a == OK ? check_embedding(work, uv_a) : Embedding_report();
+    acceptable = ec_a == OK && internal::matched_map_acceptable(stats.report_b, matched_report, &report_a);
+  }
+  if(!acceptable)
     stats.matched_more_distorted = true;
   else if(matched_ran && stats.matched_status == OK)
   {
@@ -1551,7 +1564,8 @@ Error_code cross_parameterization_closed(
 /// vertices of A are located in it and their locations written in the faces of B holding the refined faces. If that
 /// map fails (`Cross_parameterization_statistics::matched_status`), or if its mean distortion energy is more than 5%
 /// above the first map's (which has the same border and pins: the matched map then went around the landmarks another
-/// way, `Cross_parameterization_statistics::matched_more_distorted`), B's first map is kept. Then,
+/// way) and more than 5% above A's map's (which would then not have gone that way too;
+/// `Cross_parameterization_statistics::matched_more_distorted`), B's first map is kept. Then,
 /// unless `composed_distortion` is `false`, A's map is optimized once more (border and landmarks fixed) for the
 /// distortion of the composed map: each face of A's copy is measured against B's surface instead of the plane, through
 /// the inverse Jacobian of B's map on the face of B that holds the face's uv centroid, so that the energy is the

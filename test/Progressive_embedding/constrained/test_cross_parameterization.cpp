@@ -800,23 +800,57 @@ int closed_surfaces(const std::string& data_dir)
     for(std::size_t i = 0; i < vs.size(); ++i) at[vs[i]] = i;
     std::vector<std::pair<vd, vd> > fifty;
     for(vd v : PE::internal::spread_interior_vertices(s, 50)) fifty.emplace_back(v, vt[at[v]]);
-    Location_map<Mesh> ls;
-    Surface_mesh cs, ct;
+    Location_map<Mesh> ls, back;
+    Surface_mesh cs, ct, ps, pt;
     PE::Cross_parameterization_statistics ss;
     ec = PE::cross_parameterization(s, t, fifty, boost::make_assoc_property_map(ls),
-           PE::parameters::compatible_meshes(std::make_pair(&cs, &ct), PE::parameters::statistics(&ss)));
+           PE::parameters::compatible_meshes(std::make_pair(&cs, &ct),
+             PE::parameters::b_to_a_locations(boost::make_assoc_property_map(back),
+               PE::parameters::planar_maps(std::make_pair(&ps, &pt), PE::parameters::statistics(&ss)))));
     CHECK(ec == PE::OK && ss.closed && ss.landmarks_exact, "cow against itself: " << PE::get_error_name(ec));
     CHECK(ss.matched_b && ss.vertices_added_b > 0 && ss.vertices_added_b == ss.vertices_added_a,
           "B's matched map on a refined copy: matched " << ss.matched_b << ", " << ss.vertices_added_b << " added to B, "
           << ss.vertices_added_a << " to A");
     const auto es = PE::internal::correspondence_error(s, t, boost::make_assoc_property_map(ls));
     CHECK(es.second < 1e-12, "cow against itself: the identity, max error " << es.second);
+    // B's vertices located through its refined copy onto A, and B's planar map that copy's (its added vertex last)
+    const auto eb = PE::internal::correspondence_error(t, s, boost::make_assoc_property_map(back));
+    CHECK(back.size() == vt.size() && ss.located_b_on_a == vt.size() && eb.second < 1e-12,
+          "cow against itself, B onto A: " << back.size() << " located, max error " << eb.second);
+    CHECK(num_vertices(pt) == ss.vertices_b + ss.vertices_added_b && num_vertices(ps) == ss.vertices_a + ss.vertices_added_a,
+          "the planar maps of the refined copies");
+    // the two copies' overlay is the refined copy itself, joined along the cut: A' and B' the same points
     CHECK(CGAL::is_closed(cs) && num_vertices(cs) == num_vertices(ct) && num_vertices(cs) == vs.size() + ss.vertices_added_a &&
-          long(num_vertices(cs)) - long(num_edges(cs)) + long(num_faces(cs)) == 2,
+          ss.cut_vertices_welded > 0 && long(num_vertices(cs)) - long(num_edges(cs)) + long(num_faces(cs)) == 2,
           "cow against itself: compatible meshes closed genus 0, " << num_vertices(cs) << " vertices");
+    bool same_points = true;
+    for(auto v : vertices(cs)) same_points = same_points && CGAL::squared_distance(cs.point(v), ct.point(v)) < 1e-20;
+    CHECK(same_points, "cow against itself: A' and B' the same points");
     std::cout << "closed " << cow << " (" << mesh_name<Mesh>() << ") against itself, 50 landmarks: B's matched map with "
-              << ss.vertices_added_b << " vertex added, max error " << es.second << ", compatible meshes of "
-              << num_vertices(cs) << " vertices joined along the cut" << std::endl;
+              << ss.vertices_added_b << " vertex added, max error " << es.second << " (B onto A " << eb.second
+              << "), compatible meshes of " << num_vertices(cs) << " vertices joined along the cut ("
+              << ss.cut_vertices_welded << " points)" << std::endl;
+    // against its remeshed copy with 20 landmarks: B's matched map on a copy refined by Steiner vertices, its
+    // overlay with A's map joined along the cut (the points of B's refined copy named by its cut disk's vertices)
+    Surface_mesh r;
+    CHECK(CGAL::IO::read_polygon_mesh(cow, r), "read " << cow);
+    PE::internal::remesh_isotropically(r);
+    r.collect_garbage();
+    std::unordered_map<vd, PE::Cross_location<Surface_mesh>, boost::hash<vd> > lr;
+    Surface_mesh cr, dr;
+    PE::Cross_parameterization_statistics sr;
+    ec = PE::cross_parameterization(s, r, PE::internal::nearest_vertex_landmarks(s, r, PE::internal::spread_interior_vertices(s, 20)),
+           boost::make_assoc_property_map(lr), PE::parameters::compatible_meshes(std::make_pair(&cr, &dr), PE::parameters::statistics(&sr)));
+    CHECK(ec == PE::OK && sr.landmarks_exact && sr.matched_b && sr.vertices_added_b > 0 && sr.report_compatible.is_valid() &&
+          sr.cut_vertices_welded > 0 && CGAL::is_closed(cr) && num_vertices(cr) == num_vertices(dr) &&
+          long(num_vertices(cr)) - long(num_edges(cr)) + long(num_faces(cr)) == 2,
+          "cow against its remeshed copy: " << PE::get_error_name(ec) << ", matched " << sr.matched_b << ", "
+          << sr.vertices_added_b << " added to B");
+    const auto er = PE::internal::correspondence_error(s, r, boost::make_assoc_property_map(lr));
+    CHECK(er.first < 0.03, "cow against its remeshed copy: mean error " << er.first);
+    std::cout << "closed " << cow << " against its remeshed copy, 20 landmarks: B's matched map with " << sr.vertices_added_b
+              << " vertices added, compatible meshes of " << num_vertices(cr) << " vertices joined along the cut, mean error "
+              << er.first << ", max " << er.second << std::endl;
   }
   // against its remeshed copy
   Surface_mesh c;
@@ -1352,6 +1386,15 @@ int matched_maps_on_pair(const std::string& file, std::size_t count)
     CHECK(PE::internal::matched_map_acceptable(first, matched), "5% above: kept");
     matched.mean_energy_3d = 50.61;
     CHECK(!PE::internal::matched_map_acceptable(first, matched), "three times the first map's energy: the first kept");
+    // unless A's map, made the same way, is as distorted (it went around the landmarks the same way)
+    PE::Embedding_report a;
+    a.has_3d_energy = true;
+    a.mean_energy_3d = 16.53;
+    CHECK(!PE::internal::matched_map_acceptable(first, matched, &a), "A's map far less distorted: the first kept");
+    a.mean_energy_3d = 49.0;
+    CHECK(PE::internal::matched_map_acceptable(first, matched, &a), "A's map as distorted: the matched map kept");
+    a.has_3d_energy = false;
+    CHECK(!PE::internal::matched_map_acceptable(first, matched, &a), "A's map without 3D energy: the first kept");
     matched.has_3d_energy = false;
     CHECK(PE::internal::matched_map_acceptable(first, matched), "no 3D energy: not compared");
   }

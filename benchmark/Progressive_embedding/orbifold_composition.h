@@ -219,14 +219,19 @@ std::size_t locate_in_tiling(const Orbifold_map<K>& map_a, const Orbifold_map<K>
   struct Tri { std::size_t face; std::array<Point_2, 3> p; };
   std::vector<Tri> triangles;
   std::vector<std::vector<std::size_t> > grid(cells * cells);
+  // a rotation keeps orientations: a triangle of B counts where its own map has it positive
   const CGAL::Orientation positive = map_b.mirrored ? CGAL::NEGATIVE : CGAL::POSITIVE;
+  std::vector<std::size_t> usable;
+  for(std::size_t f = 0; f < map_b.corners.size(); ++f)
+  {
+    const std::array<Point_2, 3>& c = map_b.corners[f];
+    if(CGAL::orientation(c[0], c[1], c[2]) == positive) usable.push_back(f);
+  }
   for(const T& t : kept)
   {
-    // a rotation keeps orientations: a triangle of B counts where its own map has it positive
-    for(std::size_t f = 0; f < map_b.corners.size(); ++f)
+    for(std::size_t f : usable)
     {
       const std::array<Point_2, 3>& c = map_b.corners[f];
-      if(CGAL::orientation(c[0], c[1], c[2]) != positive) continue;
       const Tri tri = { f, {{ t(c[0]), t(c[1]), t(c[2]) }} };
       const CGAL::Bbox_2 b = CGAL::bbox_2(tri.p.begin(), tri.p.end());
       if(!CGAL::do_overlap(b, box_a)) continue;

@@ -660,6 +660,20 @@ int eared_disks()
 // tolerance; the compatible meshes closed, of one connectivity) and against its remeshed copy (the error bound of
 // the disks); a genus-3 surface, a closed surface against a disk and a single landmark are refused, and the join
 // along the cut refuses what is not closed.
+// `k` vertices of `a` spread out, each with the vertex of `b` at its place in vertices(): two copies of one file
+template <class Mesh>
+std::vector<std::pair<typename boost::graph_traits<Mesh>::vertex_descriptor, typename boost::graph_traits<Mesh>::vertex_descriptor> >
+same_place_landmarks(const Mesh& a, const Mesh& b, std::size_t k)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vd;
+  std::vector<vd> va(vertices(a).begin(), vertices(a).end()), vb(vertices(b).begin(), vertices(b).end());
+  std::unordered_map<vd, std::size_t, boost::hash<vd> > index;
+  for(std::size_t i = 0; i < va.size(); ++i) index[va[i]] = i;
+  std::vector<std::pair<vd, vd> > landmarks;
+  for(vd v : PE::internal::spread_interior_vertices(a, k)) landmarks.emplace_back(v, vb[index.at(v)]);
+  return landmarks;
+}
+
 template <class Mesh>
 int closed_surfaces(const std::string& data_dir)
 {
@@ -670,8 +684,7 @@ int closed_surfaces(const std::string& data_dir)
   std::vector<vd> va(vertices(a).begin(), vertices(a).end()), vb(vertices(b).begin(), vertices(b).end());
   std::unordered_map<vd, std::size_t, boost::hash<vd> > index;
   for(std::size_t i = 0; i < va.size(); ++i) index[va[i]] = i;
-  std::vector<std::pair<vd, vd> > landmarks;
-  for(vd v : PE::internal::spread_interior_vertices(a, 6)) landmarks.emplace_back(v, vb[index[v]]);
+  const std::vector<std::pair<vd, vd> > landmarks = same_place_landmarks(a, b, 6);
   Location_map<Mesh> loc;
   PE::Cross_parameterization_statistics st;
   PE::Error_code ec = PE::cross_parameterization(a, b, landmarks, boost::make_assoc_property_map(loc), PE::parameters::statistics(&st));
@@ -795,11 +808,7 @@ int closed_surfaces(const std::string& data_dir)
     Mesh s, t;
     const std::string cow = data_dir + "/meshes/cow.off";
     CHECK(CGAL::IO::read_polygon_mesh(cow, s) && CGAL::IO::read_polygon_mesh(cow, t), "read " << cow);
-    std::vector<vd> vs(vertices(s).begin(), vertices(s).end()), vt(vertices(t).begin(), vertices(t).end());
-    std::unordered_map<vd, std::size_t, boost::hash<vd> > at;
-    for(std::size_t i = 0; i < vs.size(); ++i) at[vs[i]] = i;
-    std::vector<std::pair<vd, vd> > fifty;
-    for(vd v : PE::internal::spread_interior_vertices(s, 50)) fifty.emplace_back(v, vt[at[v]]);
+    const std::vector<std::pair<vd, vd> > fifty = same_place_landmarks(s, t, 50);
     Location_map<Mesh> ls, back;
     Surface_mesh cs, ct, ps, pt;
     PE::Cross_parameterization_statistics ss;
@@ -815,12 +824,12 @@ int closed_surfaces(const std::string& data_dir)
     CHECK(es.second < 1e-12, "cow against itself: the identity, max error " << es.second);
     // B's vertices located through its refined copy onto A, and B's planar map that copy's (its added vertex last)
     const auto eb = PE::internal::correspondence_error(t, s, boost::make_assoc_property_map(back));
-    CHECK(back.size() == vt.size() && ss.located_b_on_a == vt.size() && eb.second < 1e-12,
+    CHECK(back.size() == num_vertices(t) && ss.located_b_on_a == num_vertices(t) && eb.second < 1e-12,
           "cow against itself, B onto A: " << back.size() << " located, max error " << eb.second);
     CHECK(num_vertices(pt) == ss.vertices_b + ss.vertices_added_b && num_vertices(ps) == ss.vertices_a + ss.vertices_added_a,
           "the planar maps of the refined copies");
     // the two copies' overlay is the refined copy itself, joined along the cut: A' and B' the same points
-    CHECK(CGAL::is_closed(cs) && num_vertices(cs) == num_vertices(ct) && num_vertices(cs) == vs.size() + ss.vertices_added_a &&
+    CHECK(CGAL::is_closed(cs) && num_vertices(cs) == num_vertices(ct) && num_vertices(cs) == num_vertices(s) + ss.vertices_added_a &&
           ss.cut_vertices_welded > 0 && long(num_vertices(cs)) - long(num_edges(cs)) + long(num_faces(cs)) == 2,
           "cow against itself: compatible meshes closed genus 0, " << num_vertices(cs) << " vertices");
     bool same_points = true;
